@@ -1,0 +1,243 @@
+// Sculpt: Delaunay-based curve and surface reconstruction by sculpting
+// (Kuo & Yau, "A Delaunay-based region-growing approach to surface reconstruction from
+// unorganized points", 2003, sections 3 and 4).
+//
+// This is the whole public API of the core. It is plain C++ with no CGAL or GL in it, so that
+// the command line, the tests and the viewer compile against it quickly; the algorithm itself is
+// instantiated once per dimension in src/core2d and src/core3d.
+//
+// Every stage of the algorithm is kept in the returned Reconstruction as plain data:
+//   1. delaunay           DT(S ∪ BBV): the samples plus the corners of an enlarged bounding box
+//   2. poles              Amenta's poles (p+ farthest Voronoi vertex, p- farthest on the other side)
+//   3. seeds              convex poles (cells incident to a box corner) and the seed labels
+//   4. propagation        the ordered labelling events of the pole separation
+//   5. insertion          the poles inserted: OUP (closed) or UP (bordered)
+//   6. sculpted_delaunay  DT(S ∪ OUP), made by inserting those poles into the first DT
+//   7. solid              the cells whose vertices are all samples
+//   8. surface            the triangles (3D) or edges (2D) of the reconstruction
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace sculpt {
+
+template <int D>
+using Point = std::array<double, D>;
+
+// A triangle (D = 3) or tetrahedron, or an edge (D = 2) or triangle: indices into the sites.
+template <int D>
+using Cell = std::array<int, D + 1>;
+
+// A facet of a cell: a triangle in 3D, an edge in 2D. Indices into the samples.
+template <int D>
+using Facet = std::array<int, D>;
+
+// ---------------------------------------------------------------------------------------------
+// Options
+
+enum class Surface_kind { closed, bordered };
+
+// Which facets of DT(S ∪ OUP) make the surface.
+//  skin:       facets with an outer apex (outer pole, box corner) on one side and an inner apex
+//              (a sample, i.e. an all-sample cell, or an inner pole) on the other. For a closed
+//              surface this is exactly the boundary of the sculpted solid.
+//  extraction: the paper's literal extraction rule: all-sample facets with at least one outer
+//              apex. It contains the skin and adds "dangling" facets where labels are wrong.
+enum class Surface_rule { skin, extraction };
+
+// What the core reports while it runs; returning false from the callback cancels the run.
+struct Progress {
+  const char* stage;  // name of the stage being computed
+  double fraction;    // 0..1 within that stage, where known
+};
+
+struct Options {
+  Surface_kind kind = Surface_kind::closed;
+  Surface_rule rule = Surface_rule::skin;
+  // Side lengths of the bounding box BB relative to those of the samples' bounding box.
+  double box_factor = 5.0;
+  // Bordered surfaces start from one convex pole. -1 chooses p+ of the lowest-index sample whose
+  // p+ is convex, a choice that does not depend on CGAL's internal order; otherwise the convex
+  // pole (p+ or p-) of the given sample.
+  int bordered_seed_sample = -1;
+  // Keep the cells of both triangulations in the result (the viewer and the tests read them);
+  // the command line switches this off to save memory on large inputs.
+  bool keep_triangulations = true;
+  std::function<bool(const Progress&)> progress;
+};
+
+// Input the algorithm cannot work on: too few points, NaN, duplicates, degenerate sets.
+class Input_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Thrown when Options::progress returned false.
+class Cancelled : public std::runtime_error {
+ public:
+  Cancelled() : std::runtime_error("reconstruction cancelled") {}
+};
+
+// ---------------------------------------------------------------------------------------------
+// Stages
+
+enum class Site_kind : std::uint8_t { sample, box_corner, pole };
+
+enum class Label : std::uint8_t { unlabelled, inner, outer };
+
+// Why a pole received its label.
+enum class Label_reason : std::uint8_t {
+  convex_seed,     // a convex pole, labelled outer at the start
+  pairing,         // the opposite label of a pole it is paired with (both poles of one sample)
+  inscribed_cube,  // lies strictly inside the inscribed cube (square) of a labelled polar ball
+};
+
+// Stage 1 and 6: a Delaunay triangulation, its finite cells as indices into the sites.
+template <int D>
+struct Delaunay_stage {
+  std::size_t cell_count = 0;       // finite cells, also when the cells themselves are not kept
+  std::vector<Cell<D>> cells;       // empty unless Options::keep_triangulations
+};
+
+// A pole is a Delaunay cell of stage 1: its circumcentre and circumradius (the polar ball).
+template <int D>
+struct Pole {
+  Point<D> center{};
+  double radius = 0;
+  std::size_t cell = 0;  // index of the cell among the finite cells of stage 1
+  bool convex = false;   // the cell is incident to a box corner
+};
+
+// Stage 2. One Voronoi vertex can be a pole of several samples, so the pairing of poles is a
+// graph (partners), not a perfect matching.
+template <int D>
+struct Poles_stage {
+  std::vector<Pole<D>> poles;
+  std::vector<int> positive_pole;  // per sample: p+, the farthest vertex of its Voronoi cell
+  std::vector<int> negative_pole;  // per sample: p-, farthest on the other side; -1 if none
+  std::vector<int> partner_offsets;  // partners of pole p: partners[offsets[p] .. offsets[p+1])
+  std::vector<int> partners;
+
+  struct Range {
+    const int* first;
+    const int* last;
+    const int* begin() const { return first; }
+    const int* end() const { return last; }
+    std::size_t size() const { return static_cast<std::size_t>(last - first); }
+  };
+  Range partners_of(int pole) const {
+    return {partners.data() + partner_offsets[pole], partners.data() + partner_offsets[pole + 1]};
+  }
+};
+
+// Stage 3.
+struct Seeds_stage {
+  std::vector<int> convex_poles;  // poles whose cell touches a box corner
+  std::vector<int> outer_seeds;   // closed: every convex pole; bordered: the one chosen seed
+};
+
+struct Labelling_event {
+  int pole;
+  Label label;
+  int source;  // the pole that gave the label; -1 for a convex seed
+  Label_reason reason;
+};
+
+// Stage 4: the pole separation, in the order it ran. A conflict is an offer of the opposite
+// label to a pole that already has one; the first label stays.
+struct Propagation_stage {
+  std::vector<Labelling_event> events;
+  std::vector<Labelling_event> conflicts;
+  std::vector<Label> labels;  // final label of every pole
+  std::size_t unlabelled = 0;
+};
+
+// Stage 5: the poles inserted into the first triangulation. Closed: OUP, the outer non-convex
+// poles; bordered: UP, every labelled non-convex pole. The paper also counts the box corners in
+// m (or l); they are already in the triangulation.
+struct Insertion_stage {
+  std::vector<int> inserted_poles;
+};
+
+struct Stage_measure {
+  std::string name;
+  double seconds = 0;
+  double peak_memory_mib = 0;  // peak resident memory of the process at the end of the stage
+};
+
+struct Statistics {
+  int dimension = 0;
+  std::size_t samples = 0;             // n
+  std::size_t poles = 0;               // distinct poles
+  std::size_t convex_poles = 0;
+  std::size_t inner_poles = 0;
+  std::size_t outer_poles = 0;
+  std::size_t unlabelled_poles = 0;
+  std::size_t conflicts = 0;
+  std::size_t inserted_poles = 0;      // m (closed) or l (bordered), without the box corners
+  std::size_t delaunay_cells = 0;      // cells of DT(S ∪ BBV)
+  std::size_t sculpted_cells = 0;      // cells of DT(S ∪ OUP)
+  std::size_t solid_cells = 0;
+  std::size_t facets = 0;              // triangles (3D) or edges (2D) of the result
+  // Of the result's ridges (edges of the surface in 3D, vertices of the curve in 2D):
+  std::size_t boundary_ridges = 0;     // on one facet only: border edges, or curve end points
+  std::size_t non_manifold_ridges = 0; // on more than two facets
+  std::size_t non_manifold_vertices = 0;  // 3D: vertices whose triangles do not form one fan
+  std::size_t boundary_loops = 0;      // 3D: closed loops of border edges; 2D: open curves
+  std::size_t components = 0;          // connected pieces of the result
+  long euler_characteristic = 0;       // V - E + F (3D) or V - E (2D) of the result
+  std::size_t unused_samples = 0;      // samples on no facet of the result
+  std::vector<Stage_measure> stages;
+  double total_seconds = 0;
+};
+
+// Index ranges of the sites: samples first, then the 2^D box corners, then inserted poles.
+template <int D>
+struct Reconstruction {
+  static constexpr int dimension = D;
+  static constexpr int box_corner_count = 1 << D;
+
+  Options options;
+  std::vector<Point<D>> sites;
+
+  Delaunay_stage<D> delaunay;           // 1
+  Poles_stage<D> poles;                 // 2
+  Seeds_stage seeds;                    // 3
+  Propagation_stage propagation;        // 4
+  Insertion_stage insertion;            // 5
+  Delaunay_stage<D> sculpted_delaunay;  // 6
+  std::vector<Cell<D>> solid;           // 7: cells of stage 6 whose vertices are all samples
+  std::vector<Facet<D>> surface;        // 8: oriented facets; closed: normals point outward
+  Statistics stats;
+
+  std::size_t sample_count() const { return sites.size() - box_corner_count - insertion.inserted_poles.size(); }
+  Site_kind kind_of_site(int site) const {
+    const auto n = static_cast<int>(sample_count());
+    if (site < n) return Site_kind::sample;
+    if (site < n + box_corner_count) return Site_kind::box_corner;
+    return Site_kind::pole;
+  }
+  // The pole a site of kind Site_kind::pole stands for.
+  int pole_of_site(int site) const {
+    return insertion.inserted_poles[site - static_cast<int>(sample_count()) - box_corner_count];
+  }
+};
+
+// Reconstructs a curve from 2D samples or a surface from 3D samples.
+// Throws Input_error for input it cannot work on, Cancelled when the progress callback says so.
+Reconstruction<2> reconstruct(const std::vector<Point<2>>& samples, const Options& options = {});
+Reconstruction<3> reconstruct(const std::vector<Point<3>>& samples, const Options& options = {});
+
+const char* to_string(Label label);
+const char* to_string(Label_reason reason);
+const char* to_string(Surface_rule rule);
+const char* to_string(Surface_kind kind);
+const char* version();
+
+}  // namespace sculpt

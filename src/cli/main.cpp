@@ -1,0 +1,207 @@
+// The `sculpt` command: reconstruct a curve or surface from a point file, or from a built-in
+// example, and write it with the sculpted solid and the run's statistics.
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <fmt/format.h>
+#include <iostream>
+
+#include "io/atomic_file.hpp"
+#include "io/point_reader.hpp"
+#include "io/writers.hpp"
+#include "report.hpp"
+#include "shapes/shapes.hpp"
+
+namespace sculpt::cli {
+namespace {
+
+struct Reconstruct_arguments {
+  std::string input, example, output, solid, stats, rule = "skin";
+  int dimension = 0;  // 0: as the input says
+  int seed_sample = -1;
+  double box_factor = 5.0;
+  bool bordered = false, ascii = false, quiet = false;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Stage names on standard error for runs long enough to wonder about.
+std::function<bool(const Progress&)> progress_printer(std::size_t samples, bool quiet) {
+  if (quiet || (!isatty(STDERR_FILENO) && samples < 200000)) return {};
+  return [last = std::string()](const Progress& progress) mutable {
+    if (progress.stage && last != progress.stage) {
+      last = progress.stage;
+      std::cerr << "sculpt: " << last << "...\n";
+    }
+    return true;
+  };
+}
+
+// Fails before any work is done if an output's extension is not one Sculpt can write.
+void check_output_formats(const Reconstruct_arguments& args, int dimension) {
+  const std::string surface = io::extension_of(args.output);
+  const bool surface_ok = dimension == 3 ? (surface == ".stl" || surface == ".ply" ||
+                                            surface == ".off" || surface == ".obj")
+                                         : (surface == ".obj" || surface == ".svg");
+  if (!surface_ok) {
+    throw io::Error(fmt::format("cannot write a {} as '{}' (known: {})",
+                                dimension == 3 ? "surface" : "curve", args.output,
+                                dimension == 3 ? io::surface_formats : io::curve_formats));
+  }
+  if (!args.solid.empty()) {
+    const std::string solid = io::extension_of(args.solid);
+    if (solid != ".mesh" && solid != ".vtu" && solid != ".node" && solid != ".ele") {
+      throw io::Error(fmt::format("cannot write a solid as '{}' (known: {})", args.solid,
+                                  io::solid_formats));
+    }
+  }
+  if (!args.stats.empty() && io::extension_of(args.stats) != ".json") {
+    throw io::Error("the statistics file must end in .json: '" + args.stats + "'");
+  }
+}
+
+template <int D>
+int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruct_arguments& args,
+                          Run_description run) {
+  Options options;
+  options.kind = args.bordered ? Surface_kind::bordered : Surface_kind::closed;
+  options.rule = args.rule == "extraction" ? Surface_rule::extraction : Surface_rule::skin;
+  options.box_factor = args.box_factor;
+  options.bordered_seed_sample = args.seed_sample;
+  options.keep_triangulations = false;
+  options.progress = progress_printer(samples.size(), args.quiet);
+
+  const Reconstruction<D> result = reconstruct(samples, options);
+
+  const auto start = std::chrono::steady_clock::now();
+  if constexpr (D == 3) {
+    io::write_surface(args.output, samples, result.surface, args.ascii);
+  } else {
+    io::write_curve(args.output, samples, result.surface);
+  }
+  if (!args.solid.empty()) io::write_solid<D>(args.solid, samples, result.solid);
+  run.write_seconds = seconds_since(start);
+
+  if (!args.stats.empty()) {
+    io::Atomic_file file(args.stats, false);
+    file.stream() << report_json(result.stats, run).dump(2) << '\n';
+    file.commit();
+  }
+  if (!args.quiet) {
+    print_report(std::cout, result.stats, run);
+    std::cout << "  wrote " << args.output << (args.solid.empty() ? "" : " and " + args.solid)
+              << '\n';
+  }
+  return 0;
+}
+
+int run_reconstruct(const Reconstruct_arguments& args) {
+  Run_description run;
+  run.rule = args.rule;
+  run.kind = args.bordered ? "bordered" : "closed";
+  run.box_factor = args.box_factor;
+
+  if (!args.example.empty()) {
+    const auto& list = shapes::examples();
+    const auto found = std::find_if(list.begin(), list.end(),
+                                    [&](const auto& e) { return e.name == args.example; });
+    if (found == list.end()) {
+      throw io::Error("no built-in example named '" + args.example +
+                      "' (see `sculpt examples`)");
+    }
+    run.input = "example " + found->name;
+    check_output_formats(args, found->dimension);
+    if (found->dimension == 2) {
+      return reconstruct_and_write<2>(shapes::example_points_2(found->name), args, run);
+    }
+    return reconstruct_and_write<3>(shapes::example_points_3(found->name), args, run);
+  }
+
+  run.input = args.input;
+  const auto start = std::chrono::steady_clock::now();
+  const io::Point_set set = io::read_points(args.input);
+  const int dimension = args.dimension ? args.dimension : set.dimension;
+  check_output_formats(args, dimension);
+  if (dimension == 2) {
+    std::string dropped;
+    const auto samples = io::planar_points(set, &dropped);
+    if (!dropped.empty()) run.input += " (without its constant " + dropped + ")";
+    run.read_seconds = seconds_since(start);
+    return reconstruct_and_write<2>(samples, args, run);
+  }
+  const auto samples = io::spatial_points(set);
+  run.read_seconds = seconds_since(start);
+  return reconstruct_and_write<3>(samples, args, run);
+}
+
+int run_examples() {
+  for (const auto& example : shapes::examples()) {
+    std::cout << fmt::format("  {:<12}{}D  {}\n", example.name, example.dimension,
+                             example.description);
+  }
+  return 0;
+}
+
+}  // namespace
+}  // namespace sculpt::cli
+
+int main(int argc, char** argv) {
+  using namespace sculpt::cli;
+  CLI::App app{"Sculpt: curve and surface reconstruction by Delaunay sculpting (Kuo & Yau 2003)"};
+  app.set_version_flag("--version", std::string("sculpt ") + sculpt::version());
+  app.require_subcommand(1);
+
+  Reconstruct_arguments args;
+  auto* reconstruct = app.add_subcommand(
+      "reconstruct", "Reconstruct a curve (2D points) or surface (3D points) from a point file");
+  auto* input = reconstruct->add_option("input", args.input,
+                                        "Points: .xyz .pts .txt .csv .xy .p2d .ply .off .obj .stl");
+  auto* example = reconstruct->add_option("--example", args.example,
+                                          "Use a built-in example instead (see `sculpt examples`)");
+  input->excludes(example);
+  reconstruct->add_option("-o,--output", args.output,
+                          "Surface .stl .ply .off .obj (3D) or curve .obj .svg (2D)")
+      ->required();
+  reconstruct->add_flag("--bordered", args.bordered,
+                        "The samples come from a surface (curve) with a border");
+  reconstruct->add_option("--solid", args.solid,
+                          "Also write the sculpted solid: .mesh (Medit), .vtu, .node/.ele");
+  reconstruct->add_option("--box-factor", args.box_factor,
+                          "Bounding box BB relative to the samples' box")
+      ->capture_default_str()
+      ->check(CLI::Range(1.0 + 1e-9, 1e6));
+  reconstruct->add_option("--rule", args.rule, "Surface rule: skin (default) or extraction")
+      ->check(CLI::IsMember({"skin", "extraction"}));
+  reconstruct->add_option("--seed-sample", args.seed_sample,
+                          "Bordered: seed with the convex pole of this sample");
+  reconstruct->add_option("--dim", args.dimension,
+                          "Force 2 or 3 dimensions (2 drops a constant coordinate)")
+      ->check(CLI::IsMember({2, 3}));
+  reconstruct->add_flag("--ascii", args.ascii, "Write .stl and .ply as text");
+  reconstruct->add_option("--stats", args.stats, "Write the statistics as JSON");
+  reconstruct->add_flag("-q,--quiet", args.quiet, "Print nothing but errors");
+
+  auto* examples = app.add_subcommand("examples", "List the built-in examples");
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (examples->parsed()) return run_examples();
+    if (args.input.empty() && args.example.empty()) {
+      std::cerr << "sculpt: error: give an input file or --example NAME\n";
+      return 2;
+    }
+    return run_reconstruct(args);
+  } catch (const sculpt::io::Error& e) {
+    std::cerr << "sculpt: error: " << e.what() << '\n';
+  } catch (const sculpt::Input_error& e) {
+    std::cerr << "sculpt: error: " << e.what() << '\n';
+  } catch (const std::bad_alloc&) {
+    std::cerr << "sculpt: error: out of memory\n";
+  } catch (const std::exception& e) {
+    std::cerr << "sculpt: internal error: " << e.what() << '\n';
+  }
+  return 1;
+}

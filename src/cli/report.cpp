@@ -1,0 +1,81 @@
+#include "report.hpp"
+
+#include <fmt/format.h>
+
+namespace sculpt::cli {
+
+void print_report(std::ostream& out, const Statistics& stats, const Run_description& run) {
+  const bool three = stats.dimension == 3;
+  out << fmt::format("sculpt {} ({}D, {}, rule {}, box factor {})\n", run.input, stats.dimension,
+                     run.kind, run.rule, run.box_factor);
+  out << fmt::format("  {:<14}{:>10}{:>12}\n", "stage", "seconds", "peak MiB");
+  out << fmt::format("  {:<14}{:>10.3f}\n", "read", run.read_seconds);
+  for (const auto& stage : stats.stages) {
+    out << fmt::format("  {:<14}{:>10.3f}{:>12.1f}\n", stage.name, stage.seconds,
+                       stage.peak_memory_mib);
+  }
+  out << fmt::format("  {:<14}{:>10.3f}\n", "total", stats.total_seconds);
+  const auto row = [&](const char* name, auto value) {
+    out << fmt::format("  {:<28}{:>12}\n", name, value);
+  };
+  row("samples (n)", stats.samples);
+  row("poles", stats.poles);
+  row("convex poles", stats.convex_poles);
+  row("inner / outer poles", fmt::format("{} / {}", stats.inner_poles, stats.outer_poles));
+  row("unlabelled poles", stats.unlabelled_poles);
+  row("conflicts", stats.conflicts);
+  row(run.kind == "closed" ? "inserted poles (m - 2^D)" : "inserted poles (l - 2^D)",
+      stats.inserted_poles);
+  row("cells of DT(S+BBV)", stats.delaunay_cells);
+  row("cells of DT(S+OUP)", stats.sculpted_cells);
+  row("solid cells", stats.solid_cells);
+  row(three ? "triangles" : "edges", stats.facets);
+  row(three ? "boundary edges" : "curve end points", stats.boundary_ridges);
+  row(three ? "non-manifold edges" : "branching samples", stats.non_manifold_ridges);
+  if (three) row("non-manifold vertices", stats.non_manifold_vertices);
+  row(three ? "boundary loops" : "open curves", stats.boundary_loops);
+  row("components", stats.components);
+  row("Euler characteristic", stats.euler_characteristic);
+  row("unused samples", stats.unused_samples);
+}
+
+nlohmann::json report_json(const Statistics& stats, const Run_description& run) {
+  nlohmann::json stages = nlohmann::json::array();
+  for (const auto& stage : stats.stages) {
+    stages.push_back({{"name", stage.name},
+                      {"seconds", stage.seconds},
+                      {"peak_memory_mib", stage.peak_memory_mib}});
+  }
+  return {
+      {"input", run.input},
+      {"dimension", stats.dimension},
+      {"kind", run.kind},
+      {"rule", run.rule},
+      {"box_factor", run.box_factor},
+      {"samples", stats.samples},
+      {"poles", stats.poles},
+      {"convex_poles", stats.convex_poles},
+      {"inner_poles", stats.inner_poles},
+      {"outer_poles", stats.outer_poles},
+      {"unlabelled_poles", stats.unlabelled_poles},
+      {"conflicts", stats.conflicts},
+      {"inserted_poles", stats.inserted_poles},
+      {"delaunay_cells", stats.delaunay_cells},
+      {"sculpted_cells", stats.sculpted_cells},
+      {"solid_cells", stats.solid_cells},
+      {"facets", stats.facets},
+      {"boundary_ridges", stats.boundary_ridges},
+      {"non_manifold_ridges", stats.non_manifold_ridges},
+      {"non_manifold_vertices", stats.non_manifold_vertices},
+      {"boundary_loops", stats.boundary_loops},
+      {"components", stats.components},
+      {"euler_characteristic", stats.euler_characteristic},
+      {"unused_samples", stats.unused_samples},
+      {"read_seconds", run.read_seconds},
+      {"write_seconds", run.write_seconds},
+      {"total_seconds", stats.total_seconds},
+      {"stages", stages},
+  };
+}
+
+}  // namespace sculpt::cli

@@ -1,0 +1,25 @@
+// What `sculpt reconstruct` tells the user: the stages with their times and memory, and the
+// statistics of the result, as a table on standard output or as JSON.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <ostream>
+#include <string>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt::cli {
+
+struct Run_description {
+  std::string input;
+  std::string rule;
+  std::string kind;
+  double box_factor = 5;
+  double read_seconds = 0;
+  double write_seconds = 0;
+};
+
+void print_report(std::ostream& out, const Statistics& stats, const Run_description& run);
+nlohmann::json report_json(const Statistics& stats, const Run_description& run);
+
+}  // namespace sculpt::cli

@@ -1,0 +1,149 @@
+#include "facet_topology.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace sculpt {
+namespace {
+
+class Union_find {
+ public:
+  explicit Union_find(std::size_t size) : parent_(size) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  std::size_t find(std::size_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void unite(std::size_t a, std::size_t b) { parent_[find(a)] = find(b); }
+
+ private:
+  std::vector<std::size_t> parent_;
+};
+
+// A ridge is a facet less one vertex, as sorted vertex indices: an edge in 3D, a vertex in 2D.
+template <int D>
+using Ridge = std::array<int, D - 1>;
+
+template <int D>
+std::vector<Ridge<D>> ridges_of(const std::vector<Facet<D>>& facets) {
+  std::vector<Ridge<D>> ridges;
+  ridges.reserve(facets.size() * D);
+  for (const auto& facet : facets) {
+    for (int skip = 0; skip < D; ++skip) {
+      Ridge<D> ridge;
+      for (int j = 0, k = 0; j < D; ++j) {
+        if (j != skip) ridge[k++] = facet[j];
+      }
+      std::sort(ridge.begin(), ridge.end());
+      ridges.push_back(ridge);
+    }
+  }
+  std::sort(ridges.begin(), ridges.end());
+  return ridges;
+}
+
+// 3D: a vertex is manifold when the edges opposite it in its triangles (its link) are connected.
+std::size_t count_non_manifold_vertices(std::size_t sample_count,
+                                        const std::vector<Facet<3>>& triangles) {
+  std::vector<std::size_t> offsets(sample_count + 1, 0);
+  for (const auto& t : triangles) {
+    for (int v : t) ++offsets[v + 1];
+  }
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  std::vector<std::array<int, 2>> link(offsets.back());
+  std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
+  for (const auto& t : triangles) {
+    for (int j = 0; j < 3; ++j) link[fill[t[j]]++] = {t[(j + 1) % 3], t[(j + 2) % 3]};
+  }
+  std::size_t count = 0;
+  std::vector<int> local;
+  for (std::size_t v = 0; v < sample_count; ++v) {
+    if (offsets[v] == offsets[v + 1]) continue;
+    local.clear();
+    for (auto e = offsets[v]; e < offsets[v + 1]; ++e) {
+      local.push_back(link[e][0]);
+      local.push_back(link[e][1]);
+    }
+    std::sort(local.begin(), local.end());
+    local.erase(std::unique(local.begin(), local.end()), local.end());
+    const auto index = [&](int x) {
+      return static_cast<std::size_t>(std::lower_bound(local.begin(), local.end(), x) -
+                                      local.begin());
+    };
+    Union_find pieces(local.size());
+    std::size_t groups = local.size();
+    for (auto e = offsets[v]; e < offsets[v + 1]; ++e) {
+      const auto a = pieces.find(index(link[e][0])), b = pieces.find(index(link[e][1]));
+      if (a != b) {
+        pieces.unite(a, b);
+        --groups;
+      }
+    }
+    count += groups > 1;
+  }
+  return count;
+}
+
+}  // namespace
+
+template <int D>
+void measure_topology(std::size_t sample_count, const std::vector<Facet<D>>& facets,
+                      Statistics& stats) {
+  stats.facets = facets.size();
+
+  std::vector<bool> used(sample_count, false);
+  Union_find pieces(sample_count);
+  for (const auto& facet : facets) {
+    for (int v : facet) used[v] = true;
+    for (int j = 1; j < D; ++j) pieces.unite(facet[0], facet[j]);
+  }
+  const auto used_count = static_cast<std::size_t>(std::count(used.begin(), used.end(), true));
+  stats.unused_samples = sample_count - used_count;
+  stats.components = 0;
+  for (std::size_t v = 0; v < sample_count; ++v) stats.components += used[v] && pieces.find(v) == v;
+
+  // Ridges with their multiplicity: 1 = boundary, 2 = manifold, more = non-manifold.
+  const auto ridges = ridges_of<D>(facets);
+  std::size_t distinct = 0;
+  stats.boundary_ridges = stats.non_manifold_ridges = 0;
+  std::vector<Ridge<D>> boundary;
+  for (std::size_t i = 0; i < ridges.size();) {
+    std::size_t j = i;
+    while (j < ridges.size() && ridges[j] == ridges[i]) ++j;
+    ++distinct;
+    if (j - i == 1) boundary.push_back(ridges[i]);
+    if (j - i > 2) ++stats.non_manifold_ridges;
+    i = j;
+  }
+  stats.boundary_ridges = boundary.size();
+
+  if constexpr (D == 3) {
+    stats.euler_characteristic = static_cast<long>(used_count) - static_cast<long>(distinct) +
+                                 static_cast<long>(facets.size());
+    stats.non_manifold_vertices = count_non_manifold_vertices(sample_count, facets);
+    // Boundary loops: connected pieces of the graph of border edges.
+    Union_find loops(sample_count);
+    std::vector<bool> on_border(sample_count, false);
+    for (const auto& edge : boundary) {
+      loops.unite(edge[0], edge[1]);
+      on_border[edge[0]] = on_border[edge[1]] = true;
+    }
+    stats.boundary_loops = 0;
+    for (std::size_t v = 0; v < sample_count; ++v) {
+      stats.boundary_loops += on_border[v] && loops.find(v) == v;
+    }
+  } else {
+    stats.euler_characteristic = static_cast<long>(used_count) - static_cast<long>(facets.size());
+    stats.non_manifold_vertices = stats.non_manifold_ridges;
+    // Open curves: components that have an end point.
+    std::vector<bool> open(sample_count, false);
+    for (const auto& end : boundary) open[pieces.find(end[0])] = true;
+    stats.boundary_loops = static_cast<std::size_t>(std::count(open.begin(), open.end(), true));
+  }
+}
+
+template void measure_topology<2>(std::size_t, const std::vector<Facet<2>>&, Statistics&);
+template void measure_topology<3>(std::size_t, const std::vector<Facet<3>>&, Statistics&);
+
+}  // namespace sculpt

@@ -1,0 +1,17 @@
+// Topology of a reconstruction's facets (triangles in 3D, edges in 2D), as reported in the
+// statistics and checked by the tests: boundary and non-manifold ridges, boundary loops,
+// connected components, Euler characteristic and unused samples.
+#pragma once
+
+#include <vector>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt {
+
+// Fills the topology fields of `stats` (boundary_ridges ... unused_samples, facets).
+template <int D>
+void measure_topology(std::size_t sample_count, const std::vector<Facet<D>>& facets,
+                      Statistics& stats);
+
+}  // namespace sculpt

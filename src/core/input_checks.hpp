@@ -1,0 +1,70 @@
+// The conditions under which the sculpting algorithm is defined: enough points, all finite, no
+// two alike, and not all on a line (2D) or plane (3D). Each failure is an Input_error with a
+// one-line message that names the offending point.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <vector>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt {
+
+template <int D>
+std::string describe_point(const Point<D>& p) {
+  std::ostringstream out;
+  out.precision(17);
+  out << '(';
+  for (int k = 0; k < D; ++k) out << (k ? ", " : "") << p[k];
+  out << ')';
+  return out.str();
+}
+
+template <class Traits>
+void check_input(const std::vector<Point<Traits::dimension>>& samples, const Options& options) {
+  constexpr int D = Traits::dimension;
+  if (!(options.box_factor > 1.0) || !std::isfinite(options.box_factor)) {
+    throw Input_error("the box factor must be a finite number greater than 1");
+  }
+  if (samples.size() < static_cast<std::size_t>(D + 1)) {
+    throw Input_error("a " + std::to_string(D) + "D reconstruction needs at least " +
+                      std::to_string(D + 1) + " points, got " + std::to_string(samples.size()));
+  }
+  if (samples.size() > static_cast<std::size_t>(std::numeric_limits<int>::max() / 4)) {
+    throw Input_error("too many points: " + std::to_string(samples.size()));
+  }
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    for (double x : samples[i]) {
+      if (!std::isfinite(x)) {
+        throw Input_error("point " + std::to_string(i) + " has a coordinate that is not finite: " +
+                          describe_point<D>(samples[i]));
+      }
+    }
+  }
+
+  std::vector<std::size_t> order(samples.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return samples[a] < samples[b] || (samples[a] == samples[b] && a < b);
+  });
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    if (samples[order[k]] == samples[order[k - 1]]) {
+      throw Input_error("point " + std::to_string(order[k]) + " duplicates point " +
+                        std::to_string(order[k - 1]) + " " + describe_point<D>(samples[order[k]]));
+    }
+  }
+
+  std::vector<typename Traits::Cgal_point> points;
+  points.reserve(samples.size());
+  for (const auto& p : samples) points.push_back(Traits::to_cgal(p));
+  if (Traits::affine_dimension(points) < D) {
+    throw Input_error(D == 2 ? "all points are collinear: there is no curve to reconstruct"
+                             : "all points are coplanar: there is no surface to reconstruct "
+                               "(a planar curve needs --dim 2)");
+  }
+}
+
+}  // namespace sculpt

@@ -1,0 +1,109 @@
+// Stage 2: Amenta's poles. The Voronoi cell of a sample s is bounded (thanks to the box), and its
+// vertices are the circumcentres of the Delaunay cells incident to s, each at distance equal to
+// that cell's circumradius. So
+//   p+ = circumcentre of the incident cell with the largest circumradius,
+//   p- = circumcentre of the incident cell with the largest circumradius among those on the
+//        other side of s: (c - s) · (p+ - s) < 0.
+// Both are found in two passes over the cells, without walking around any vertex. A pole is a
+// Delaunay cell; one cell can be a pole of several samples, so poles are deduplicated and their
+// pairing (the two poles of each sample) is stored as a graph.
+#pragma once
+
+#include <algorithm>
+#include <vector>
+
+#include <CGAL/squared_distance_2.h>
+#include <CGAL/squared_distance_3.h>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt {
+
+template <class Traits>
+void find_poles(const typename Traits::Triangulation& triangulation,
+                Reconstruction<Traits::dimension>& result) {
+  constexpr int D = Traits::dimension;
+  const int n = static_cast<int>(result.sites.size()) - (1 << D);
+  const auto squared_radius = [&](auto cell, const typename Traits::Cgal_point& center) {
+    return CGAL::squared_distance(center, cell->vertex(0)->point());
+  };
+
+  // Pass 1: p+ of every sample.
+  std::vector<double> plus_radius2(n, -1.0);
+  std::vector<typename Traits::Cell_handle> plus_cell(n);
+  for (auto cell : Traits::finite_cells(triangulation)) {
+    const auto center = Traits::circumcenter(triangulation, cell);
+    const double r2 = squared_radius(cell, center);
+    for (int i = 0; i <= D; ++i) {
+      const int s = cell->vertex(i)->info();
+      if (s < n && r2 > plus_radius2[s]) {
+        plus_radius2[s] = r2;
+        plus_cell[s] = cell;
+      }
+    }
+  }
+  std::vector<typename Traits::Cgal_point> plus_center(n);
+  for (int s = 0; s < n; ++s) plus_center[s] = Traits::circumcenter(triangulation, plus_cell[s]);
+
+  // Pass 2: p- of every sample.
+  std::vector<double> minus_radius2(n, -1.0);
+  std::vector<typename Traits::Cell_handle> minus_cell(n);
+  for (auto cell : Traits::finite_cells(triangulation)) {
+    const auto center = Traits::circumcenter(triangulation, cell);
+    const double r2 = squared_radius(cell, center);
+    for (int i = 0; i <= D; ++i) {
+      const int s = cell->vertex(i)->info();
+      if (s >= n || r2 <= minus_radius2[s]) continue;
+      const auto& sample = cell->vertex(i)->point();
+      if ((center - sample) * (plus_center[s] - sample) < 0) {
+        minus_radius2[s] = r2;
+        minus_cell[s] = cell;
+      }
+    }
+  }
+
+  // Deduplicate: pole index per Delaunay cell, in the order the samples first name them.
+  auto& stage = result.poles;
+  std::vector<int> pole_of_cell(result.delaunay.cell_count, -1);
+  const auto pole_for = [&](typename Traits::Cell_handle cell) {
+    int& pole = pole_of_cell[cell->info()];
+    if (pole < 0) {
+      pole = static_cast<int>(stage.poles.size());
+      Pole<D> p;
+      const auto center = Traits::circumcenter(triangulation, cell);
+      p.center = Traits::from_cgal(center);
+      p.radius = std::sqrt(squared_radius(cell, center));
+      p.cell = static_cast<std::size_t>(cell->info());
+      for (int i = 0; i <= D; ++i) p.convex = p.convex || cell->vertex(i)->info() >= n;
+      stage.poles.push_back(p);
+    }
+    return pole;
+  };
+  stage.positive_pole.assign(n, -1);
+  stage.negative_pole.assign(n, -1);
+  for (int s = 0; s < n; ++s) {
+    stage.positive_pole[s] = pole_for(plus_cell[s]);
+    if (minus_radius2[s] >= 0) stage.negative_pole[s] = pole_for(minus_cell[s]);
+  }
+
+  // The pairing graph in compressed rows: partners of each pole, sorted, without repeats.
+  const int pole_count = static_cast<int>(stage.poles.size());
+  std::vector<std::vector<int>> partners(pole_count);
+  for (int s = 0; s < n; ++s) {
+    const int a = stage.positive_pole[s], b = stage.negative_pole[s];
+    if (b < 0) continue;
+    partners[a].push_back(b);
+    partners[b].push_back(a);
+  }
+  stage.partner_offsets.assign(pole_count + 1, 0);
+  stage.partners.clear();
+  for (int p = 0; p < pole_count; ++p) {
+    auto& list = partners[p];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    stage.partners.insert(stage.partners.end(), list.begin(), list.end());
+    stage.partner_offsets[p + 1] = static_cast<int>(stage.partners.size());
+  }
+}
+
+}  // namespace sculpt

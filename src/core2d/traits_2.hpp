@@ -1,0 +1,45 @@
+// What the sculpting algorithm needs to know about 2D: CGAL's Delaunay_triangulation_2 with an
+// index on every vertex (its site) and every face (its place among the finite faces). The
+// algorithm calls faces "cells" in every dimension.
+#pragma once
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Search_traits_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt {
+
+struct Traits_2 {
+  static constexpr int dimension = 2;
+
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Cgal_point = Kernel::Point_2;
+  using Search_traits = CGAL::Search_traits_2<Kernel>;
+
+  using Vertex_base = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+  using Face_base = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;
+  using Tds = CGAL::Triangulation_data_structure_2<Vertex_base, Face_base>;
+  using Triangulation = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
+  using Cell_handle = Triangulation::Face_handle;
+
+  static Cgal_point to_cgal(const Point<2>& p) { return {p[0], p[1]}; }
+  static Point<2> from_cgal(const Cgal_point& p) { return {p.x(), p.y()}; }
+
+  static auto finite_cells(const Triangulation& t) { return t.finite_face_handles(); }
+  static auto all_cells(const Triangulation& t) { return t.all_face_handles(); }
+  static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) { return t.dual(c); }
+
+  // Vertex j of the edge opposite vertex i, ordered so that the face lies on the edge's left:
+  // CGAL's faces are counterclockwise, so a closed curve comes out counterclockwise around the
+  // region it bounds, with its normals (the edge direction turned clockwise) pointing outward.
+  static constexpr int facet_vertex[3][2] = {{1, 2}, {2, 0}, {0, 1}};
+
+  // 0 for a point, 1 for collinear, 2 otherwise (exact predicates).
+  static int affine_dimension(const std::vector<Cgal_point>& points);
+};
+
+}  // namespace sculpt

@@ -1,0 +1,45 @@
+// What the sculpting algorithm needs to know about 3D: CGAL's Delaunay_triangulation_3 with an
+// index on every vertex (its site) and every cell (its place among the finite cells).
+#pragma once
+
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt {
+
+struct Traits_3 {
+  static constexpr int dimension = 3;
+
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Cgal_point = Kernel::Point_3;
+  using Search_traits = CGAL::Search_traits_3<Kernel>;
+
+  using Vertex_base = CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>;
+  using Cell_base = CGAL::Triangulation_cell_base_with_info_3<
+      int, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+  using Tds = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
+  using Triangulation = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+  using Cell_handle = Triangulation::Cell_handle;
+
+  static Cgal_point to_cgal(const Point<3>& p) { return {p[0], p[1], p[2]}; }
+  static Point<3> from_cgal(const Cgal_point& p) { return {p.x(), p.y(), p.z()}; }
+
+  static auto finite_cells(const Triangulation& t) { return t.finite_cell_handles(); }
+  static auto all_cells(const Triangulation& t) { return t.all_cell_handles(); }
+  static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) { return t.dual(c); }
+
+  // Vertex j of the facet opposite vertex i, ordered so that the facet's normal points away
+  // from vertex i. CGAL's finite cells are positively oriented, and (a, b, c, i) is an odd
+  // permutation of (0, 1, 2, 3) for each row.
+  static constexpr int facet_vertex[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+
+  // 0 for a point, 1 for collinear, 2 for coplanar, 3 otherwise (exact predicates).
+  static int affine_dimension(const std::vector<Cgal_point>& points);
+};
+
+}  // namespace sculpt

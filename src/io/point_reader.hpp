@@ -1,0 +1,33 @@
+// Reading samples: the vertices of a point or mesh file, whatever its format.
+//   text:   .xyz .pts .txt .xy .p2d .csv  ("x y [z]" per line; `#` comments, a leading word such
+//           as `p` or `v`, a count header, commas and extra columns are tolerated)
+//   meshes: .ply (ascii or binary) .off .obj .stl (ascii or binary), through CGAL's readers
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <sculpt/sculpt.hpp>
+
+#include "io_error.hpp"
+
+namespace sculpt::io {
+
+struct Point_set {
+  std::vector<Point<3>> points;  // 2D files have z = 0
+  int dimension = 3;             // coordinates per point in the file: 2 or 3
+};
+
+// Throws io::Error with a one-line message on any problem with the file.
+Point_set read_points(const std::string& path);
+
+// The points of a set in a plane: a 2D file's (x, y), or a 3D set whose points all share one
+// coordinate, without it (`dropped` names it: "x", "y" or "z"). Throws io::Error otherwise.
+std::vector<Point<2>> planar_points(const Point_set& set, std::string* dropped = nullptr);
+
+std::vector<Point<3>> spatial_points(const Point_set& set);
+
+// The extension of a path in lower case, with its dot ("" if none).
+std::string extension_of(const std::string& path);
+
+}  // namespace sculpt::io

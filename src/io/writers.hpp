@@ -1,0 +1,34 @@
+// Writing results. Every writer chooses the format by the path's extension, writes the file
+// completely or not at all, and throws io::Error with a one-line message.
+//   surface (3D triangles): .stl (binary unless ascii), .ply (binary unless ascii), .off, .obj
+//   curve (2D edges):       .obj (polylines as `l` elements), .svg
+//   solid (tetrahedra or triangles): .mesh (Medit), .vtu (ParaView), .node/.ele (TetGen, Triangle)
+// Vertices are all the samples, in input order, so vertex i of the output is sample i.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <sculpt/sculpt.hpp>
+
+#include "io_error.hpp"
+
+namespace sculpt::io {
+
+void write_surface(const std::string& path, const std::vector<Point<3>>& samples,
+                   const std::vector<Facet<3>>& triangles, bool ascii);
+
+void write_curve(const std::string& path, const std::vector<Point<2>>& samples,
+                 const std::vector<Facet<2>>& edges);
+
+// Writes only the samples as vertices (solid cells have no other vertices).
+template <int D>
+void write_solid(const std::string& path, const std::vector<Point<D>>& samples,
+                 const std::vector<Cell<D>>& cells);
+
+// The formats each writer knows, for messages and --help.
+extern const char* const surface_formats;
+extern const char* const curve_formats;
+extern const char* const solid_formats;
+
+}  // namespace sculpt::io

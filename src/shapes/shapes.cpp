@@ -1,0 +1,192 @@
+#include "shapes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace sculpt::shapes {
+namespace {
+
+constexpr double pi = 3.14159265358979323846;
+
+Point<2> on_circle(double radius, double angle) {
+  return {radius * std::cos(angle), radius * std::sin(angle)};
+}
+
+void close_polygon(Sampled_curve& curve, int first, int count) {
+  for (int i = 0; i < count; ++i) curve.edges.push_back({first + i, first + (i + 1) % count});
+}
+
+}  // namespace
+
+Sampled_curve sample_closed_curve(const std::function<Point<2>(double)>& curve, int samples,
+                                  const std::function<double(double)>& density) {
+  // Integrate density along arc length on a fine polyline, then cut it into equal shares.
+  const int steps = std::max(20000, samples * 50);
+  std::vector<double> t(steps + 1), weight(steps + 1, 0.0);
+  Point<2> previous = curve(0.0);
+  for (int i = 1; i <= steps; ++i) {
+    t[i] = double(i) / steps;
+    const Point<2> p = curve(t[i]);
+    const double length = std::hypot(p[0] - previous[0], p[1] - previous[1]);
+    const double w = density ? density(0.5 * (t[i] + t[i - 1])) : 1.0;
+    weight[i] = weight[i - 1] + length * w;
+    previous = p;
+  }
+  Sampled_curve result;
+  for (int k = 0; k < samples; ++k) {
+    const double target = weight.back() * k / samples;
+    const auto i = std::lower_bound(weight.begin(), weight.end(), target) - weight.begin();
+    const double a = i == 0 ? 0 : (target - weight[i - 1]) / (weight[i] - weight[i - 1]);
+    result.samples.push_back(curve(i == 0 ? 0.0 : t[i - 1] + a * (t[i] - t[i - 1])));
+  }
+  close_polygon(result, 0, samples);
+  return result;
+}
+
+Sampled_curve circle(int samples) {
+  Sampled_curve result;
+  for (int i = 0; i < samples; ++i) result.samples.push_back(on_circle(1.0, 2 * pi * i / samples));
+  close_polygon(result, 0, samples);
+  return result;
+}
+
+Sampled_curve star(int samples, int arms, double depth) {
+  return sample_closed_curve(
+      [=](double t) { return on_circle(1.0 + depth * std::cos(arms * 2 * pi * t), 2 * pi * t); },
+      samples);
+}
+
+Sampled_curve blob(int samples) {
+  return sample_closed_curve(
+      [](double t) {
+        const double a = 2 * pi * t;
+        const double r = 1.0 + 0.25 * std::sin(2 * a + 0.4) + 0.15 * std::cos(3 * a) +
+                         0.08 * std::sin(5 * a + 1.0);
+        return Point<2>{1.3 * r * std::cos(a), r * std::sin(a)};
+      },
+      samples);
+}
+
+Sampled_curve nested_circles(int outer_samples, int inner_samples) {
+  Sampled_curve result;
+  for (int i = 0; i < outer_samples; ++i) {
+    result.samples.push_back(on_circle(1.0, 2 * pi * (i + 0.5) / outer_samples));
+  }
+  close_polygon(result, 0, outer_samples);
+  // The hole's border runs clockwise, so the annulus lies on the left of every edge.
+  for (int i = 0; i < inner_samples; ++i) {
+    result.samples.push_back(on_circle(0.5, -2 * pi * (i + 0.25) / inner_samples));
+  }
+  close_polygon(result, outer_samples, inner_samples);
+  return result;
+}
+
+Sampled_curve nonuniform_ellipse(int samples, double ratio) {
+  // Density runs smoothly from 1 to `ratio` and back along the curve.
+  return sample_closed_curve(
+      [](double t) { return Point<2>{1.5 * std::cos(2 * pi * t), std::sin(2 * pi * t)}; },
+      samples, [=](double t) { return 1.0 + (ratio - 1.0) * 0.5 * (1 - std::cos(2 * pi * t)); });
+}
+
+Sampled_curve open_arc(int samples) {
+  Sampled_curve result;
+  for (int i = 0; i < samples; ++i) {
+    result.samples.push_back(on_circle(1.0, 1.5 * pi * i / (samples - 1)));
+  }
+  for (int i = 0; i + 1 < samples; ++i) result.edges.push_back({i, i + 1});
+  return result;
+}
+
+std::vector<Point<3>> sphere(int samples) {
+  // Fibonacci lattice: nearly uniform, no four points cospherical by construction.
+  std::vector<Point<3>> points;
+  const double golden = pi * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < samples; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / samples;
+    const double r = std::sqrt(1.0 - z * z);
+    points.push_back({r * std::cos(golden * i), r * std::sin(golden * i), z});
+  }
+  return points;
+}
+
+std::vector<Point<3>> torus(int samples, double major, double minor, unsigned seed) {
+  // Uniform by area: accept an angle v with probability (R + r cos v) / (R + r).
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Point<3>> points;
+  points.reserve(samples);
+  while (static_cast<int>(points.size()) < samples) {
+    const double u = 2 * pi * unit(random), v = 2 * pi * unit(random);
+    if (unit(random) * (major + minor) > major + minor * std::cos(v)) continue;
+    const double ring = major + minor * std::cos(v);
+    points.push_back({ring * std::cos(u), ring * std::sin(u), minor * std::sin(v)});
+  }
+  return points;
+}
+
+std::vector<Point<3>> bumpy_sphere(int samples) {
+  std::vector<Point<3>> points = sphere(samples);
+  for (auto& p : points) {
+    // Radius modulated by a cubic harmonic: dents and bumps along the axes' diagonals.
+    const double bump = p[0] * p[0] * p[0] * p[0] + p[1] * p[1] * p[1] * p[1] +
+                        p[2] * p[2] * p[2] * p[2];  // 1 on the axes, 1/3 on the diagonals
+    const double r = 0.75 + 0.45 * (bump - 0.6);
+    for (double& x : p) x *= r;
+  }
+  return points;
+}
+
+std::vector<Point<3>> saddle(int samples_per_side) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  std::vector<Point<3>> points;
+  const double step = 2.0 / (samples_per_side - 1);
+  for (int i = 0; i < samples_per_side; ++i) {
+    for (int j = 0; j < samples_per_side; ++j) {
+      const bool border_x = i == 0 || i == samples_per_side - 1;
+      const bool border_y = j == 0 || j == samples_per_side - 1;
+      const double x = -1.0 + step * (i + (border_x ? 0.0 : jitter(random)));
+      const double y = -1.0 + step * (j + (border_y ? 0.0 : jitter(random)));
+      points.push_back({x, y, x * x - y * y});
+    }
+  }
+  return points;
+}
+
+const std::vector<Example>& examples() {
+  static const std::vector<Example> list = {
+      {"circle", 2, "64 samples on a circle", false},
+      {"star", 2, "a five-armed star, 200 samples", false},
+      {"blob", 2, "a smooth blob, 150 samples", false},
+      {"nested", 2, "two nested circles (an annulus), 120 + 60 samples", false},
+      {"nonuniform", 2, "an ellipse sampled 9:1 non-uniformly, 200 samples", false},
+      {"arc", 2, "an open three-quarter circle, 60 samples (bordered)", true},
+      {"sphere", 3, "2000 samples on a sphere", false},
+      {"torus", 3, "4000 random samples on a torus (genus 1)", false},
+      {"bumpy", 3, "a sphere with dents and bumps, 6000 samples", false},
+      {"saddle", 3, "the saddle z = x^2 - y^2, 40 x 40 jittered samples (bordered)", true},
+  };
+  return list;
+}
+
+std::vector<Point<2>> example_points_2(const std::string& name) {
+  if (name == "circle") return circle(64).samples;
+  if (name == "star") return star(200).samples;
+  if (name == "blob") return blob(150).samples;
+  if (name == "nested") return nested_circles(120, 60).samples;
+  if (name == "nonuniform") return nonuniform_ellipse(200).samples;
+  if (name == "arc") return open_arc(60).samples;
+  throw std::invalid_argument("no 2D example named '" + name + "'");
+}
+
+std::vector<Point<3>> example_points_3(const std::string& name) {
+  if (name == "sphere") return sphere(2000);
+  if (name == "torus") return torus(4000);
+  if (name == "bumpy") return bumpy_sphere(6000);
+  if (name == "saddle") return saddle(40);
+  throw std::invalid_argument("no 3D example named '" + name + "'");
+}
+
+}  // namespace sculpt::shapes

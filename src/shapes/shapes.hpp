@@ -1,0 +1,51 @@
+// Sampled shapes with known answers: the built-in examples of the command line and the viewer,
+// and the ground truth of the tests. Every generator is deterministic (fixed seeds).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt::shapes {
+
+// A sampled closed or open curve: samples in order along each curve, and the edges joining
+// consecutive samples (the ground-truth polygon).
+struct Sampled_curve {
+  std::vector<Point<2>> samples;
+  std::vector<Facet<2>> edges;  // counterclockwise around the region a closed curve bounds
+};
+
+// A closed plane curve given by a parametrisation t in [0, 1), sampled by arc length with the
+// given relative density (1 = uniform; larger = denser there).
+Sampled_curve sample_closed_curve(const std::function<Point<2>(double)>& curve, int samples,
+                                  const std::function<double(double)>& density = {});
+
+Sampled_curve circle(int samples);
+Sampled_curve star(int samples, int arms = 5, double depth = 0.3);
+Sampled_curve blob(int samples);
+Sampled_curve nested_circles(int outer_samples, int inner_samples);  // an annulus' two borders
+Sampled_curve nonuniform_ellipse(int samples, double ratio = 9.0);   // density ratio max/min
+Sampled_curve open_arc(int samples);  // a three-quarter circle: two end points
+
+// Surfaces: samples only.
+std::vector<Point<3>> sphere(int samples);
+std::vector<Point<3>> torus(int samples, double major = 1.0, double minor = 0.4,
+                            unsigned seed = 1);
+std::vector<Point<3>> bumpy_sphere(int samples);  // a sphere with six dents and bumps
+std::vector<Point<3>> saddle(int samples_per_side);  // z = x^2 - y^2 over [-1, 1]^2, jittered
+
+// Built-in examples by name, for `sculpt reconstruct --example NAME` and the viewer.
+struct Example {
+  std::string name;
+  int dimension;
+  std::string description;
+  bool bordered;
+};
+const std::vector<Example>& examples();
+// Throws std::invalid_argument for an unknown name.
+std::vector<Point<2>> example_points_2(const std::string& name);
+std::vector<Point<3>> example_points_3(const std::string& name);
+
+}  // namespace sculpt::shapes
