@@ -17,7 +17,7 @@ namespace sculpt::cli {
 namespace {
 
 struct Reconstruct_arguments {
-  std::string input, example, output, solid, stats, rule = "skin";
+  std::string input, example, output, solid, stats, rule = "auto";
   int dimension = 0;  // 0: as the input says
   int seed_sample = -1;
   double box_factor = 5.0;
@@ -68,13 +68,16 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
                           Run_description run) {
   Options options;
   options.kind = args.bordered ? Surface_kind::bordered : Surface_kind::closed;
-  options.rule = args.rule == "extraction" ? Surface_rule::extraction : Surface_rule::skin;
+  options.rule = args.rule == "extraction" ? Surface_rule::extraction
+                 : args.rule == "skin"     ? Surface_rule::skin
+                                           : Surface_rule::automatic;
   options.box_factor = args.box_factor;
   options.bordered_seed_sample = args.seed_sample;
   options.keep_triangulations = false;
   options.progress = progress_printer(samples.size(), args.quiet);
 
   const Reconstruction<D> result = reconstruct(samples, options);
+  run.rule = to_string(resolved_rule(options));
 
   const auto start = std::chrono::steady_clock::now();
   if constexpr (D == 3) {
@@ -173,8 +176,11 @@ int main(int argc, char** argv) {
                           "Bounding box BB relative to the samples' box")
       ->capture_default_str()
       ->check(CLI::Range(1.0 + 1e-9, 1e6));
-  reconstruct->add_option("--rule", args.rule, "Surface rule: skin (default) or extraction")
-      ->check(CLI::IsMember({"skin", "extraction"}));
+  reconstruct->add_option("--rule", args.rule,
+                          "Surface rule: auto (skin when closed, extraction when bordered), "
+                          "skin or extraction")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "skin", "extraction"}));
   reconstruct->add_option("--seed-sample", args.seed_sample,
                           "Bordered: seed with the convex pole of this sample");
   reconstruct->add_option("--dim", args.dimension,

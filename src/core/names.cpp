@@ -26,7 +26,17 @@ const char* to_string(Label_reason reason) {
 }
 
 const char* to_string(Surface_rule rule) {
-  return rule == Surface_rule::skin ? "skin" : "extraction";
+  switch (rule) {
+    case Surface_rule::automatic: return "automatic";
+    case Surface_rule::skin: return "skin";
+    case Surface_rule::extraction: return "extraction";
+  }
+  return "?";
+}
+
+Surface_rule resolved_rule(const Options& options) {
+  if (options.rule != Surface_rule::automatic) return options.rule;
+  return options.kind == Surface_kind::closed ? Surface_rule::skin : Surface_rule::extraction;
 }
 
 const char* to_string(Surface_kind kind) {

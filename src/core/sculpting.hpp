@@ -65,7 +65,7 @@ void extract_surface(const typename Traits::Triangulation& triangulation,
                      Reconstruction<Traits::dimension>& result) {
   constexpr int D = Traits::dimension;
   const Apex_sides<Traits> sides(result);
-  const bool literal_rule = result.options.rule == Surface_rule::extraction;
+  const bool literal_rule = resolved_rule(result.options) == Surface_rule::extraction;
   for (auto cell : Traits::all_cells(triangulation)) {
     for (int i = 0; i <= D; ++i) {
       Facet<D> facet;

@@ -1,0 +1,66 @@
+// Input the algorithm cannot work on is refused with an Input_error naming the problem.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt {
+namespace {
+
+template <int D>
+std::string refusal(const std::vector<Point<D>>& points, const Options& options = {}) {
+  try {
+    reconstruct(points, options);
+  } catch (const Input_error& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+
+TEST(Bad_input, TooFewPoints) {
+  EXPECT_NE(refusal<2>({{0, 0}, {1, 0}}).find("at least 3"), std::string::npos);
+  EXPECT_NE(refusal<3>({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}).find("at least 4"), std::string::npos);
+  EXPECT_NE(refusal<3>({}).find("got 0"), std::string::npos);
+}
+
+TEST(Bad_input, NotFinite) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {nan, 1}}).find("point 2"), std::string::npos);
+  EXPECT_NE(refusal<3>({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, inf}}).find("not finite"),
+            std::string::npos);
+}
+
+TEST(Bad_input, Duplicates) {
+  EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {0, 1}, {1, 0}}).find("point 3 duplicates point 1"),
+            std::string::npos);
+}
+
+TEST(Bad_input, DegenerateSets) {
+  EXPECT_NE(refusal<2>({{0, 0}, {1, 1}, {2, 2}, {3, 3}}).find("collinear"), std::string::npos);
+  EXPECT_NE(refusal<3>({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}, {2, 3, 1}}).find("coplanar"),
+            std::string::npos);
+  EXPECT_NE(refusal<3>({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}}).find("coplanar"),
+            std::string::npos);
+}
+
+TEST(Bad_input, Options) {
+  Options options;
+  options.box_factor = 0.5;
+  EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {0, 1}}, options).find("box factor"), std::string::npos);
+  options.box_factor = 5;
+  options.kind = Surface_kind::bordered;
+  options.bordered_seed_sample = 10;
+  EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {0, 1}}, options).find("not a sample"), std::string::npos);
+}
+
+TEST(Bad_input, SmallestValidInputsWork) {
+  EXPECT_EQ(reconstruct(std::vector<Point<2>>{{0, 0}, {1, 0}, {0, 1}}).stats.facets, 3u);
+  EXPECT_EQ(reconstruct(std::vector<Point<3>>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}).stats.facets,
+            4u);
+}
+
+}  // namespace
+}  // namespace sculpt

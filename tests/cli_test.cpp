@@ -1,0 +1,111 @@
+// The `sculpt` command as a user runs it: outputs, statistics, and one clear line and a
+// non-zero exit on bad input, with no output file left behind.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "file_support.hpp"
+
+namespace sculpt {
+namespace {
+
+using testing::output_path;
+using testing::read_file;
+using testing::write_file;
+
+struct Command_result {
+  int exit_code;
+  std::string out, err;
+};
+
+Command_result run_sculpt(const std::string& arguments) {
+  // ctest runs tests in parallel processes: each run gets files of its own.
+  static int runs = 0;
+  const std::string stem = "cli-" + std::to_string(::getpid()) + "-" + std::to_string(runs++);
+  const std::string out = output_path(stem + ".stdout"), err = output_path(stem + ".stderr");
+  const std::string command =
+      std::string(SCULPT_EXECUTABLE) + " " + arguments + " >" + out + " 2>" + err;
+  const int status = std::system(command.c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+}
+
+TEST(Cli, ReconstructsAnExampleWithSolidAndStatistics) {
+  const auto surface = output_path("torus.stl"), solid = output_path("torus.vtu"),
+             stats = output_path("torus.json");
+  const Command_result run = run_sculpt("reconstruct --example torus -o " + surface + " --solid " + solid +
+                             " --stats " + stats);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("conflicts"), std::string::npos);
+  EXPECT_NE(run.out.find("propagation"), std::string::npos);
+  const auto json = nlohmann::json::parse(read_file(stats));
+  EXPECT_EQ(json["dimension"], 3);
+  EXPECT_EQ(json["euler_characteristic"], 0);
+  EXPECT_EQ(json["boundary_ridges"], 0);
+  EXPECT_EQ(json["stages"].size(), 9u);
+  EXPECT_EQ(std::filesystem::file_size(surface), 84u + 50u * json["facets"].get<std::size_t>());
+  EXPECT_TRUE(std::filesystem::exists(solid));
+}
+
+TEST(Cli, DimensionFollowsTheInput) {
+  std::string points;
+  for (int i = 0; i < 40; ++i) {
+    const double a = 2 * 3.14159265358979 * i / 40;
+    points += "p 0 " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + "\n";
+  }
+  const auto input = write_file("planar.pts", points);
+  // Three columns, one constant: a surface cannot be made, and the message says --dim 2.
+  const Command_result refused = run_sculpt("reconstruct " + input + " -o " + output_path("planar.stl"));
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("--dim 2"), std::string::npos) << refused.err;
+  const auto curve = output_path("planar.svg");
+  const Command_result run = run_sculpt("reconstruct " + input + " --dim 2 -q -o " + curve);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_TRUE(run.out.empty()) << "--quiet prints nothing";
+  EXPECT_NE(read_file(curve).find("<path"), std::string::npos);
+}
+
+TEST(Cli, BadInputGivesOneLineAndNoOutput) {
+  const std::pair<std::string, std::string> bad[] = {
+      {"missing.xyz", ""},
+      {"malformed.xyz", "1 2 3\n4 x 6\n0 0 1\n1 1 1\n"},
+      {"truncated.xyz", "10\n1 2 3\n4 5 6\n"},
+      {"garbage.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 9\n"
+                      "property double x\nend_header\n\x01\x02"},
+      {"nan.xyz", "0 0 0\n1 0 0\n0 1 0\nnan 0 1\n"},
+      {"few.xyz", "0 0 0\n1 0 0\n0 1 0\n"},
+      {"coplanar.xyz", "0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 3 0\n"},
+      {"collinear.xy", "0 0\n1 1\n2 2\n"},
+      {"duplicates.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0\n"},
+  };
+  for (const auto& [name, content] : bad) {
+    const std::string input =
+        content.empty() ? output_path(name) : write_file(name, content);
+    const auto output = output_path(name + ".out.stl");
+    const Command_result run = run_sculpt("reconstruct " + input + " -o " + output);
+    EXPECT_EQ(run.exit_code, 1) << name;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << name << ": " << run.err;
+    EXPECT_EQ(run.err.rfind("sculpt: error: ", 0), 0u) << name << ": " << run.err;
+    EXPECT_FALSE(std::filesystem::exists(output)) << name;
+  }
+}
+
+TEST(Cli, UnknownOutputFormatFailsBeforeWork) {
+  const Command_result run = run_sculpt("reconstruct --example sphere -o " + output_path("sphere.xyz"));
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_NE(run.err.find("known: .stl"), std::string::npos) << run.err;
+}
+
+TEST(Cli, VersionAndHelp) {
+  EXPECT_EQ(run_sculpt("--version").exit_code, 0);
+  const Command_result help = run_sculpt("reconstruct --help");
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--bordered"), std::string::npos);
+  EXPECT_NE(help.out.find("--box-factor"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sculpt

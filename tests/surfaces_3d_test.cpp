@@ -1,0 +1,84 @@
+// 3D: closed samples give closed, outward-oriented 2-manifolds of the right genus whose
+// vertices are the samples; bordered samples give a manifold sheet with its border.
+#include "shapes/shapes.hpp"
+#include "test_support.hpp"
+
+namespace sculpt {
+namespace {
+
+TEST(Surfaces_3d, SphereIsAClosedManifoldOfGenusZero) {
+  const auto result = reconstruct(shapes::sphere(2000));
+  testing::expect_closed_manifold(result, 2);
+  EXPECT_EQ(result.stats.inserted_poles, 0u) << "a convex shape needs no sculpting";
+}
+
+TEST(Surfaces_3d, TorusHasEulerCharacteristicZero) {
+  const auto result = reconstruct(shapes::torus(4000));
+  testing::expect_closed_manifold(result, 0);
+  EXPECT_GT(result.stats.inserted_poles, 0u) << "the hole must be sculpted out";
+}
+
+TEST(Surfaces_3d, NonConvexBumpySphere) {
+  const auto result = reconstruct(shapes::bumpy_sphere(6000));
+  testing::expect_closed_manifold(result, 2);
+  EXPECT_GT(result.stats.inserted_poles, 0u);
+  EXPECT_EQ(result.stats.conflicts, 0u);
+}
+
+TEST(Surfaces_3d, SkinAndExtractionAgreeOnCleanInput) {
+  Options extraction;
+  extraction.rule = Surface_rule::extraction;
+  const auto skin = reconstruct(shapes::torus(4000));
+  const auto literal = reconstruct(shapes::torus(4000), extraction);
+  EXPECT_EQ(skin.surface, literal.surface);
+}
+
+TEST(Surfaces_3d, SkinIsTheBoundaryOfTheSolid) {
+  // Every triangle of the closed surface is a face of exactly one solid tetrahedron.
+  const auto result = reconstruct(shapes::bumpy_sphere(3000));
+  std::map<std::array<int, 3>, int> solid_faces;
+  for (const auto& cell : result.solid) {
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> face;
+      for (int j = 0, k = 0; j < 4; ++j) {
+        if (j != skip) face[k++] = cell[j];
+      }
+      std::sort(face.begin(), face.end());
+      ++solid_faces[face];
+    }
+  }
+  std::size_t boundary_faces = 0;
+  for (const auto& [face, count] : solid_faces) boundary_faces += count == 1;
+  EXPECT_EQ(boundary_faces, result.surface.size());
+  for (auto triangle : result.surface) {
+    std::sort(triangle.begin(), triangle.end());
+    EXPECT_EQ(solid_faces[triangle], 1);
+  }
+}
+
+TEST(Surfaces_3d, BorderedSaddleIsOneSheetWithOneBorder) {
+  Options options;
+  options.kind = Surface_kind::bordered;
+  const int side = 30;
+  const auto result = reconstruct(shapes::saddle(side), options);
+  const auto& s = result.stats;
+  EXPECT_EQ(s.boundary_loops, 1u);
+  EXPECT_EQ(s.non_manifold_ridges, 0u);
+  EXPECT_EQ(s.non_manifold_vertices, 0u);
+  EXPECT_EQ(s.components, 1u);
+  EXPECT_EQ(s.unused_samples, 0u);
+  EXPECT_EQ(s.euler_characteristic, 1) << "a disk";
+  // A triangulated square grid of side x side samples has 2 (side - 1)^2 triangles and a border
+  // of 4 (side - 1) edges.
+  EXPECT_EQ(s.facets, std::size_t(2 * (side - 1) * (side - 1)));
+  EXPECT_EQ(s.boundary_ridges, std::size_t(4 * (side - 1)));
+}
+
+TEST(Surfaces_3d, ClosedModeOnASheetGivesNoBorder) {
+  // The same saddle without --bordered is sculpted as a solid: its border disappears.
+  const auto result = reconstruct(shapes::saddle(20));
+  EXPECT_EQ(result.stats.boundary_ridges, 0u);
+}
+
+}  // namespace
+}  // namespace sculpt

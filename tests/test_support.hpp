@@ -1,0 +1,82 @@
+// Checks shared by the tests: what makes a reconstructed curve or surface right.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt::testing {
+
+inline std::set<std::pair<int, int>> undirected(const std::vector<Facet<2>>& edges) {
+  std::set<std::pair<int, int>> result;
+  for (const auto& e : edges) result.insert(std::minmax(e[0], e[1]));
+  return result;
+}
+
+inline std::set<std::pair<int, int>> directed(const std::vector<Facet<2>>& edges) {
+  std::set<std::pair<int, int>> result;
+  for (const auto& e : edges) result.insert({e[0], e[1]});
+  return result;
+}
+
+// Every directed edge of the triangles appears once, and its reverse once: a closed surface
+// whose triangles are consistently oriented.
+inline ::testing::AssertionResult consistently_oriented_closed(
+    const std::vector<Facet<3>>& triangles) {
+  std::map<std::pair<int, int>, int> count;
+  for (const auto& t : triangles) {
+    for (int j = 0; j < 3; ++j) ++count[{t[j], t[(j + 1) % 3]}];
+  }
+  for (const auto& [edge, times] : count) {
+    if (times != 1) {
+      return ::testing::AssertionFailure()
+             << "directed edge " << edge.first << "-" << edge.second << " appears " << times
+             << " times";
+    }
+    if (!count.count({edge.second, edge.first})) {
+      return ::testing::AssertionFailure()
+             << "edge " << edge.first << "-" << edge.second << " has no opposite";
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+// Volume enclosed by the triangles (divergence theorem): positive when normals point outward.
+inline double signed_volume(const std::vector<Point<3>>& points,
+                            const std::vector<Facet<3>>& triangles) {
+  double volume = 0;
+  for (const auto& t : triangles) {
+    const auto& a = points[t[0]];
+    const auto& b = points[t[1]];
+    const auto& c = points[t[2]];
+    volume += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+              a[2] * (b[0] * c[1] - b[1] * c[0]);
+  }
+  return volume / 6.0;
+}
+
+// Everything a closed, outward-oriented 2-manifold reconstruction of the samples must satisfy.
+inline void expect_closed_manifold(const Reconstruction<3>& r, long euler_characteristic) {
+  const auto& s = r.stats;
+  EXPECT_GT(s.facets, 0u);
+  EXPECT_EQ(s.boundary_ridges, 0u);
+  EXPECT_EQ(s.non_manifold_ridges, 0u);
+  EXPECT_EQ(s.non_manifold_vertices, 0u);
+  EXPECT_EQ(s.components, 1u);
+  EXPECT_EQ(s.unused_samples, 0u);
+  EXPECT_EQ(s.euler_characteristic, euler_characteristic);
+  EXPECT_TRUE(consistently_oriented_closed(r.surface));
+  const std::vector<Point<3>> samples(r.sites.begin(), r.sites.begin() + r.sample_count());
+  EXPECT_GT(signed_volume(samples, r.surface), 0.0) << "normals point inward";
+  for (const auto& t : r.surface) {
+    for (int v : t) ASSERT_LT(v, static_cast<int>(r.sample_count()));
+  }
+}
+
+}  // namespace sculpt::testing

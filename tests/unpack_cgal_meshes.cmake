@@ -1,0 +1,13 @@
+# Unpacks the CGAL meshes the tests read from Debian's libcgal-demo archive.
+if(NOT EXISTS "${ARCHIVE}")
+  message(FATAL_ERROR "${ARCHIVE} is missing: install Debian's libcgal-demo (scripts/install-dependencies)")
+endif()
+file(MAKE_DIRECTORY "${DESTINATION}")
+execute_process(
+  COMMAND ${CMAKE_COMMAND} -E tar xzf "${ARCHIVE}" data/meshes/bunny00.off data/meshes/knot1.off
+          data/meshes/hand.off data/meshes/femur.off data/meshes/fandisk.off
+  WORKING_DIRECTORY "${DESTINATION}"
+  RESULT_VARIABLE result)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "could not unpack the CGAL meshes from ${ARCHIVE}")
+endif()
