@@ -183,7 +183,8 @@ struct Statistics {
   std::size_t inner_poles = 0;
   std::size_t outer_poles = 0;
   std::size_t unlabelled_poles = 0;
-  std::size_t conflicts = 0;
+  std::size_t conflicts = 0;           // poles offered both labels
+  std::size_t conflict_offers = 0;     // offers of the other label (several per pole)
   std::size_t inserted_poles = 0;      // m (closed) or l (bordered), without the box corners
   std::size_t delaunay_cells = 0;      // cells of DT(S ∪ BBV)
   std::size_t sculpted_cells = 0;      // cells of DT(S ∪ OUP)
@@ -240,6 +241,11 @@ Surface_rule resolved_rule(const Options& options);
 // Throws Input_error for input it cannot work on, Cancelled when the progress callback says so.
 Reconstruction<2> reconstruct(const std::vector<Point<2>>& samples, const Options& options = {});
 Reconstruction<3> reconstruct(const std::vector<Point<3>>& samples, const Options& options = {});
+
+// The baseline the benchmark compares every timing with: CGAL's Delaunay triangulation of the
+// same points (range insertion, spatially sorted), in seconds.
+double delaunay_seconds(const std::vector<Point<2>>& points);
+double delaunay_seconds(const std::vector<Point<3>>& points);
 
 const char* to_string(Label label);
 const char* to_string(Label_reason reason);

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <iostream>
 
+#include "bench.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_reader.hpp"
 #include "io/writers.hpp"
@@ -192,9 +193,19 @@ int main(int argc, char** argv) {
 
   auto* examples = app.add_subcommand("examples", "List the built-in examples");
 
+  Bench_arguments bench_args;
+  auto* bench = app.add_subcommand(
+      "bench", "Time every stage and its peak memory next to CGAL's Delaunay of the same points");
+  bench->add_option("inputs", bench_args.inputs, "Point files");
+  bench->add_option("--example", bench_args.examples, "Built-in examples");
+  bench->add_option("--torus", bench_args.torus_points, "Also N random points on a torus");
+  bench->add_flag("--bordered", bench_args.bordered, "Treat the point files as bordered");
+  bench->add_option("--json", bench_args.json, "Also write the measurements as JSON");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (examples->parsed()) return run_examples();
+    if (bench->parsed()) return run_bench(bench_args);
     if (args.input.empty() && args.example.empty()) {
       std::cerr << "sculpt: error: give an input file or --example NAME\n";
       return 2;

@@ -23,7 +23,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   row("convex poles", stats.convex_poles);
   row("inner / outer poles", fmt::format("{} / {}", stats.inner_poles, stats.outer_poles));
   row("unlabelled poles", stats.unlabelled_poles);
-  row("conflicts", stats.conflicts);
+  row("conflicts (poles / offers)", fmt::format("{} / {}", stats.conflicts, stats.conflict_offers));
   row(run.kind == "closed" ? "inserted poles (m - 2^D)" : "inserted poles (l - 2^D)",
       stats.inserted_poles);
   row("cells of DT(S+BBV)", stats.delaunay_cells);
@@ -59,6 +59,7 @@ nlohmann::json report_json(const Statistics& stats, const Run_description& run) 
       {"outer_poles", stats.outer_poles},
       {"unlabelled_poles", stats.unlabelled_poles},
       {"conflicts", stats.conflicts},
+      {"conflict_offers", stats.conflict_offers},
       {"inserted_poles", stats.inserted_poles},
       {"delaunay_cells", stats.delaunay_cells},
       {"sculpted_cells", stats.sculpted_cells},

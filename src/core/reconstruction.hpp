@@ -3,6 +3,8 @@
 // them, and gathers the statistics.
 #pragma once
 
+#include <algorithm>
+#include <chrono>
 #include <vector>
 
 #include "delaunay.hpp"
@@ -26,7 +28,23 @@ void count_labels(Reconstruction<D>& result) {
     stats.outer_poles += label == Label::outer;
   }
   stats.unlabelled_poles = result.propagation.unlabelled;
-  stats.conflicts = result.propagation.conflicts.size();
+  std::vector<bool> conflicted(result.poles.poles.size(), false);
+  for (const auto& offer : result.propagation.conflicts) conflicted[offer.pole] = true;
+  stats.conflicts = static_cast<std::size_t>(std::count(conflicted.begin(), conflicted.end(), true));
+  stats.conflict_offers = result.propagation.conflicts.size();
+}
+
+// CGAL's Delaunay triangulation of the points alone, timed: the benchmark's yardstick.
+template <class Traits>
+double time_plain_delaunay(const std::vector<Point<Traits::dimension>>& points) {
+  std::vector<typename Traits::Cgal_point> cgal_points;
+  cgal_points.reserve(points.size());
+  for (const auto& p : points) cgal_points.push_back(Traits::to_cgal(p));
+  const auto start = std::chrono::steady_clock::now();
+  typename Traits::Triangulation triangulation(cgal_points.begin(), cgal_points.end());
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return triangulation.number_of_vertices() > 0 ? seconds : 0.0;
 }
 
 template <class Traits>

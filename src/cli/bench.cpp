@@ -1,0 +1,172 @@
+#include "bench.hpp"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "io/atomic_file.hpp"
+#include "io/point_reader.hpp"
+#include "report.hpp"
+#include "shapes/shapes.hpp"
+
+namespace sculpt::cli {
+namespace {
+
+// Runs `work` in a child process and returns the JSON it produced, with the child's peak memory.
+template <class Work>
+nlohmann::json in_child_process(Work&& work) {
+  int channel[2];
+  if (pipe(channel) != 0) throw std::runtime_error("pipe failed");
+  const pid_t child = fork();
+  if (child < 0) throw std::runtime_error("fork failed");
+  if (child == 0) {
+    close(channel[0]);
+    std::string text;
+    try {
+      text = work().dump();
+    } catch (const std::exception& e) {
+      text = nlohmann::json{{"error", e.what()}}.dump();
+    }
+    const char* data = text.data();
+    for (std::size_t left = text.size(); left > 0;) {
+      const auto written = write(channel[1], data, left);
+      if (written <= 0) break;
+      data += written;
+      left -= static_cast<std::size_t>(written);
+    }
+    _exit(0);
+  }
+  close(channel[1]);
+  std::string text;
+  char buffer[65536];
+  for (ssize_t got; (got = read(channel[0], buffer, sizeof buffer)) > 0;) text.append(buffer, got);
+  close(channel[0]);
+  int status = 0;
+  rusage usage{};
+  wait4(child, &status, 0, &usage);
+  if (text.empty()) return {{"error", "the measuring process died"}};
+  auto result = nlohmann::json::parse(text);
+  result["process_peak_mib"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  return result;
+}
+
+template <int D>
+nlohmann::json measure(const std::string& name, const std::vector<Point<D>>& points,
+                       bool bordered) {
+  nlohmann::json row;
+  row["input"] = name;
+  row["samples"] = points.size();
+  row["delaunay_only"] = in_child_process([&] {
+    return nlohmann::json{{"seconds", delaunay_seconds(points)}};
+  });
+  row["sculpt"] = in_child_process([&] {
+    Options options;
+    options.kind = bordered ? Surface_kind::bordered : Surface_kind::closed;
+    options.keep_triangulations = false;
+    Run_description run;
+    run.input = name;
+    run.kind = to_string(options.kind);
+    run.rule = to_string(resolved_rule(options));
+    return report_json(reconstruct(points, options).stats, run);
+  });
+  return row;
+}
+
+void print_rows(const std::vector<nlohmann::json>& rows) {
+  std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>8}{:>9}{:>9}{:>8}{:>9}{:>9}{:>8}{:>8}\n",
+                           "time (s)", "n", "CGAL DT", "ours:DT", "poles", "separate",
+                           "insert", "solid+", "total", "/ DT", "m/n");
+  for (const auto& row : rows) {
+    const auto& s = row["sculpt"];
+    if (s.contains("error") || row["delaunay_only"].contains("error")) {
+      std::cout << fmt::format("{:<22} failed: {}\n", row["input"].get<std::string>(),
+                               s.value("error", row["delaunay_only"].value("error", "")));
+      continue;
+    }
+    std::map<std::string, double> stage;
+    for (const auto& st : s["stages"]) stage[st["name"]] = st["seconds"];
+    const double dt = row["delaunay_only"]["seconds"];
+    const double total = s["total_seconds"];
+    std::cout << fmt::format(
+        "{:<22}{:>9}{:>9.3f}{:>8.3f}{:>9.3f}{:>9.3f}{:>8.3f}{:>9.3f}{:>9.3f}{:>8.2f}{:>8.3f}\n",
+        row["input"].get<std::string>(), s["samples"].get<std::size_t>(), dt, stage["delaunay"],
+        stage["poles"], stage["seeds"] + stage["propagation"], stage["insertion"],
+        stage["solid"] + stage["surface"] + stage["topology"] + stage["checks"], total,
+        total / dt, double(s["inserted_poles"]) / double(s["samples"]));
+  }
+  std::cout << fmt::format("\n{:<22}{:>11}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}\n",
+                           "peak memory (MiB)", "CGAL DT", "delaunay", "poles", "separate",
+                           "insert", "surface", "process", "/ DT");
+  for (const auto& row : rows) {
+    const auto& s = row["sculpt"];
+    if (s.contains("error")) continue;
+    std::map<std::string, double> peak;
+    for (const auto& st : s["stages"]) peak[st["name"]] = st["peak_memory_mib"];
+    const double dt = row["delaunay_only"]["process_peak_mib"];
+    const double ours = s["process_peak_mib"];
+    std::cout << fmt::format("{:<22}{:>11.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.2f}\n",
+                             row["input"].get<std::string>(), dt, peak["delaunay"], peak["poles"],
+                             peak["propagation"], peak["insertion"], peak["topology"], ours,
+                             ours / dt);
+  }
+  std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>11}{:>10}{:>10}{:>10}{:>9}{:>8}{:>8}\n",
+                           "result", "poles", "m (or l)", "conflicts", "unlabel.", "triangles",
+                           "boundary", "non-man.", "unused", "pieces");
+  for (const auto& row : rows) {
+    const auto& s = row["sculpt"];
+    if (s.contains("error")) continue;
+    std::cout << fmt::format("{:<22}{:>9}{:>9}{:>11}{:>10}{:>10}{:>10}{:>9}{:>8}{:>8}\n",
+                             row["input"].get<std::string>(), s["poles"].get<std::size_t>(),
+                             s["inserted_poles"].get<std::size_t>(), s["conflicts"].get<std::size_t>(),
+                             s["unlabelled_poles"].get<std::size_t>(), s["facets"].get<std::size_t>(),
+                             s["boundary_ridges"].get<std::size_t>(),
+                             s["non_manifold_ridges"].get<std::size_t>(),
+                             s["unused_samples"].get<std::size_t>(), s["components"].get<std::size_t>());
+  }
+}
+
+}  // namespace
+
+int run_bench(const Bench_arguments& args) {
+  std::vector<nlohmann::json> rows;
+  const auto add = [&](nlohmann::json row) {
+    std::cerr << "sculpt bench: " << row["input"].get<std::string>() << " done\n";
+    rows.push_back(std::move(row));
+  };
+  for (const auto& path : args.inputs) {
+    const auto set = io::read_points(path);
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    if (set.dimension == 2) {
+      add(measure<2>(name, io::planar_points(set), args.bordered));
+    } else {
+      add(measure<3>(name, set.points, args.bordered));
+    }
+  }
+  for (const auto& example : args.examples) {
+    const auto& list = shapes::examples();
+    const auto found = std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.name == example; });
+    if (found == list.end()) throw io::Error("no built-in example named '" + example + "'");
+    if (found->dimension == 2) {
+      add(measure<2>(example, shapes::example_points_2(example), found->bordered));
+    } else {
+      add(measure<3>(example, shapes::example_points_3(example), found->bordered));
+    }
+  }
+  if (args.torus_points > 0) {
+    add(measure<3>(fmt::format("torus {}", args.torus_points), shapes::torus(args.torus_points),
+                   false));
+  }
+  print_rows(rows);
+  if (!args.json.empty()) {
+    io::Atomic_file file(args.json, false);
+    file.stream() << nlohmann::json(rows).dump(2) << '\n';
+    file.commit();
+  }
+  return 0;
+}
+
+}  // namespace sculpt::cli
