@@ -37,6 +37,26 @@ TEST(Point_reader, CountHeaderAndTwoColumns) {
   EXPECT_EQ(set.points[2], (Point<3>{0, 1, 0}));
 }
 
+TEST(Point_reader, PlyPointCloudsAsciiAndBinary) {
+  // Scans often come as PLY vertices without faces, with extra properties.
+  const std::string header =
+      "element vertex 2\nproperty double x\nproperty double y\nproperty double z\n"
+      "property uchar intensity\nend_header\n";
+  const auto ascii = io::read_points(
+      write_file("cloud-ascii.ply", "ply\nformat ascii 1.0\n" + header + "1 2 3 9\n4 5 6 9\n"));
+  ASSERT_EQ(ascii.points.size(), 2u);
+  EXPECT_EQ(ascii.points[1], (Point<3>{4, 5, 6}));
+
+  std::string binary = "ply\nformat binary_little_endian 1.0\n" + header;
+  for (double x : {1.5, 2.5, 3.5, 4.5, 5.5, 6.5}) {
+    binary.append(reinterpret_cast<const char*>(&x), sizeof x);
+    if (x == 3.5 || x == 6.5) binary.push_back('\x09');
+  }
+  const auto set = io::read_points(write_file("cloud-binary.ply", binary));
+  ASSERT_EQ(set.points.size(), 2u);
+  EXPECT_EQ(set.points[1], (Point<3>{4.5, 5.5, 6.5}));
+}
+
 TEST(Point_reader, PlanarPointsDropTheirConstantCoordinate) {
   const auto set = io::read_points(write_file("plane.pts", "p 0 1 2\np 0 3 4\np 0 5 7\n"));
   std::string dropped;

@@ -23,6 +23,29 @@ std::string describe_point(const Point<D>& p) {
   return out.str();
 }
 
+// The dimension of the smallest affine space holding the points: 0 for a single point, 1 for a
+// line, 2 for a plane, 3 otherwise (exact predicates).
+template <class Traits>
+int affine_dimension(const std::vector<typename Traits::Cgal_point>& points) {
+  using Cgal_point = typename Traits::Cgal_point;
+  const auto& first = points.front();
+  const auto distinct =
+      std::find_if(points.begin(), points.end(), [&](const Cgal_point& p) { return p != first; });
+  if (distinct == points.end()) return 0;
+  const auto off_line = std::find_if(points.begin(), points.end(), [&](const Cgal_point& p) {
+    return !CGAL::collinear(first, *distinct, p);
+  });
+  if (off_line == points.end()) return 1;
+  if constexpr (Traits::dimension == 2) {
+    return 2;
+  } else {
+    const auto off_plane = std::find_if(points.begin(), points.end(), [&](const Cgal_point& p) {
+      return !CGAL::coplanar(first, *distinct, *off_line, p);
+    });
+    return off_plane == points.end() ? 2 : 3;
+  }
+}
+
 template <class Traits>
 void check_input(const std::vector<Point<Traits::dimension>>& samples, const Options& options) {
   constexpr int D = Traits::dimension;
@@ -60,7 +83,7 @@ void check_input(const std::vector<Point<Traits::dimension>>& samples, const Opt
   std::vector<typename Traits::Cgal_point> points;
   points.reserve(samples.size());
   for (const auto& p : samples) points.push_back(Traits::to_cgal(p));
-  if (Traits::affine_dimension(points) < D) {
+  if (affine_dimension<Traits>(points) < D) {
     throw Input_error(D == 2 ? "all points are collinear: there is no curve to reconstruct"
                              : "all points are coplanar: there is no surface to reconstruct "
                                "(a planar curve needs --dim 2)");

@@ -38,8 +38,6 @@ struct Traits_2 {
   // region it bounds, with its normals (the edge direction turned clockwise) pointing outward.
   static constexpr int facet_vertex[3][2] = {{1, 2}, {2, 0}, {0, 1}};
 
-  // 0 for a point, 1 for collinear, 2 otherwise (exact predicates).
-  static int affine_dimension(const std::vector<Cgal_point>& points);
 };
 
 }  // namespace sculpt

@@ -38,8 +38,6 @@ struct Traits_3 {
   // permutation of (0, 1, 2, 3) for each row.
   static constexpr int facet_vertex[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
-  // 0 for a point, 1 for collinear, 2 for coplanar, 3 otherwise (exact predicates).
-  static int affine_dimension(const std::vector<Cgal_point>& points);
 };
 
 }  // namespace sculpt
