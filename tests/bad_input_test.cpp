@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <limits>
-
 #include <sculpt/sculpt.hpp>
 
 namespace sculpt {
@@ -58,8 +57,9 @@ TEST(Bad_input, Options) {
 
 TEST(Bad_input, SmallestValidInputsWork) {
   EXPECT_EQ(reconstruct(std::vector<Point<2>>{{0, 0}, {1, 0}, {0, 1}}).stats.facets, 3u);
-  EXPECT_EQ(reconstruct(std::vector<Point<3>>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}).stats.facets,
-            4u);
+  EXPECT_EQ(
+      reconstruct(std::vector<Point<3>>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}).stats.facets,
+      4u);
 }
 
 }  // namespace

@@ -25,8 +25,8 @@ Reconstruction<3> reconstruct_mesh(const std::string& name) {
   ::testing::Test::RecordProperty("unused_samples", std::to_string(s.unused_samples));
   std::cout << name << ": n " << s.samples << ", conflicts " << s.conflicts << ", unlabelled "
             << s.unlabelled_poles << ", triangles " << s.facets << ", boundary edges "
-            << s.boundary_ridges << ", non-manifold edges " << s.non_manifold_ridges
-            << ", unused " << s.unused_samples << ", components " << s.components << "\n";
+            << s.boundary_ridges << ", non-manifold edges " << s.non_manifold_ridges << ", unused "
+            << s.unused_samples << ", components " << s.components << "\n";
   return result;
 }
 

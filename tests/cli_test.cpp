@@ -36,8 +36,8 @@ Command_result run_sculpt(const std::string& arguments) {
 TEST(Cli, ReconstructsAnExampleWithSolidAndStatistics) {
   const auto surface = output_path("torus.stl"), solid = output_path("torus.vtu"),
              stats = output_path("torus.json");
-  const Command_result run = run_sculpt("reconstruct --example torus -o " + surface + " --solid " + solid +
-                             " --stats " + stats);
+  const Command_result run = run_sculpt("reconstruct --example torus -o " + surface + " --solid " +
+                                        solid + " --stats " + stats);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("conflicts"), std::string::npos);
   EXPECT_NE(run.out.find("propagation"), std::string::npos);
@@ -58,7 +58,8 @@ TEST(Cli, DimensionFollowsTheInput) {
   }
   const auto input = write_file("planar.pts", points);
   // Three columns, one constant: a surface cannot be made, and the message says --dim 2.
-  const Command_result refused = run_sculpt("reconstruct " + input + " -o " + output_path("planar.stl"));
+  const Command_result refused =
+      run_sculpt("reconstruct " + input + " -o " + output_path("planar.stl"));
   EXPECT_EQ(refused.exit_code, 1);
   EXPECT_NE(refused.err.find("--dim 2"), std::string::npos) << refused.err;
   const auto curve = output_path("planar.svg");
@@ -73,8 +74,9 @@ TEST(Cli, BadInputGivesOneLineAndNoOutput) {
       {"missing.xyz", ""},
       {"malformed.xyz", "1 2 3\n4 x 6\n0 0 1\n1 1 1\n"},
       {"truncated.xyz", "10\n1 2 3\n4 5 6\n"},
-      {"garbage.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 9\n"
-                      "property double x\nend_header\n\x01\x02"},
+      {"garbage.ply",
+       "ply\nformat binary_little_endian 1.0\nelement vertex 9\n"
+       "property double x\nend_header\n\x01\x02"},
       {"nan.xyz", "0 0 0\n1 0 0\n0 1 0\nnan 0 1\n"},
       {"few.xyz", "0 0 0\n1 0 0\n0 1 0\n"},
       {"coplanar.xyz", "0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 3 0\n"},
@@ -82,8 +84,7 @@ TEST(Cli, BadInputGivesOneLineAndNoOutput) {
       {"duplicates.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0\n"},
   };
   for (const auto& [name, content] : bad) {
-    const std::string input =
-        content.empty() ? output_path(name) : write_file(name, content);
+    const std::string input = content.empty() ? output_path(name) : write_file(name, content);
     const auto output = output_path(name + ".out.stl");
     const Command_result run = run_sculpt("reconstruct " + input + " -o " + output);
     EXPECT_EQ(run.exit_code, 1) << name;
@@ -94,7 +95,8 @@ TEST(Cli, BadInputGivesOneLineAndNoOutput) {
 }
 
 TEST(Cli, UnknownOutputFormatFailsBeforeWork) {
-  const Command_result run = run_sculpt("reconstruct --example sphere -o " + output_path("sphere.xyz"));
+  const Command_result run =
+      run_sculpt("reconstruct --example sphere -o " + output_path("sphere.xyz"));
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.err.find("known: .stl"), std::string::npos) << run.err;
 }

@@ -19,11 +19,17 @@ void expect_exact_polygon(const shapes::Sampled_curve& truth, const Options& opt
   EXPECT_EQ(result.stats.boundary_ridges, 0u);
 }
 
-TEST(Curves_2d, CircleWithCocircularSamples) { expect_exact_polygon(shapes::circle(64)); }
+TEST(Curves_2d, CircleWithCocircularSamples) {
+  expect_exact_polygon(shapes::circle(64));
+}
 
-TEST(Curves_2d, FiveArmedStar) { expect_exact_polygon(shapes::star(200)); }
+TEST(Curves_2d, FiveArmedStar) {
+  expect_exact_polygon(shapes::star(200));
+}
 
-TEST(Curves_2d, Blob) { expect_exact_polygon(shapes::blob(150)); }
+TEST(Curves_2d, Blob) {
+  expect_exact_polygon(shapes::blob(150));
+}
 
 TEST(Curves_2d, TwoNestedCurvesBoundAnAnnulus) {
   const auto truth = shapes::nested_circles(120, 60);

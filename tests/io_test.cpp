@@ -79,8 +79,9 @@ TEST(Point_reader, RefusesBadFilesWithOneLine) {
       {"points.unknown", "1 2 3\n"},
       {"truncated.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n"},
       {"bad-face.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"},
-      {"truncated.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-                        "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n"},
+      {"truncated.ply",
+       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+       "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n"},
   };
   for (const auto& [name, content] : bad) {
     try {
@@ -138,9 +139,9 @@ TEST(Curve_writer, ObjPolylinesAndSvg) {
                           std::sregex_iterator()),
             2);
   const std::regex vertex("(^|\n)v ");
-  EXPECT_EQ(std::distance(std::sregex_iterator(text.begin(), text.end(), vertex),
-                          std::sregex_iterator()),
-            60);
+  EXPECT_EQ(
+      std::distance(std::sregex_iterator(text.begin(), text.end(), vertex), std::sregex_iterator()),
+      60);
   const auto svg = output_path("curve.svg");
   io::write_curve(svg, truth.samples, result.surface);
   const std::string picture = read_file(svg);
@@ -185,8 +186,7 @@ TEST(Writers, AFailedWriteLeavesNoFile) {
   const auto result = reconstruct(points);
   EXPECT_THROW(io::write_surface("/nonexistent-folder/out.stl", points, result.surface, false),
                io::Error);
-  EXPECT_THROW(io::write_surface(output_path("out.xyz"), points, result.surface, false),
-               io::Error);
+  EXPECT_THROW(io::write_surface(output_path("out.xyz"), points, result.surface, false), io::Error);
   EXPECT_FALSE(std::filesystem::exists(SCULPT_TEST_OUTPUT "/out.xyz"));
   for (const auto& entry : std::filesystem::directory_iterator(SCULPT_TEST_OUTPUT)) {
     EXPECT_EQ(entry.path().string().find(".partial-"), std::string::npos) << entry.path();

@@ -30,7 +30,8 @@ void check_stages(const Reconstruction<D>& r) {
   // 1. The box: 2^D corners, box_factor times the samples' extent, around the same centre.
   Point<D> lo = r.sites[0], hi = r.sites[0];
   for (int s = 0; s < n; ++s) {
-    for (int k = 0; k < D; ++k) lo[k] = std::min(lo[k], r.sites[s][k]), hi[k] = std::max(hi[k], r.sites[s][k]);
+    for (int k = 0; k < D; ++k)
+      lo[k] = std::min(lo[k], r.sites[s][k]), hi[k] = std::max(hi[k], r.sites[s][k]);
   }
   for (int c = n; c < n + (1 << D); ++c) {
     EXPECT_EQ(r.kind_of_site(c), Site_kind::box_corner);
@@ -122,9 +123,13 @@ void check_stages(const Reconstruction<D>& r) {
                                              "insertion", "solid", "surface", "topology"}));
 }
 
-TEST(Stages, Curve2d) { check_stages(reconstruct(shapes::star(150).samples)); }
+TEST(Stages, Curve2d) {
+  check_stages(reconstruct(shapes::star(150).samples));
+}
 
-TEST(Stages, Surface3d) { check_stages(reconstruct(shapes::torus(2000))); }
+TEST(Stages, Surface3d) {
+  check_stages(reconstruct(shapes::torus(2000)));
+}
 
 TEST(Stages, BorderedSurface3d) {
   Options options;
@@ -135,7 +140,8 @@ TEST(Stages, BorderedSurface3d) {
   // The default seed is p+ of the lowest-index sample whose p+ is convex.
   int first = -1;
   for (int s = 0; first < 0; ++s) {
-    if (result.poles.poles[result.poles.positive_pole[s]].convex) first = result.poles.positive_pole[s];
+    if (result.poles.poles[result.poles.positive_pole[s]].convex)
+      first = result.poles.positive_pole[s];
   }
   EXPECT_EQ(result.seeds.outer_seeds[0], first);
 }

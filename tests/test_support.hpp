@@ -5,11 +5,10 @@
 
 #include <algorithm>
 #include <map>
+#include <sculpt/sculpt.hpp>
 #include <set>
 #include <utility>
 #include <vector>
-
-#include <sculpt/sculpt.hpp>
 
 namespace sculpt::testing {
 
@@ -35,9 +34,8 @@ inline ::testing::AssertionResult consistently_oriented_closed(
   }
   for (const auto& [edge, times] : count) {
     if (times != 1) {
-      return ::testing::AssertionFailure()
-             << "directed edge " << edge.first << "-" << edge.second << " appears " << times
-             << " times";
+      return ::testing::AssertionFailure() << "directed edge " << edge.first << "-" << edge.second
+                                           << " appears " << times << " times";
     }
     if (!count.count({edge.second, edge.first})) {
       return ::testing::AssertionFailure()

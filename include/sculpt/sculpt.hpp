@@ -8,7 +8,8 @@
 //
 // Every stage of the algorithm is kept in the returned Reconstruction as plain data:
 //   1. delaunay           DT(S ∪ BBV): the samples plus the corners of an enlarged bounding box
-//   2. poles              Amenta's poles (p+ farthest Voronoi vertex, p- farthest on the other side)
+//   2. poles              Amenta's poles (p+ farthest Voronoi vertex, p- farthest on the other
+//   side)
 //   3. seeds              convex poles (cells incident to a box corner) and the seed labels
 //   4. propagation        the ordered labelling events of the pole separation
 //   5. insertion          the poles inserted: OUP (closed) or UP (bordered)
@@ -105,8 +106,8 @@ enum class Label_reason : std::uint8_t {
 // Stage 1 and 6: a Delaunay triangulation, its finite cells as indices into the sites.
 template <int D>
 struct Delaunay_stage {
-  std::size_t cell_count = 0;       // finite cells, also when the cells themselves are not kept
-  std::vector<Cell<D>> cells;       // empty unless Options::keep_triangulations
+  std::size_t cell_count = 0;  // finite cells, also when the cells themselves are not kept
+  std::vector<Cell<D>> cells;  // empty unless Options::keep_triangulations
 };
 
 // A pole is a Delaunay cell of stage 1: its circumcentre and circumradius (the polar ball).
@@ -123,8 +124,8 @@ struct Pole {
 template <int D>
 struct Poles_stage {
   std::vector<Pole<D>> poles;
-  std::vector<int> positive_pole;  // per sample: p+, the farthest vertex of its Voronoi cell
-  std::vector<int> negative_pole;  // per sample: p-, farthest on the other side; -1 if none
+  std::vector<int> positive_pole;    // per sample: p+, the farthest vertex of its Voronoi cell
+  std::vector<int> negative_pole;    // per sample: p-, farthest on the other side; -1 if none
   std::vector<int> partner_offsets;  // partners of pole p: partners[offsets[p] .. offsets[p+1])
   std::vector<int> partners;
 
@@ -177,27 +178,27 @@ struct Stage_measure {
 
 struct Statistics {
   int dimension = 0;
-  std::size_t samples = 0;             // n
-  std::size_t poles = 0;               // distinct poles
+  std::size_t samples = 0;  // n
+  std::size_t poles = 0;    // distinct poles
   std::size_t convex_poles = 0;
   std::size_t inner_poles = 0;
   std::size_t outer_poles = 0;
   std::size_t unlabelled_poles = 0;
-  std::size_t conflicts = 0;           // poles offered both labels
-  std::size_t conflict_offers = 0;     // offers of the other label (several per pole)
-  std::size_t inserted_poles = 0;      // m (closed) or l (bordered), without the box corners
-  std::size_t delaunay_cells = 0;      // cells of DT(S ∪ BBV)
-  std::size_t sculpted_cells = 0;      // cells of DT(S ∪ OUP)
+  std::size_t conflicts = 0;        // poles offered both labels
+  std::size_t conflict_offers = 0;  // offers of the other label (several per pole)
+  std::size_t inserted_poles = 0;   // m (closed) or l (bordered), without the box corners
+  std::size_t delaunay_cells = 0;   // cells of DT(S ∪ BBV)
+  std::size_t sculpted_cells = 0;   // cells of DT(S ∪ OUP)
   std::size_t solid_cells = 0;
-  std::size_t facets = 0;              // triangles (3D) or edges (2D) of the result
+  std::size_t facets = 0;  // triangles (3D) or edges (2D) of the result
   // Of the result's ridges (edges of the surface in 3D, vertices of the curve in 2D):
-  std::size_t boundary_ridges = 0;     // on one facet only: border edges, or curve end points
-  std::size_t non_manifold_ridges = 0; // on more than two facets
+  std::size_t boundary_ridges = 0;        // on one facet only: border edges, or curve end points
+  std::size_t non_manifold_ridges = 0;    // on more than two facets
   std::size_t non_manifold_vertices = 0;  // 3D: vertices whose triangles do not form one fan
-  std::size_t boundary_loops = 0;      // 3D: closed loops of border edges; 2D: open curves
-  std::size_t components = 0;          // connected pieces of the result
-  long euler_characteristic = 0;       // V - E + F (3D) or V - E (2D) of the result
-  std::size_t unused_samples = 0;      // samples on no facet of the result
+  std::size_t boundary_loops = 0;         // 3D: closed loops of border edges; 2D: open curves
+  std::size_t components = 0;             // connected pieces of the result
+  long euler_characteristic = 0;          // V - E + F (3D) or V - E (2D) of the result
+  std::size_t unused_samples = 0;         // samples on no facet of the result
   std::vector<Stage_measure> stages;
   double total_seconds = 0;
 };
@@ -221,7 +222,9 @@ struct Reconstruction {
   std::vector<Facet<D>> surface;        // 8: oriented facets; closed: normals point outward
   Statistics stats;
 
-  std::size_t sample_count() const { return sites.size() - box_corner_count - insertion.inserted_poles.size(); }
+  std::size_t sample_count() const {
+    return sites.size() - box_corner_count - insertion.inserted_poles.size();
+  }
   Site_kind kind_of_site(int site) const {
     const auto n = static_cast<int>(sample_count());
     if (site < n) return Site_kind::sample;

@@ -1,10 +1,10 @@
 #include "bench.hpp"
 
+#include <fmt/format.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <fmt/format.h>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -78,8 +78,8 @@ nlohmann::json measure(const std::string& name, const std::vector<Point<D>>& poi
 
 void print_rows(const std::vector<nlohmann::json>& rows) {
   std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>8}{:>9}{:>9}{:>8}{:>9}{:>9}{:>8}{:>8}\n",
-                           "time (s)", "n", "CGAL DT", "ours:DT", "poles", "separate",
-                           "insert", "solid+", "total", "/ DT", "m/n");
+                           "time (s)", "n", "CGAL DT", "ours:DT", "poles", "separate", "insert",
+                           "solid+", "total", "/ DT", "m/n");
   for (const auto& row : rows) {
     const auto& s = row["sculpt"];
     if (s.contains("error") || row["delaunay_only"].contains("error")) {
@@ -95,8 +95,8 @@ void print_rows(const std::vector<nlohmann::json>& rows) {
         "{:<22}{:>9}{:>9.3f}{:>8.3f}{:>9.3f}{:>9.3f}{:>8.3f}{:>9.3f}{:>9.3f}{:>8.2f}{:>8.3f}\n",
         row["input"].get<std::string>(), s["samples"].get<std::size_t>(), dt, stage["delaunay"],
         stage["poles"], stage["seeds"] + stage["propagation"], stage["insertion"],
-        stage["solid"] + stage["surface"] + stage["topology"] + stage["checks"], total,
-        total / dt, double(s["inserted_poles"]) / double(s["samples"]));
+        stage["solid"] + stage["surface"] + stage["topology"] + stage["checks"], total, total / dt,
+        double(s["inserted_poles"]) / double(s["samples"]));
   }
   std::cout << fmt::format("\n{:<22}{:>11}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}\n",
                            "peak memory (MiB)", "CGAL DT", "delaunay", "poles", "separate",
@@ -108,24 +108,24 @@ void print_rows(const std::vector<nlohmann::json>& rows) {
     for (const auto& st : s["stages"]) peak[st["name"]] = st["peak_memory_mib"];
     const double dt = row["delaunay_only"]["process_peak_mib"];
     const double ours = s["process_peak_mib"];
-    std::cout << fmt::format("{:<22}{:>11.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.2f}\n",
-                             row["input"].get<std::string>(), dt, peak["delaunay"], peak["poles"],
-                             peak["propagation"], peak["insertion"], peak["topology"], ours,
-                             ours / dt);
+    std::cout << fmt::format(
+        "{:<22}{:>11.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.2f}\n",
+        row["input"].get<std::string>(), dt, peak["delaunay"], peak["poles"], peak["propagation"],
+        peak["insertion"], peak["topology"], ours, ours / dt);
   }
-  std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>11}{:>10}{:>10}{:>10}{:>9}{:>8}{:>8}\n",
-                           "result", "poles", "m (or l)", "conflicts", "unlabel.", "triangles",
-                           "boundary", "non-man.", "unused", "pieces");
+  std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>11}{:>10}{:>10}{:>10}{:>9}{:>8}{:>8}\n", "result",
+                           "poles", "m (or l)", "conflicts", "unlabel.", "triangles", "boundary",
+                           "non-man.", "unused", "pieces");
   for (const auto& row : rows) {
     const auto& s = row["sculpt"];
     if (s.contains("error")) continue;
-    std::cout << fmt::format("{:<22}{:>9}{:>9}{:>11}{:>10}{:>10}{:>10}{:>9}{:>8}{:>8}\n",
-                             row["input"].get<std::string>(), s["poles"].get<std::size_t>(),
-                             s["inserted_poles"].get<std::size_t>(), s["conflicts"].get<std::size_t>(),
-                             s["unlabelled_poles"].get<std::size_t>(), s["facets"].get<std::size_t>(),
-                             s["boundary_ridges"].get<std::size_t>(),
-                             s["non_manifold_ridges"].get<std::size_t>(),
-                             s["unused_samples"].get<std::size_t>(), s["components"].get<std::size_t>());
+    std::cout << fmt::format(
+        "{:<22}{:>9}{:>9}{:>11}{:>10}{:>10}{:>10}{:>9}{:>8}{:>8}\n",
+        row["input"].get<std::string>(), s["poles"].get<std::size_t>(),
+        s["inserted_poles"].get<std::size_t>(), s["conflicts"].get<std::size_t>(),
+        s["unlabelled_poles"].get<std::size_t>(), s["facets"].get<std::size_t>(),
+        s["boundary_ridges"].get<std::size_t>(), s["non_manifold_ridges"].get<std::size_t>(),
+        s["unused_samples"].get<std::size_t>(), s["components"].get<std::size_t>());
   }
 }
 
@@ -148,7 +148,8 @@ int run_bench(const Bench_arguments& args) {
   }
   for (const auto& example : args.examples) {
     const auto& list = shapes::examples();
-    const auto found = std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.name == example; });
+    const auto found =
+        std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.name == example; });
     if (found == list.end()) throw io::Error("no built-in example named '" + example + "'");
     if (found->dimension == 2) {
       add(measure<2>(example, shapes::example_points_2(example), found->bordered));

@@ -12,7 +12,7 @@ struct Bench_arguments {
   std::vector<std::string> examples;  // built-in example names
   int torus_points = 0;               // also random points on a torus, if > 0
   bool bordered = false;
-  std::string json;                   // write the rows as JSON too
+  std::string json;  // write the rows as JSON too
 };
 
 int run_bench(const Bench_arguments& args);

@@ -1,10 +1,10 @@
 // The `sculpt` command: reconstruct a curve or surface from a point file, or from a built-in
 // example, and write it with the sculpted solid and the run's statistics.
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <fmt/format.h>
 #include <iostream>
 
 #include "bench.hpp"
@@ -55,8 +55,8 @@ void check_output_formats(const Reconstruct_arguments& args, int dimension) {
   if (!args.solid.empty()) {
     const std::string solid = io::extension_of(args.solid);
     if (solid != ".mesh" && solid != ".vtu" && solid != ".node" && solid != ".ele") {
-      throw io::Error(fmt::format("cannot write a solid as '{}' (known: {})", args.solid,
-                                  io::solid_formats));
+      throw io::Error(
+          fmt::format("cannot write a solid as '{}' (known: {})", args.solid, io::solid_formats));
     }
   }
   if (!args.stats.empty() && io::extension_of(args.stats) != ".json") {
@@ -113,8 +113,7 @@ int run_reconstruct(const Reconstruct_arguments& args) {
     const auto found = std::find_if(list.begin(), list.end(),
                                     [&](const auto& e) { return e.name == args.example; });
     if (found == list.end()) {
-      throw io::Error("no built-in example named '" + args.example +
-                      "' (see `sculpt examples`)");
+      throw io::Error("no built-in example named '" + args.example + "' (see `sculpt examples`)");
     }
     run.input = "example " + found->name;
     check_output_formats(args, found->dimension);
@@ -166,26 +165,29 @@ int main(int argc, char** argv) {
   auto* example = reconstruct->add_option("--example", args.example,
                                           "Use a built-in example instead (see `sculpt examples`)");
   input->excludes(example);
-  reconstruct->add_option("-o,--output", args.output,
-                          "Surface .stl .ply .off .obj (3D) or curve .obj .svg (2D)")
+  reconstruct
+      ->add_option("-o,--output", args.output,
+                   "Surface .stl .ply .off .obj (3D) or curve .obj .svg (2D)")
       ->required();
   reconstruct->add_flag("--bordered", args.bordered,
                         "The samples come from a surface (curve) with a border");
   reconstruct->add_option("--solid", args.solid,
                           "Also write the sculpted solid: .mesh (Medit), .vtu, .node/.ele");
-  reconstruct->add_option("--box-factor", args.box_factor,
-                          "Bounding box BB relative to the samples' box")
+  reconstruct
+      ->add_option("--box-factor", args.box_factor, "Bounding box BB relative to the samples' box")
       ->capture_default_str()
       ->check(CLI::Range(1.0 + 1e-9, 1e6));
-  reconstruct->add_option("--rule", args.rule,
-                          "Surface rule: auto (skin when closed, extraction when bordered), "
-                          "skin or extraction")
+  reconstruct
+      ->add_option("--rule", args.rule,
+                   "Surface rule: auto (skin when closed, extraction when bordered), "
+                   "skin or extraction")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
   reconstruct->add_option("--seed-sample", args.seed_sample,
                           "Bordered: seed with the convex pole of this sample");
-  reconstruct->add_option("--dim", args.dimension,
-                          "Force 2 or 3 dimensions (2 drops a constant coordinate)")
+  reconstruct
+      ->add_option("--dim", args.dimension,
+                   "Force 2 or 3 dimensions (2 drops a constant coordinate)")
       ->check(CLI::IsMember({2, 3}));
   reconstruct->add_flag("--ascii", args.ascii, "Write .stl and .ply as text");
   reconstruct->add_option("--stats", args.stats, "Write the statistics as JSON");

@@ -4,9 +4,8 @@
 
 #include <nlohmann/json.hpp>
 #include <ostream>
-#include <string>
-
 #include <sculpt/sculpt.hpp>
+#include <string>
 
 namespace sculpt::cli {
 

@@ -3,10 +3,9 @@
 // every sample's Voronoi cell bounded, so every sample has two finite poles (section 3).
 #pragma once
 
+#include <sculpt/sculpt.hpp>
 #include <utility>
 #include <vector>
-
-#include <sculpt/sculpt.hpp>
 
 namespace sculpt {
 

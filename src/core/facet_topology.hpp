@@ -3,9 +3,8 @@
 // connected components, Euler characteristic and unused samples.
 #pragma once
 
-#include <vector>
-
 #include <sculpt/sculpt.hpp>
+#include <vector>
 
 namespace sculpt {
 

@@ -3,13 +3,14 @@
 // one-line message that names the offending point.
 #pragma once
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <sculpt/sculpt.hpp>
 #include <sstream>
 #include <vector>
-
-#include <sculpt/sculpt.hpp>
 
 namespace sculpt {
 
@@ -62,8 +63,8 @@ void check_input(const std::vector<Point<Traits::dimension>>& samples, const Opt
   for (std::size_t i = 0; i < samples.size(); ++i) {
     for (double x : samples[i]) {
       if (!std::isfinite(x)) {
-        throw Input_error("point " + std::to_string(i) + " has a coordinate that is not finite: " +
-                          describe_point<D>(samples[i]));
+        throw Input_error("point " + std::to_string(i) +
+                          " has a coordinate that is not finite: " + describe_point<D>(samples[i]));
       }
     }
   }

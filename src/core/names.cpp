@@ -9,27 +9,36 @@ namespace sculpt {
 
 const char* to_string(Label label) {
   switch (label) {
-    case Label::unlabelled: return "unlabelled";
-    case Label::inner: return "inner";
-    case Label::outer: return "outer";
+    case Label::unlabelled:
+      return "unlabelled";
+    case Label::inner:
+      return "inner";
+    case Label::outer:
+      return "outer";
   }
   return "?";
 }
 
 const char* to_string(Label_reason reason) {
   switch (reason) {
-    case Label_reason::convex_seed: return "convex seed";
-    case Label_reason::pairing: return "pairing";
-    case Label_reason::inscribed_cube: return "inscribed cube";
+    case Label_reason::convex_seed:
+      return "convex seed";
+    case Label_reason::pairing:
+      return "pairing";
+    case Label_reason::inscribed_cube:
+      return "inscribed cube";
   }
   return "?";
 }
 
 const char* to_string(Surface_rule rule) {
   switch (rule) {
-    case Surface_rule::automatic: return "automatic";
-    case Surface_rule::skin: return "skin";
-    case Surface_rule::extraction: return "extraction";
+    case Surface_rule::automatic:
+      return "automatic";
+    case Surface_rule::skin:
+      return "skin";
+    case Surface_rule::extraction:
+      return "extraction";
   }
   return "?";
 }
@@ -43,6 +52,8 @@ const char* to_string(Surface_kind kind) {
   return kind == Surface_kind::closed ? "closed" : "bordered";
 }
 
-const char* version() { return SCULPT_VERSION; }
+const char* version() {
+  return SCULPT_VERSION;
+}
 
 }  // namespace sculpt

@@ -34,8 +34,7 @@ void insert_poles(typename Traits::Triangulation& triangulation,
     result.sites.push_back(center);
   }
   triangulation.insert(sites.begin(), sites.end());  // spatially sorted, located with hints
-  number_cells<Traits>(triangulation, result.options.keep_triangulations,
-                       result.sculpted_delaunay);
+  number_cells<Traits>(triangulation, result.options.keep_triangulations, result.sculpted_delaunay);
 }
 
 }  // namespace sculpt

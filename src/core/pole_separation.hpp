@@ -22,7 +22,9 @@
 
 namespace sculpt {
 
-inline Label opposite(Label label) { return label == Label::inner ? Label::outer : Label::inner; }
+inline Label opposite(Label label) {
+  return label == Label::inner ? Label::outer : Label::inner;
+}
 
 template <int D>
 int choose_bordered_seed(const Reconstruction<D>& result) {
@@ -109,9 +111,9 @@ class Pole_separation {
   void offer_to_cube(int pole) {
     const Label label = stage_.labels[pole];
     const double half_side = poles_.poles[pole].radius / std::sqrt(double(D));
-    tree_.for_each_other_label_in_cube(
-        poles_.poles[pole].center, half_side, label,
-        [&](int other) { offer(other, label, pole, Label_reason::inscribed_cube); });
+    tree_.for_each_other_label_in_cube(poles_.poles[pole].center, half_side, label, [&](int other) {
+      offer(other, label, pole, Label_reason::inscribed_cube);
+    });
   }
 
   void offer_to_partners(int pole) {

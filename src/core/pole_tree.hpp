@@ -13,9 +13,8 @@
 #include <array>
 #include <cstdint>
 #include <numeric>
-#include <vector>
-
 #include <sculpt/sculpt.hpp>
+#include <vector>
 
 namespace sculpt {
 

@@ -9,13 +9,12 @@
 // pairing (the two poles of each sample) is stored as a graph.
 #pragma once
 
-#include <algorithm>
-#include <vector>
-
 #include <CGAL/squared_distance_2.h>
 #include <CGAL/squared_distance_3.h>
 
+#include <algorithm>
 #include <sculpt/sculpt.hpp>
+#include <vector>
 
 namespace sculpt {
 

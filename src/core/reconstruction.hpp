@@ -30,7 +30,8 @@ void count_labels(Reconstruction<D>& result) {
   stats.unlabelled_poles = result.propagation.unlabelled;
   std::vector<bool> conflicted(result.poles.poles.size(), false);
   for (const auto& offer : result.propagation.conflicts) conflicted[offer.pole] = true;
-  stats.conflicts = static_cast<std::size_t>(std::count(conflicted.begin(), conflicted.end(), true));
+  stats.conflicts =
+      static_cast<std::size_t>(std::count(conflicted.begin(), conflicted.end(), true));
   stats.conflict_offers = result.propagation.conflicts.size();
 }
 

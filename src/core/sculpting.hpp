@@ -10,9 +10,8 @@
 // Facets are oriented to face their outer apex: outward, for a closed surface.
 #pragma once
 
-#include <vector>
-
 #include <sculpt/sculpt.hpp>
+#include <vector>
 
 namespace sculpt {
 

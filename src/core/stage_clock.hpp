@@ -5,7 +5,6 @@
 #include <sys/resource.h>
 
 #include <chrono>
-
 #include <sculpt/sculpt.hpp>
 
 namespace sculpt {

@@ -37,7 +37,6 @@ struct Traits_2 {
   // CGAL's faces are counterclockwise, so a closed curve comes out counterclockwise around the
   // region it bounds, with its normals (the edge direction turned clockwise) pointing outward.
   static constexpr int facet_vertex[3][2] = {{1, 2}, {2, 0}, {0, 1}};
-
 };
 
 }  // namespace sculpt

@@ -1,7 +1,6 @@
 // The one place the 3D algorithm is compiled: everything else links against it.
-#include "traits_3.hpp"
-// The traits come first: the generic core uses the CGAL headers they include.
 #include "../core/reconstruction.hpp"
+#include "traits_3.hpp"
 
 namespace sculpt {
 

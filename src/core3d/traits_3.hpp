@@ -20,8 +20,9 @@ struct Traits_3 {
   using Search_traits = CGAL::Search_traits_3<Kernel>;
 
   using Vertex_base = CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>;
-  using Cell_base = CGAL::Triangulation_cell_base_with_info_3<
-      int, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
+  using Cell_base =
+      CGAL::Triangulation_cell_base_with_info_3<int, Kernel,
+                                                CGAL::Delaunay_triangulation_cell_base_3<Kernel>>;
   using Tds = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
   using Triangulation = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
   using Cell_handle = Triangulation::Cell_handle;
@@ -37,7 +38,6 @@ struct Traits_3 {
   // from vertex i. CGAL's finite cells are positively oriented, and (a, b, c, i) is an odd
   // permutation of (0, 1, 2, 3) for each row.
   static constexpr int facet_vertex[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-
 };
 
 }  // namespace sculpt

@@ -72,7 +72,8 @@ void write_svg(std::ostream& out, const std::vector<Point<2>>& samples,
   const auto y = [&](const Point<2>& p) { return lo[1] + hi[1] - p[1]; };
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << lo[0] - margin << ' '
       << lo[1] - margin << ' ' << hi[0] - lo[0] + 2 * margin << ' ' << hi[1] - lo[1] + 2 * margin
-      << "\" width=\"800\" height=\"" << int(800 * (hi[1] - lo[1] + 2 * margin) / (hi[0] - lo[0] + 2 * margin))
+      << "\" width=\"800\" height=\""
+      << int(800 * (hi[1] - lo[1] + 2 * margin) / (hi[0] - lo[0] + 2 * margin))
       << "\">\n<g fill=\"none\" stroke=\"black\" stroke-width=\"" << stroke
       << "\" stroke-linejoin=\"round\">\n";
   for (const auto& line : lines) {

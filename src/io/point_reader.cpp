@@ -110,8 +110,7 @@ Point_set read_text(const std::string& path, const std::string& content, int for
 }
 
 template <class Read>
-Point_set read_mesh(const std::string& path, const std::string& format, bool binary,
-                    Read&& read) {
+Point_set read_mesh(const std::string& path, const std::string& format, bool binary, Read&& read) {
   std::ifstream in(path, binary ? std::ios::binary : std::ios::in);
   if (!in) throw Error("cannot open '" + path + "': " + std::strerror(errno));
   std::vector<Kernel::Point_3> points;
@@ -132,7 +131,8 @@ Point_set read_mesh(const std::string& path, const std::string& format, bool bin
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point<3> p{points[i].x(), points[i].y(), points[i].z()};
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
-      throw Error("'" + path + "': vertex " + std::to_string(i) + " has a coordinate that is not finite");
+      throw Error("'" + path + "': vertex " + std::to_string(i) +
+                  " has a coordinate that is not finite");
     }
     set.points.push_back(p);
   }
@@ -155,21 +155,17 @@ Point_set read_points(const std::string& path) {
   const std::string extension = extension_of(path);
   Point_set set;
   if (extension == ".off") {
-    set = read_mesh(path, "OFF", false, [](auto& in, auto& p, auto& f) {
-      return CGAL::IO::read_OFF(in, p, f);
-    });
+    set = read_mesh(path, "OFF", false,
+                    [](auto& in, auto& p, auto& f) { return CGAL::IO::read_OFF(in, p, f); });
   } else if (extension == ".obj") {
-    set = read_mesh(path, "OBJ", false, [](auto& in, auto& p, auto& f) {
-      return CGAL::IO::read_OBJ(in, p, f);
-    });
+    set = read_mesh(path, "OBJ", false,
+                    [](auto& in, auto& p, auto& f) { return CGAL::IO::read_OBJ(in, p, f); });
   } else if (extension == ".ply") {
-    set = read_mesh(path, "PLY", true, [](auto& in, auto& p, auto& f) {
-      return CGAL::IO::read_PLY(in, p, f);
-    });
+    set = read_mesh(path, "PLY", true,
+                    [](auto& in, auto& p, auto& f) { return CGAL::IO::read_PLY(in, p, f); });
   } else if (extension == ".stl") {
-    set = read_mesh(path, "STL", true, [](auto& in, auto& p, auto& f) {
-      return CGAL::IO::read_STL(in, p, f);
-    });
+    set = read_mesh(path, "STL", true,
+                    [](auto& in, auto& p, auto& f) { return CGAL::IO::read_STL(in, p, f); });
   } else if (extension == ".xy" || extension == ".p2d") {
     set = read_text(path, read_whole_file(path), 2);
   } else if (extension == ".xyz") {
@@ -195,8 +191,9 @@ std::vector<Point<2>> planar_points(const Point_set& set, std::string* dropped) 
       if (same) constant.push_back(k);
     }
     if (constant.empty()) {
-      throw Error("the points are not in a coordinate plane: no coordinate is the same for all "
-                  "of them, so they cannot be read as 2D");
+      throw Error(
+          "the points are not in a coordinate plane: no coordinate is the same for all "
+          "of them, so they cannot be read as 2D");
     }
     drop = constant.back();
   }

@@ -4,10 +4,9 @@
 //   meshes: .ply (ascii or binary) .off .obj .stl (ascii or binary), through CGAL's readers
 #pragma once
 
+#include <sculpt/sculpt.hpp>
 #include <string>
 #include <vector>
-
-#include <sculpt/sculpt.hpp>
 
 #include "io_error.hpp"
 

@@ -36,7 +36,8 @@ void write_vtu(std::ostream& out, const std::vector<Point<D>>& samples,
          "<UnstructuredGrid>\n<Piece NumberOfPoints=\""
       << samples.size() << "\" NumberOfCells=\"" << cells.size() << "\">\n"
       << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-  for (const auto& p : samples) out << p[0] << ' ' << p[1] << ' ' << (D == 3 ? p[D - 1] : 0.0) << '\n';
+  for (const auto& p : samples)
+    out << p[0] << ' ' << p[1] << ' ' << (D == 3 ? p[D - 1] : 0.0) << '\n';
   out << "</DataArray>\n</Points>\n<Cells>\n"
          "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (const auto& cell : cells) {

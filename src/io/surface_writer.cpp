@@ -26,7 +26,8 @@ void write_surface(const std::string& path, const std::vector<Point<3>>& samples
   for (const auto& p : samples) points.emplace_back(p[0], p[1], p[2]);
   std::vector<std::array<std::size_t, 3>> faces;
   faces.reserve(triangles.size());
-  for (const auto& t : triangles) faces.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
+  for (const auto& t : triangles)
+    faces.push_back({std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])});
 
   Atomic_file file(path, binary);
   auto& out = file.stream();

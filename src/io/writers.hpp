@@ -6,10 +6,9 @@
 // Vertices are all the samples, in input order, so vertex i of the output is sample i.
 #pragma once
 
+#include <sculpt/sculpt.hpp>
 #include <string>
 #include <vector>
-
-#include <sculpt/sculpt.hpp>
 
 #include "io_error.hpp"
 

@@ -86,7 +86,9 @@ Sampled_curve nested_circles(int outer_samples, int inner_samples) {
 Sampled_curve nonuniform_ellipse(int samples, double ratio) {
   // Density runs smoothly from 1 to `ratio` and back along the curve.
   return sample_closed_curve(
-      [](double t) { return Point<2>{1.5 * std::cos(2 * pi * t), std::sin(2 * pi * t)}; },
+      [](double t) {
+        return Point<2>{1.5 * std::cos(2 * pi * t), std::sin(2 * pi * t)};
+      },
       samples, [=](double t) { return 1.0 + (ratio - 1.0) * 0.5 * (1 - std::cos(2 * pi * t)); });
 }
 

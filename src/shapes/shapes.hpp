@@ -3,10 +3,9 @@
 #pragma once
 
 #include <functional>
+#include <sculpt/sculpt.hpp>
 #include <string>
 #include <vector>
-
-#include <sculpt/sculpt.hpp>
 
 namespace sculpt::shapes {
 
@@ -31,9 +30,8 @@ Sampled_curve open_arc(int samples);  // a three-quarter circle: two end points
 
 // Surfaces: samples only.
 std::vector<Point<3>> sphere(int samples);
-std::vector<Point<3>> torus(int samples, double major = 1.0, double minor = 0.4,
-                            unsigned seed = 1);
-std::vector<Point<3>> bumpy_sphere(int samples);  // a sphere with six dents and bumps
+std::vector<Point<3>> torus(int samples, double major = 1.0, double minor = 0.4, unsigned seed = 1);
+std::vector<Point<3>> bumpy_sphere(int samples);     // a sphere with six dents and bumps
 std::vector<Point<3>> saddle(int samples_per_side);  // z = x^2 - y^2 over [-1, 1]^2, jittered
 
 // Built-in examples by name, for `sculpt reconstruct --example NAME` and the viewer.
