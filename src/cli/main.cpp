@@ -11,6 +11,8 @@
 #include "io/atomic_file.hpp"
 #include "io/point_reader.hpp"
 #include "io/writers.hpp"
+#include "input.hpp"
+#include "render_command.hpp"
 #include "report.hpp"
 #include "shapes/shapes.hpp"
 
@@ -103,41 +105,20 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 }
 
 int run_reconstruct(const Reconstruct_arguments& args) {
+  const Input input = load_input(args.input, args.example, args.dimension);
+  check_output_formats(args, input.dimension());
   Run_description run;
-  run.rule = args.rule;
+  run.input = input.description;
   run.kind = args.bordered ? "bordered" : "closed";
   run.box_factor = args.box_factor;
-
-  if (!args.example.empty()) {
-    const auto& list = shapes::examples();
-    const auto found = std::find_if(list.begin(), list.end(),
-                                    [&](const auto& e) { return e.name == args.example; });
-    if (found == list.end()) {
-      throw io::Error("no built-in example named '" + args.example + "' (see `sculpt examples`)");
-    }
-    run.input = "example " + found->name;
-    check_output_formats(args, found->dimension);
-    if (found->dimension == 2) {
-      return reconstruct_and_write<2>(shapes::example_points_2(found->name), args, run);
-    }
-    return reconstruct_and_write<3>(shapes::example_points_3(found->name), args, run);
-  }
-
-  run.input = args.input;
-  const auto start = std::chrono::steady_clock::now();
-  const io::Point_set set = io::read_points(args.input);
-  const int dimension = args.dimension ? args.dimension : set.dimension;
-  check_output_formats(args, dimension);
-  if (dimension == 2) {
-    std::string dropped;
-    const auto samples = io::planar_points(set, &dropped);
-    if (!dropped.empty()) run.input += " (without its constant " + dropped + ")";
-    run.read_seconds = seconds_since(start);
-    return reconstruct_and_write<2>(samples, args, run);
-  }
-  const auto samples = io::spatial_points(set);
-  run.read_seconds = seconds_since(start);
-  return reconstruct_and_write<3>(samples, args, run);
+  run.read_seconds = input.read_seconds;
+  return std::visit(
+      [&](const auto& points) {
+        constexpr int dimension =
+            std::tuple_size_v<typename std::decay_t<decltype(points)>::value_type>;
+        return reconstruct_and_write<dimension>(points, args, run);
+      },
+      input.points);
 }
 
 int run_examples() {
@@ -195,6 +176,10 @@ int main(int argc, char** argv) {
 
   auto* examples = app.add_subcommand("examples", "List the built-in examples");
 
+  Render_arguments render_args;
+  add_render_command(app, render_args);
+  auto* render = app.get_subcommand("render");
+
   Bench_arguments bench_args;
   auto* bench = app.add_subcommand(
       "bench", "Time every stage and its peak memory next to CGAL's Delaunay of the same points");
@@ -208,6 +193,7 @@ int main(int argc, char** argv) {
   try {
     if (examples->parsed()) return run_examples();
     if (bench->parsed()) return run_bench(bench_args);
+    if (render->parsed()) return run_render(render_args);
     if (args.input.empty() && args.example.empty()) {
       std::cerr << "sculpt: error: give an input file or --example NAME\n";
       return 2;

@@ -1,0 +1,44 @@
+#include "input.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include "io/point_reader.hpp"
+#include "shapes/shapes.hpp"
+
+namespace sculpt::cli {
+
+Input load_input(const std::string& path, const std::string& example, int forced_dimension) {
+  Input input;
+  if (!example.empty()) {
+    const auto& list = shapes::examples();
+    const auto found = std::find_if(list.begin(), list.end(),
+                                    [&](const auto& e) { return e.name == example; });
+    if (found == list.end()) {
+      throw io::Error("no built-in example named '" + example + "' (see `sculpt examples`)");
+    }
+    input.description = "example " + found->name;
+    if (found->dimension == 2) {
+      input.points = shapes::example_points_2(found->name);
+    } else {
+      input.points = shapes::example_points_3(found->name);
+    }
+    return input;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const io::Point_set set = io::read_points(path);
+  input.description = path;
+  const int dimension = forced_dimension ? forced_dimension : set.dimension;
+  if (dimension == 2) {
+    std::string dropped;
+    input.points = io::planar_points(set, &dropped);
+    if (!dropped.empty()) input.description += " (without its constant " + dropped + ")";
+  } else {
+    input.points = io::spatial_points(set);
+  }
+  input.read_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return input;
+}
+
+}  // namespace sculpt::cli

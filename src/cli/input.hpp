@@ -1,0 +1,24 @@
+// Where the samples of a command come from: a point file or a built-in example, in the
+// dimension the file gives or the user forces.
+#pragma once
+
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt::cli {
+
+struct Input {
+  std::string description;  // the file name or "example NAME", and what was done to it
+  std::variant<std::vector<Point<2>>, std::vector<Point<3>>> points;
+  double read_seconds = 0;
+
+  int dimension() const { return points.index() == 0 ? 2 : 3; }
+};
+
+// Throws io::Error with a one-line message.
+Input load_input(const std::string& path, const std::string& example, int forced_dimension);
+
+}  // namespace sculpt::cli

@@ -1,0 +1,110 @@
+#include "camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+#include <stdexcept>
+
+namespace sculpt::render {
+
+glm::vec3 Camera::eye() const {
+  const glm::vec3 direction(std::cos(pitch) * std::sin(yaw), std::sin(pitch),
+                            std::cos(pitch) * std::cos(yaw));
+  return target + distance * direction;
+}
+
+glm::mat4 Camera::view() const {
+  if (dimension == 2) {
+    return glm::translate(glm::mat4(1.0f), glm::vec3(-center, 0.0f));
+  }
+  return glm::lookAt(eye(), target, glm::vec3(0, 1, 0));
+}
+
+glm::mat4 Camera::projection(float aspect) const {
+  if (dimension == 2) {
+    const float w = half_height * aspect;
+    return glm::ortho(-w, w, -half_height, half_height, -1.0f, 1.0f);
+  }
+  return glm::perspective(glm::radians(fov_degrees), aspect, distance * 0.01f, distance * 100.0f);
+}
+
+void Camera::orbit(float yaw_delta, float pitch_delta) {
+  yaw += yaw_delta;
+  pitch = std::clamp(pitch + pitch_delta, -1.55f, 1.55f);
+}
+
+void Camera::pan(float right, float up) {
+  if (dimension == 2) {
+    center += glm::vec2(right, up) * half_height;
+    return;
+  }
+  const glm::vec3 forward = glm::normalize(target - eye());
+  const glm::vec3 side = glm::normalize(glm::cross(forward, glm::vec3(0, 1, 0)));
+  const glm::vec3 vertical = glm::cross(side, forward);
+  const float scale = distance * std::tan(glm::radians(fov_degrees) / 2);
+  target += scale * (right * side + up * vertical);
+}
+
+void Camera::zoom(float factor) {
+  if (dimension == 2) {
+    half_height *= factor;
+  } else {
+    distance *= factor;
+  }
+}
+
+Camera fit(const scene::Scene& scene, float aspect) {
+  Camera camera;
+  camera.dimension = scene.dimension;
+  const glm::vec3 lower(scene.lower[0], scene.lower[1], scene.lower[2]);
+  const glm::vec3 upper(scene.upper[0], scene.upper[1], scene.upper[2]);
+  const glm::vec3 middle = 0.5f * (lower + upper);
+  const glm::vec3 extent = upper - lower;
+  if (scene.dimension == 2) {
+    camera.center = glm::vec2(middle);
+    camera.half_height = 0.55f * std::max({extent.y, extent.x / aspect, 1e-6f});
+  } else {
+    camera.target = middle;
+    const float radius = 0.5f * std::max(glm::length(extent), 1e-6f);
+    const float half_angle = glm::radians(camera.fov_degrees) / 2 * std::min(1.0f, aspect);
+    camera.distance = 1.05f * radius / std::sin(half_angle);
+  }
+  return camera;
+}
+
+nlohmann::json to_json(const Camera& c) {
+  if (c.dimension == 2) {
+    return {{"dimension", 2}, {"center", {c.center.x, c.center.y}}, {"half_height", c.half_height}};
+  }
+  return {{"dimension", 3},
+          {"target", {c.target.x, c.target.y, c.target.z}},
+          {"distance", c.distance},
+          {"yaw", c.yaw},
+          {"pitch", c.pitch},
+          {"fov_degrees", c.fov_degrees}};
+}
+
+Camera camera_from_json(const nlohmann::json& json) {
+  try {
+    Camera c;
+    c.dimension = json.at("dimension").get<int>();
+    if (c.dimension == 2) {
+      c.center = {json.at("center").at(0).get<float>(), json.at("center").at(1).get<float>()};
+      c.half_height = json.at("half_height").get<float>();
+    } else if (c.dimension == 3) {
+      const auto& t = json.at("target");
+      c.target = {t.at(0).get<float>(), t.at(1).get<float>(), t.at(2).get<float>()};
+      c.distance = json.at("distance").get<float>();
+      c.yaw = json.at("yaw").get<float>();
+      c.pitch = json.at("pitch").get<float>();
+      c.fov_degrees = json.value("fov_degrees", c.fov_degrees);
+    } else {
+      throw std::invalid_argument("dimension must be 2 or 3");
+    }
+    return c;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::invalid_argument(std::string("not a camera: ") + e.what());
+  }
+}
+
+}  // namespace sculpt::render

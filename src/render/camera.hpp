@@ -1,0 +1,40 @@
+// The camera of a picture: orthographic for 2D (centre and zoom), a perspective orbit for 3D
+// (target, distance, yaw, pitch). It fits a scene's bounds, moves as the viewer's mouse asks,
+// and saves to JSON so a shot can be repeated exactly.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.hpp"
+
+namespace sculpt::render {
+
+struct Camera {
+  int dimension = 3;
+  // 3D orbit
+  glm::vec3 target{0.0f};
+  float distance = 3.0f;
+  float yaw = 0.6f;    // radians around the vertical (y) axis
+  float pitch = 0.35f; // radians above the horizontal plane
+  float fov_degrees = 35.0f;
+  // 2D
+  glm::vec2 center{0.0f};
+  float half_height = 1.0f;
+
+  glm::vec3 eye() const;
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+
+  void orbit(float yaw_delta, float pitch_delta);
+  void pan(float right, float up);  // in units of the visible half height
+  void zoom(float factor);          // < 1 zooms in
+};
+
+// A camera that shows the whole of the scene's bounds with a small margin.
+Camera fit(const scene::Scene& scene, float aspect = 1.0f);
+
+nlohmann::json to_json(const Camera& camera);
+Camera camera_from_json(const nlohmann::json& json);  // throws std::invalid_argument
+
+}  // namespace sculpt::render

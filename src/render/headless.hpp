@@ -1,0 +1,30 @@
+// Rendering without a display: an OSMesa OpenGL 3.3 core context (Mesa's llvmpipe) drawing into
+// a 4x multisampled offscreen framebuffer, read back as an Image. The renderer is the viewer's.
+#pragma once
+
+#include <memory>
+
+#include "render/image.hpp"
+#include "render/renderer.hpp"
+
+namespace sculpt::render {
+
+class Headless_renderer {
+ public:
+  Headless_renderer();  // throws std::runtime_error if no GL 3.3 context can be made
+  ~Headless_renderer();
+  Headless_renderer(const Headless_renderer&) = delete;
+  Headless_renderer& operator=(const Headless_renderer&) = delete;
+
+  Image render(const scene::Scene& scene, const Camera& camera, int width, int height,
+               const Draw_options& options = {});
+
+  const char* gl_renderer() const;  // e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+
+ private:
+  struct Context;
+  std::unique_ptr<Context> context_;
+  std::unique_ptr<Renderer> renderer_;
+};
+
+}  // namespace sculpt::render

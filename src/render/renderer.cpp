@@ -1,0 +1,279 @@
+#include "renderer.hpp"
+
+#include <stb/stb_easy_font.h>
+
+#include <glm/gtc/type_ptr.hpp>
+#include <stdexcept>
+
+#include "render/gl.hpp"
+#include "render/shader_sources.hpp"
+
+namespace sculpt::render {
+namespace {
+
+GLuint compile(GLenum kind, const char* source) {
+  const GLuint shader = glCreateShader(kind);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    throw std::runtime_error(std::string("a shader does not compile: ") + log);
+  }
+  return shader;
+}
+
+GLuint link(const char* vertex, const char* geometry, const char* fragment) {
+  const GLuint program = glCreateProgram();
+  const GLuint shaders[3] = {compile(GL_VERTEX_SHADER, vertex),
+                             geometry ? compile(GL_GEOMETRY_SHADER, geometry) : 0,
+                             compile(GL_FRAGMENT_SHADER, fragment)};
+  for (GLuint s : shaders) {
+    if (s) glAttachShader(program, s);
+  }
+  glLinkProgram(program);
+  for (GLuint s : shaders) {
+    if (s) glDeleteShader(s);
+  }
+  GLint ok = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[4096];
+    glGetProgramInfoLog(program, sizeof log, nullptr, log);
+    throw std::runtime_error(std::string("a shader program does not link: ") + log);
+  }
+  return program;
+}
+
+GLint uniform(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+
+void set_color(GLuint program, const scene::Color& c) {
+  glUniform4f(uniform(program, "color"), c.r, c.g, c.b, c.a);
+}
+
+}  // namespace
+
+struct Renderer::Programs {
+  GLuint points = link(shaders::points_vert, nullptr, shaders::points_frag);
+  GLuint lines = link(shaders::lines_vert, shaders::lines_geom, shaders::flat_frag);
+  GLuint mesh = link(shaders::mesh_vert, nullptr, shaders::mesh_frag);
+  GLuint balls = link(shaders::balls_vert, shaders::balls_geom, shaders::balls_frag);
+  GLuint screen = link(shaders::screen_vert, nullptr, shaders::flat_frag);
+  ~Programs() {
+    for (GLuint p : {points, lines, mesh, balls, screen}) glDeleteProgram(p);
+  }
+};
+
+// A layer's vertex array: positions (location 0), normals (1) and radii (2) as it needs them.
+struct Renderer::Gpu_layer {
+  GLuint array = 0;
+  GLuint buffers[3] = {0, 0, 0};
+  GLsizei count = 0;
+  bool has_normals = false;
+};
+
+Renderer::Renderer() : programs_(std::make_unique<Programs>()) {
+  glGenVertexArrays(1, &overlay_array_);
+  glGenBuffers(1, &overlay_buffer_);
+}
+
+Renderer::~Renderer() {
+  set_scene({});
+  glDeleteBuffers(1, &overlay_buffer_);
+  glDeleteVertexArrays(1, &overlay_array_);
+}
+
+void Renderer::set_scene(const scene::Scene& scene) {
+  for (auto& layer : layers_) {
+    glDeleteBuffers(3, layer.buffers);
+    glDeleteVertexArrays(1, &layer.array);
+  }
+  layers_.clear();
+  scene_ = scene::Scene{scene.dimension, scene.title, {}, scene.lower, scene.upper};
+  for (const auto& layer : scene.layers) {
+    Gpu_layer gpu;
+    gpu.count = static_cast<GLsizei>(layer.positions.size());
+    gpu.has_normals = !layer.normals.empty();
+    glGenVertexArrays(1, &gpu.array);
+    glBindVertexArray(gpu.array);
+    glGenBuffers(3, gpu.buffers);
+    const auto attribute = [&](int location, GLuint buffer, const void* data, std::size_t bytes,
+                               int components) {
+      glBindBuffer(GL_ARRAY_BUFFER, buffer);
+      glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
+      glEnableVertexAttribArray(location);
+      glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, 0, nullptr);
+    };
+    attribute(0, gpu.buffers[0], layer.positions.data(), layer.positions.size() * sizeof(scene::Vec3), 3);
+    if (gpu.has_normals) {
+      attribute(1, gpu.buffers[1], layer.normals.data(), layer.normals.size() * sizeof(scene::Vec3), 3);
+    } else {
+      glVertexAttrib3f(1, 0, 0, 1);
+    }
+    if (!layer.radii.empty()) {
+      attribute(2, gpu.buffers[2], layer.radii.data(), layer.radii.size() * sizeof(float), 1);
+    }
+    glBindVertexArray(0);
+    layers_.push_back(gpu);
+    scene::Layer info = layer;  // keep what the layer is, not its geometry
+    info.positions.clear();
+    info.normals.clear();
+    info.radii.clear();
+    scene_.layers.push_back(std::move(info));
+    if (layer.positions.empty()) scene_.layers.back().in_legend = false;
+  }
+}
+
+void Renderer::draw(const Camera& camera, int width, int height, const Draw_options& options) {
+  glViewport(0, 0, width, height);
+  const auto& bg = options.background;
+  glClearColor(bg.r, bg.g, bg.b, bg.a);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  glEnable(GL_PROGRAM_POINT_SIZE);
+
+  const bool three = scene_.dimension == 3;
+  if (three) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+  } else {
+    glDisable(GL_DEPTH_TEST);
+  }
+  // 3D: opaque triangles first (pushed back so edges on them show), then lines and points,
+  // translucent balls last without writing depth. 2D: layer order is drawing order.
+  const scene::Primitive order_3d[] = {scene::Primitive::triangles, scene::Primitive::lines,
+                                       scene::Primitive::points, scene::Primitive::balls};
+  if (three) {
+    for (auto primitive : order_3d) {
+      for (std::size_t i = 0; i < layers_.size(); ++i) {
+        if (scene_.layers[i].primitive == primitive) draw_layer(layers_[i], scene_.layers[i], camera, width, height);
+      }
+    }
+  } else {
+    for (std::size_t i = 0; i < layers_.size(); ++i) draw_layer(layers_[i], scene_.layers[i], camera, width, height);
+  }
+  draw_overlay(width, height, options);
+}
+
+void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera,
+                          int width, int height) {
+  if (layer.count == 0) return;
+  const float aspect = float(width) / float(height);
+  const glm::mat4 view = camera.view();
+  const glm::mat4 projection = camera.projection(aspect);
+  const glm::mat4 view_projection = projection * view;
+  glBindVertexArray(layer.array);
+  switch (info.primitive) {
+    case scene::Primitive::points: {
+      const GLuint p = programs_->points;
+      glUseProgram(p);
+      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+      glUniform1f(uniform(p, "point_size"), info.size);
+      set_color(p, info.color);
+      glDrawArrays(GL_POINTS, 0, layer.count);
+      break;
+    }
+    case scene::Primitive::lines: {
+      const GLuint p = programs_->lines;
+      glUseProgram(p);
+      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+      glUniform2f(uniform(p, "viewport"), float(width), float(height));
+      glUniform1f(uniform(p, "line_width"), info.size);
+      set_color(p, info.color);
+      glDrawArrays(GL_LINES, 0, layer.count);
+      break;
+    }
+    case scene::Primitive::triangles: {
+      const GLuint p = programs_->mesh;
+      glUseProgram(p);
+      glUniformMatrix4fv(uniform(p, "view"), 1, GL_FALSE, glm::value_ptr(view));
+      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+      glUniform1i(uniform(p, "lit"), info.lit);
+      glUniform1i(uniform(p, "smooth_normals"), layer.has_normals);
+      set_color(p, info.color);
+      glEnable(GL_POLYGON_OFFSET_FILL);
+      glPolygonOffset(1.0f, 1.0f);
+      glDrawArrays(GL_TRIANGLES, 0, layer.count);
+      glDisable(GL_POLYGON_OFFSET_FILL);
+      break;
+    }
+    case scene::Primitive::balls: {
+      const GLuint p = programs_->balls;
+      glUseProgram(p);
+      glUniformMatrix4fv(uniform(p, "view"), 1, GL_FALSE, glm::value_ptr(view));
+      glUniformMatrix4fv(uniform(p, "projection"), 1, GL_FALSE, glm::value_ptr(projection));
+      glUniform1i(uniform(p, "translucent"), info.translucent);
+      glUniform1f(uniform(p, "line_width"), info.size);
+      set_color(p, info.color);
+      glDepthMask(GL_FALSE);
+      glDrawArrays(GL_POINTS, 0, layer.count);
+      glDepthMask(GL_TRUE);
+      break;
+    }
+  }
+  glBindVertexArray(0);
+}
+
+// The legend and title: coloured swatches and text (stb_easy_font quads) in pixel coordinates.
+void Renderer::draw_overlay(int width, int height, const Draw_options& options) {
+  struct Piece {
+    scene::Color color;
+    std::vector<float> triangles;  // x, y, z per vertex
+  };
+  std::vector<Piece> pieces;
+  const float scale = height >= 600 ? 2.0f : 1.0f;
+  const auto text = [&](float x, float y, const std::string& words, scene::Color color) {
+    std::vector<char> quads(words.size() * 270 + 1000);
+    const int count = stb_easy_font_print(0, 0, const_cast<char*>(words.c_str()), nullptr,
+                                          quads.data(), static_cast<int>(quads.size()));
+    Piece piece{color, {}};
+    const auto* vertices = reinterpret_cast<const float*>(quads.data());  // x y z + 4 bytes colour
+    for (int q = 0; q < count; ++q) {
+      for (int corner : {0, 1, 2, 0, 2, 3}) {
+        const float* v = vertices + (4 * q + corner) * 4;
+        piece.triangles.insert(piece.triangles.end(), {x + scale * v[0], y + scale * v[1], 0.0f});
+      }
+    }
+    pieces.push_back(std::move(piece));
+  };
+  const auto box = [&](float x, float y, float w, float h, scene::Color color) {
+    pieces.push_back({color, {x, y, 0, x + w, y, 0, x + w, y + h, 0, x, y, 0, x + w, y + h, 0, x, y + h, 0}});
+  };
+  const float line = 12 * scale, margin = 8 * scale;
+  if (options.legend) {
+    float y = margin;
+    for (const auto& layer : scene_.layers) {
+      if (!layer.in_legend) continue;
+      scene::Color swatch = layer.color;
+      swatch.a = 1;
+      box(margin, y + 1 * scale, 8 * scale, 8 * scale, swatch);
+      text(margin + 12 * scale, y + 1 * scale, layer.label, {0.1f, 0.1f, 0.1f, 1});
+      y += line;
+    }
+  }
+  if (options.title && !scene_.title.empty()) {
+    text(margin, height - margin - 8 * scale, scene_.title, {0.1f, 0.1f, 0.1f, 1});
+  }
+
+  glDisable(GL_DEPTH_TEST);
+  const GLuint p = programs_->screen;
+  glUseProgram(p);
+  glUniform2f(uniform(p, "viewport"), float(width), float(height));
+  glBindVertexArray(overlay_array_);
+  glBindBuffer(GL_ARRAY_BUFFER, overlay_buffer_);
+  glEnableVertexAttribArray(0);
+  for (const auto& piece : pieces) {
+    if (piece.triangles.empty()) continue;
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(piece.triangles.size() * sizeof(float)),
+                 piece.triangles.data(), GL_STREAM_DRAW);
+    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+    set_color(p, piece.color);
+    glDrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(piece.triangles.size() / 3));
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace sculpt::render

@@ -1,0 +1,46 @@
+// Draws a scene with OpenGL 3.3 core into whatever framebuffer is bound: the viewer's window or
+// the headless renderer's offscreen buffer. Knows nothing of windows or contexts; it needs only
+// a current GL 3.3 context when constructed and used.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/camera.hpp"
+#include "scene/scene.hpp"
+
+namespace sculpt::render {
+
+struct Draw_options {
+  bool legend = true;  // colour swatches with the layers' labels, top left
+  bool title = true;   // the stage's title, bottom left
+  scene::Color background{1, 1, 1, 1};
+};
+
+class Renderer {
+ public:
+  Renderer();  // compiles the programs: throws std::runtime_error with the GL log on failure
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  // Uploads a scene's layers to the GPU; they stay there until the next call.
+  void set_scene(const scene::Scene& scene);
+  // Draws the uploaded scene into a width x height viewport of the bound framebuffer.
+  void draw(const Camera& camera, int width, int height, const Draw_options& options = {});
+
+ private:
+  struct Programs;
+  struct Gpu_layer;
+  std::unique_ptr<Programs> programs_;
+  std::vector<Gpu_layer> layers_;
+  scene::Scene scene_;  // the scene without its geometry: kinds, colours, labels
+  unsigned overlay_array_ = 0, overlay_buffer_ = 0;
+
+  void draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera, int width,
+                  int height);
+  void draw_overlay(int width, int height, const Draw_options& options);
+};
+
+}  // namespace sculpt::render

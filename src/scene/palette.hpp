@@ -1,0 +1,31 @@
+// The colours of the paper's figures: samples green, inner poles red, outer concave poles blue
+// in 2D and orange in 3D, Delaunay edges blue, Voronoi edges green, polar circles black.
+#pragma once
+
+#include "scene.hpp"
+
+namespace sculpt::scene::palette {
+
+inline constexpr Color sample{0.05f, 0.55f, 0.10f};
+inline constexpr Color delaunay_edge{0.20f, 0.35f, 0.90f};
+inline constexpr Color voronoi_edge{0.30f, 0.75f, 0.30f};
+inline constexpr Color pole{0.85f, 0.10f, 0.10f};
+inline constexpr Color inner_pole{0.85f, 0.10f, 0.10f};
+inline constexpr Color outer_pole_2d{0.10f, 0.25f, 0.95f};
+inline constexpr Color outer_pole_3d{1.00f, 0.55f, 0.00f};
+inline constexpr Color convex_pole{0.55f, 0.20f, 0.70f};
+inline constexpr Color unlabelled_pole{0.60f, 0.60f, 0.60f};
+inline constexpr Color box_corner{0.10f, 0.10f, 0.10f};
+inline constexpr Color polar_ball{0.15f, 0.15f, 0.15f, 0.55f};
+inline constexpr Color focus_ball{0.95f, 0.35f, 0.55f, 0.9f};
+inline constexpr Color inscribed_cube{0.85f, 0.20f, 0.45f};
+inline constexpr Color current_pole{1.00f, 0.85f, 0.00f};
+inline constexpr Color solid{0.55f, 0.70f, 0.90f};
+inline constexpr Color surface{0.78f, 0.80f, 0.86f};
+inline constexpr Color wireframe{0.15f, 0.15f, 0.20f};
+inline constexpr Color curve{0.05f, 0.05f, 0.05f};
+inline constexpr Color background{1.0f, 1.0f, 1.0f};
+
+inline Color outer_pole(int dimension) { return dimension == 2 ? outer_pole_2d : outer_pole_3d; }
+
+}  // namespace sculpt::scene::palette

@@ -1,0 +1,84 @@
+// A scene is what one picture of the algorithm shows: coloured layers of points, lines,
+// triangles and balls, built from any stage of a reconstruction. It knows nothing of GL, so the
+// viewer, the headless renderer and the tests all read the same scene.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include <sculpt/sculpt.hpp>
+
+namespace sculpt::scene {
+
+using Vec3 = std::array<float, 3>;
+
+struct Color {
+  float r = 0, g = 0, b = 0, a = 1;
+};
+
+enum class Primitive {
+  points,     // one position per point; size = diameter in pixels
+  lines,      // two positions per segment; size = width in pixels
+  triangles,  // three positions per triangle; optional normals for smooth shading
+  balls,      // one position and one radius per ball: circles in 2D, spheres in 3D
+};
+
+struct Layer {
+  std::string id;     // what --layers names it by
+  std::string label;  // what the legend says
+  Primitive primitive = Primitive::points;
+  Color color;
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;  // triangles only; empty = flat shading
+  std::vector<float> radii;   // balls only
+  float size = 5;             // pixels
+  bool lit = false;           // triangles: shaded by a light that follows the camera
+  bool translucent = false;   // balls: filled translucent spheres instead of outlines
+  bool in_legend = true;
+};
+
+// The stages a picture can show, in the order the algorithm runs.
+enum class Stage {
+  samples,
+  delaunay,           // DT(S ∪ BBV)
+  voronoi,            // its dual
+  poles,              // poles and polar balls
+  seeds,              // convex poles (outer seeds) and their partners (inner seeds)
+  propagation,        // the labelling after `step` events
+  outer_concave,      // inner poles and the outer concave poles OUP (UP when bordered)
+  sculpted_delaunay,  // DT(S ∪ OUP)
+  solid,              // the all-sample cells
+  surface,            // the result: surface (3D) or curve (2D)
+};
+
+const std::vector<Stage>& all_stages();
+const char* stage_id(Stage stage);       // "delaunay", "outer-concave", ...
+const char* stage_title(Stage stage);    // "Delaunay triangulation DT(S ∪ BBV)", ...
+bool parse_stage(const std::string& id, Stage& stage);
+
+struct Request {
+  Stage stage = Stage::surface;
+  long step = -1;         // propagation: how many labelling events have happened; -1 = all
+  int focus_sample = -1;  // show this sample's poles with their balls and inscribed cubes
+  bool wireframe = false;  // surface: draw its edges too
+  bool smooth = false;     // surface: smooth instead of flat shading
+  std::vector<std::string> layers;  // only these layer ids; empty = the stage's own choice
+};
+
+struct Scene {
+  int dimension = 3;
+  std::string title;
+  std::vector<Layer> layers;
+  Vec3 lower{}, upper{};  // bounds of the samples: what a camera fits by default
+};
+
+// The scene of one stage. Stages 1 and 6 need the triangulations kept in the reconstruction
+// (Options::keep_triangulations).
+Scene build_scene(const Reconstruction<2>& reconstruction, const Request& request);
+Scene build_scene(const Reconstruction<3>& reconstruction, const Request& request);
+
+// Ids of the layers a stage can show, for messages and the viewer's toggles.
+std::vector<std::string> layer_ids(const Scene& scene);
+
+}  // namespace sculpt::scene

@@ -1,0 +1,369 @@
+// Turns a stage of a reconstruction into layers. One builder serves both dimensions: 2D
+// positions get z = 0, and the few differences (cube or square, circle or sphere) follow D.
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+
+#include "palette.hpp"
+#include "scene.hpp"
+#include "simplex_geometry.hpp"
+
+namespace sculpt::scene {
+namespace {
+
+template <int D>
+class Scene_builder {
+ public:
+  Scene_builder(const Reconstruction<D>& r, const Request& request)
+      : r_(r), request_(request), n_(static_cast<int>(r.sample_count())) {
+    scene_.dimension = D;
+    scene_.title = stage_title(request.stage);
+    fit_bounds();
+  }
+
+  Scene build() {
+    switch (request_.stage) {
+      case Stage::samples:
+        break;
+      case Stage::delaunay:
+        edges_of(r_.delaunay, "delaunay", "Delaunay edges DT(S + BBV)", palette::delaunay_edge);
+        break;
+      case Stage::voronoi:
+        voronoi_edges();
+        break;
+      case Stage::poles:
+        // Thousands of spheres hide everything in 3D: there they are shown only when asked for.
+        if (D == 2 || requested("polar-balls")) polar_balls();
+        poles_where("poles", "poles", palette::pole, [](int) { return true; });
+        break;
+      case Stage::seeds:
+        seeds();
+        break;
+      case Stage::propagation:
+        propagation();
+        break;
+      case Stage::outer_concave:
+        labelled_poles(r_.propagation.labels, /*only_inserted=*/true);
+        break;
+      case Stage::sculpted_delaunay:
+        edges_of(r_.sculpted_delaunay, "sculpted-delaunay", "Delaunay edges DT(S + OUP)",
+                 palette::delaunay_edge);
+        labelled_poles(r_.propagation.labels, /*only_inserted=*/true);
+        break;
+      case Stage::solid:
+        solid();
+        break;
+      case Stage::surface:
+        surface();
+        break;
+    }
+    if (request_.focus_sample >= 0) focus(request_.focus_sample);
+    // Dense samples would cover a shaded surface or solid: there they are shown when asked for.
+    const bool shaded = D == 3 && (request_.stage == Stage::surface || request_.stage == Stage::solid);
+    if (!shaded || requested("samples")) samples();
+    scene_.layers.assign(std::make_move_iterator(layers_.begin()),
+                         std::make_move_iterator(layers_.end()));
+    select_layers();
+    return std::move(scene_);
+  }
+
+ private:
+  bool requested(const char* id) const {
+    return std::find(request_.layers.begin(), request_.layers.end(), id) != request_.layers.end();
+  }
+
+  static Vec3 vec(const Point<D>& p) {
+    return {float(p[0]), float(p[1]), D == 3 ? float(p[D - 1]) : 0.0f};
+  }
+
+  Layer& add(const char* id, const std::string& label, Primitive primitive, Color color,
+             float size) {
+    Layer layer;
+    layer.id = id;
+    layer.label = label;
+    layer.primitive = primitive;
+    layer.color = color;
+    layer.size = size;
+    layers_.push_back(std::move(layer));
+    return layers_.back();  // a deque: references stay valid as layers are added
+  }
+
+  void fit_bounds() {
+    scene_.lower = scene_.upper = vec(r_.sites[0]);
+    for (int s = 0; s < n_; ++s) {
+      const Vec3 p = vec(r_.sites[s]);
+      for (int k = 0; k < 3; ++k) {
+        scene_.lower[k] = std::min(scene_.lower[k], p[k]);
+        scene_.upper[k] = std::max(scene_.upper[k], p[k]);
+      }
+    }
+  }
+
+  void samples() {
+    Layer& layer = add("samples", "samples S", Primitive::points, palette::sample, D == 2 ? 5 : 3);
+    for (int s = 0; s < n_; ++s) layer.positions.push_back(vec(r_.sites[s]));
+  }
+
+  void require_cells(const Delaunay_stage<D>& stage) const {
+    if (stage.cells.size() != stage.cell_count) {
+      throw std::invalid_argument(
+          "this stage needs the triangulations kept (Options::keep_triangulations)");
+    }
+  }
+
+  void edges_of(const Delaunay_stage<D>& stage, const char* id, const std::string& label,
+                Color color) {
+    require_cells(stage);
+    std::vector<std::pair<int, int>> edges;
+    for (const auto& cell : stage.cells) {
+      for (int i = 0; i <= D; ++i) {
+        for (int j = i + 1; j <= D; ++j) edges.push_back(std::minmax(cell[i], cell[j]));
+      }
+    }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    Layer& layer = add(id, label, Primitive::lines, color, D == 2 ? 1.5f : 1.0f);
+    for (const auto& [a, b] : edges) {
+      layer.positions.push_back(vec(r_.sites[a]));
+      layer.positions.push_back(vec(r_.sites[b]));
+    }
+  }
+
+  // Voronoi edges join the circumcentres of Delaunay cells that share a facet.
+  void voronoi_edges() {
+    require_cells(r_.delaunay);
+    const auto& cells = r_.delaunay.cells;
+    std::vector<Point<D>> centers(cells.size());
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      std::array<Point<D>, D + 1> corners;
+      for (int i = 0; i <= D; ++i) corners[i] = r_.sites[cells[c][i]];
+      centers[c] = circumcenter<D>(corners);
+    }
+    Layer& layer = add("voronoi", "Voronoi edges", Primitive::lines, palette::voronoi_edge, 1.5f);
+    for (const auto& [a, b] : cells_sharing_a_facet<D>(cells)) {
+      layer.positions.push_back(vec(centers[a]));
+      layer.positions.push_back(vec(centers[b]));
+    }
+  }
+
+  template <class Keep>
+  Layer& poles_where(const char* id, const std::string& label, Color color, Keep keep) {
+    Layer& layer = add(id, label, Primitive::points, color, D == 2 ? 7 : 4);
+    const auto& poles = r_.poles.poles;
+    for (int p = 0; p < static_cast<int>(poles.size()); ++p) {
+      if (keep(p)) layer.positions.push_back(vec(poles[p].center));
+    }
+    return layer;
+  }
+
+  void polar_balls() {
+    Layer& layer = add("polar-balls", D == 2 ? "polar circles" : "polar balls", Primitive::balls,
+                       palette::polar_ball, 1.0f);
+    for (const auto& pole : r_.poles.poles) {
+      if (pole.convex) continue;  // their huge balls reach the box and hide everything
+      layer.positions.push_back(vec(pole.center));
+      layer.radii.push_back(float(pole.radius));
+    }
+  }
+
+  void seeds() {
+    const auto& seeds = r_.seeds;
+    std::vector<bool> outer(r_.poles.poles.size(), false), inner(r_.poles.poles.size(), false);
+    for (int seed : seeds.outer_seeds) {
+      outer[seed] = true;
+      for (int partner : r_.poles.partners_of(seed)) inner[partner] = !outer[partner];
+    }
+    poles_where("other-poles", "other poles", palette::unlabelled_pole,
+                [&](int p) { return !outer[p] && !inner[p]; });
+    poles_where("inner-seeds", "inner seeds (paired with outer seeds)", palette::inner_pole,
+                [&](int p) { return inner[p]; });
+    poles_where("outer-seeds", "outer seeds (convex poles)", palette::convex_pole,
+                [&](int p) { return outer[p]; });
+  }
+
+  void labelled_poles(const std::vector<Label>& labels, bool only_inserted) {
+    std::vector<bool> inserted(labels.size(), !only_inserted);
+    for (int p : r_.insertion.inserted_poles) inserted[p] = true;
+    const bool bordered = r_.options.kind == Surface_kind::bordered;
+    if (!only_inserted) {
+      poles_where("unlabelled-poles", "unlabelled poles", palette::unlabelled_pole,
+                  [&](int p) { return labels[p] == Label::unlabelled; });
+    }
+    poles_where("inner-poles", "inner poles", palette::inner_pole,
+                [&](int p) { return labels[p] == Label::inner && (inserted[p] || !bordered); });
+    poles_where("outer-poles", only_inserted ? "outer concave poles" : "outer poles",
+                palette::outer_pole(D),
+                [&](int p) { return labels[p] == Label::outer && inserted[p]; });
+  }
+
+  void propagation() {
+    const auto& events = r_.propagation.events;
+    const std::size_t shown = request_.step < 0 ? events.size()
+                                                : std::min<std::size_t>(request_.step, events.size());
+    std::vector<Label> labels(r_.poles.poles.size(), Label::unlabelled);
+    for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
+    labelled_poles(labels, /*only_inserted=*/false);
+    if (shown == 0) return;
+    // The latest event: the pole just labelled, and the ball (and cube) that labelled it.
+    const Labelling_event& last = events[shown - 1];
+    if (last.source >= 0) {
+      const auto& source = r_.poles.poles[last.source];
+      Layer& ball = add("source-ball", "labelling polar ball", Primitive::balls,
+                        palette::focus_ball, 2.0f);
+      ball.positions.push_back(vec(source.center));
+      ball.radii.push_back(float(source.radius));
+      if (last.reason == Label_reason::inscribed_cube) {
+        Layer& cube = add("source-cube", D == 2 ? "its inscribed square" : "its inscribed cube",
+                          Primitive::lines, palette::inscribed_cube, 2.0f);
+        inscribed_cube(source, cube);
+      }
+    }
+    Layer& current = add("current-pole", "pole just labelled", Primitive::points,
+                         palette::current_pole, D == 2 ? 12 : 9);
+    current.positions.push_back(vec(r_.poles.poles[last.pole].center));
+  }
+
+  void inscribed_cube(const Pole<D>& pole, Layer& layer) {
+    const double h = pole.radius / std::sqrt(double(D));
+    const auto corner = [&](int bits) {
+      Point<D> p = pole.center;
+      for (int k = 0; k < D; ++k) p[k] += (bits >> k) & 1 ? h : -h;
+      return vec(p);
+    };
+    for (int a = 0; a < (1 << D); ++a) {
+      for (int k = 0; k < D; ++k) {
+        const int b = a | (1 << k);  // each edge once, from its lower corner
+        if (b != a) {
+          layer.positions.push_back(corner(a));
+          layer.positions.push_back(corner(b));
+        }
+      }
+    }
+  }
+
+  void focus(int sample) {
+    if (sample >= n_) throw std::invalid_argument("no sample " + std::to_string(sample));
+    Layer& balls = add("focus-balls", "the sample's polar balls", Primitive::balls,
+                       palette::focus_ball, 2.0f);
+    Layer& cubes = add("focus-cubes", D == 2 ? "inscribed squares" : "inscribed cubes",
+                       Primitive::lines, palette::inscribed_cube, 2.0f);
+    Layer& poles = add("focus-poles", "the sample's poles", Primitive::points,
+                       palette::current_pole, D == 2 ? 10 : 8);
+    for (int pole : {r_.poles.positive_pole[sample], r_.poles.negative_pole[sample]}) {
+      if (pole < 0) continue;
+      const auto& p = r_.poles.poles[pole];
+      balls.positions.push_back(vec(p.center));
+      balls.radii.push_back(float(p.radius));
+      inscribed_cube(p, cubes);
+      poles.positions.push_back(vec(p.center));
+    }
+  }
+
+  void solid() {
+    if constexpr (D == 2) {
+      Layer& layer = add("solid", "sculpted solid (all-sample triangles)", Primitive::triangles,
+                         palette::solid, 1.0f);
+      for (const auto& cell : r_.solid) {
+        for (int v : cell) layer.positions.push_back(vec(r_.sites[v]));
+      }
+    } else {
+      // Tetrahedra shrunk towards their centroids, and the front half (+z, towards the default
+      // camera) cut away, so the inside of the solid shows.
+      Layer& layer = add("solid", "sculpted solid (all-sample tetrahedra)", Primitive::triangles,
+                         palette::solid, 1.0f);
+      layer.lit = true;
+      const float cut = 0.5f * (scene_.lower[2] + scene_.upper[2]);
+      for (const auto& cell : r_.solid) {
+        Vec3 corner[4], centroid{0, 0, 0};
+        for (int i = 0; i < 4; ++i) {
+          corner[i] = vec(r_.sites[cell[i]]);
+          for (int k = 0; k < 3; ++k) centroid[k] += corner[i][k] / 4;
+        }
+        if (centroid[2] > cut) continue;
+        for (auto& c : corner) {
+          for (int k = 0; k < 3; ++k) c[k] = centroid[k] + 0.75f * (c[k] - centroid[k]);
+        }
+        for (int skip = 0; skip < 4; ++skip) {
+          for (int i = 0; i < 4; ++i) {
+            if (i != skip) layer.positions.push_back(corner[i]);
+          }
+        }
+      }
+    }
+  }
+
+  void surface() {
+    if constexpr (D == 2) {
+      Layer& layer = add("curve", "reconstructed curve", Primitive::lines, palette::curve, 3.0f);
+      for (const auto& edge : r_.surface) {
+        layer.positions.push_back(vec(r_.sites[edge[0]]));
+        layer.positions.push_back(vec(r_.sites[edge[1]]));
+      }
+    } else {
+      Layer& layer = add("surface", "reconstructed surface", Primitive::triangles,
+                         palette::surface, 1.0f);
+      layer.lit = true;
+      for (const auto& t : r_.surface) {
+        for (int v : t) layer.positions.push_back(vec(r_.sites[v]));
+      }
+      if (request_.smooth) layer.normals = vertex_normals(r_.sites, r_.surface, n_);
+      if (request_.wireframe) {
+        Layer& wire = add("wireframe", "edges", Primitive::lines, palette::wireframe, 1.0f);
+        wire.in_legend = false;
+        for (const auto& t : r_.surface) {
+          for (int j = 0; j < 3; ++j) {
+            wire.positions.push_back(vec(r_.sites[t[j]]));
+            wire.positions.push_back(vec(r_.sites[t[(j + 1) % 3]]));
+          }
+        }
+      }
+    }
+  }
+
+  void select_layers() {
+    if (request_.layers.empty()) return;
+    for (const auto& id : request_.layers) {
+      const bool known = std::any_of(scene_.layers.begin(), scene_.layers.end(),
+                                     [&](const Layer& l) { return l.id == id; });
+      if (!known) {
+        std::string ids;
+        for (const auto& l : scene_.layers) ids += (ids.empty() ? "" : ", ") + l.id;
+        throw std::invalid_argument("the stage " + std::string(stage_id(request_.stage)) +
+                                    " has no layer '" + id + "' (it has: " + ids + ")");
+      }
+    }
+    std::vector<Layer> kept;
+    for (auto& layer : scene_.layers) {
+      if (std::find(request_.layers.begin(), request_.layers.end(), layer.id) !=
+          request_.layers.end()) {
+        kept.push_back(std::move(layer));
+      }
+    }
+    scene_.layers = std::move(kept);
+  }
+
+  const Reconstruction<D>& r_;
+  const Request& request_;
+  const int n_;
+  Scene scene_;
+  std::deque<Layer> layers_;
+};
+
+}  // namespace
+
+Scene build_scene(const Reconstruction<2>& reconstruction, const Request& request) {
+  return Scene_builder<2>(reconstruction, request).build();
+}
+
+Scene build_scene(const Reconstruction<3>& reconstruction, const Request& request) {
+  return Scene_builder<3>(reconstruction, request).build();
+}
+
+std::vector<std::string> layer_ids(const Scene& scene) {
+  std::vector<std::string> ids;
+  for (const auto& layer : scene.layers) ids.push_back(layer.id);
+  return ids;
+}
+
+}  // namespace sculpt::scene
