@@ -1,0 +1,113 @@
+// A layer that silently disappears must fail a test, not only drift pixels: every layer of
+// every stage puts something on screen, removing it changes the picture, and the paper's
+// colours are where they belong.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "render/image.hpp"
+#include "render_support.hpp"
+#include "scene/palette.hpp"
+
+namespace sculpt {
+namespace {
+
+// The scene's bounds widened to everything it draws: convex poles lie near the box, far
+// outside the samples' frame (as in the paper's Fig. 6c).
+scene::Scene framing_everything(scene::Scene scene) {
+  for (const auto& layer : scene.layers) {
+    for (std::size_t i = 0; i < layer.positions.size(); ++i) {
+      const float radius = layer.radii.empty() ? 0.0f : layer.radii[i];
+      for (int k = 0; k < 3; ++k) {
+        scene.lower[k] = std::min(scene.lower[k], layer.positions[i][k] - radius);
+        scene.upper[k] = std::max(scene.upper[k], layer.positions[i][k] + radius);
+      }
+    }
+  }
+  return scene;
+}
+
+template <int D>
+void expect_every_layer_visible(const Reconstruction<D>& reconstruction) {
+  for (scene::Stage stage : scene::all_stages()) {
+    scene::Request request;
+    request.stage = stage;
+    const scene::Scene framed = scene::build_scene(reconstruction, request);
+    const scene::Scene full = framing_everything(framed);
+    ASSERT_FALSE(full.layers.empty()) << scene::stage_id(stage);
+    const render::Image all = testing::render_scene(framed, 160);
+    for (std::size_t i = 0; i < full.layers.size(); ++i) {
+      const auto& layer = full.layers[i];
+      SCOPED_TRACE(std::string(scene::stage_id(stage)) + " / " + layer.id);
+      // Once the propagation is over, no pole may be left unlabelled (the stage's data says so).
+      if (layer.id == "unlabelled-poles" && reconstruction.propagation.unlabelled == 0) {
+        EXPECT_TRUE(layer.positions.empty());
+        continue;
+      }
+      EXPECT_FALSE(layer.positions.empty());
+      scene::Scene alone = full, without = framed;
+      alone.layers = {layer};
+      without.layers.erase(without.layers.begin() + static_cast<long>(i));
+      EXPECT_GT(testing::non_background_pixels(testing::render_scene(alone, 160)), 0u);
+      // In the usual frame, each layer that reaches into it leaves a mark on the picture. Not
+      // in 3D, where a layer may be hidden behind another (inner poles in the sample cloud).
+      const bool in_frame = std::any_of(layer.positions.begin(), layer.positions.end(), [&](const scene::Vec3& p) {
+        return p[0] >= framed.lower[0] && p[0] <= framed.upper[0] && p[1] >= framed.lower[1] &&
+               p[1] <= framed.upper[1];
+      });
+      if (D == 2 && in_frame) {
+        EXPECT_GT(render::compare(all, testing::render_scene(without, 160), 0).mismatch_ratio, 0.0)
+            << "removing the layer changes nothing";
+      }
+    }
+  }
+}
+
+TEST(Render_layers, EveryLayerOfEveryStageShows2d) {
+  expect_every_layer_visible(testing::star_reconstruction());
+}
+
+TEST(Render_layers, EveryLayerOfEveryStageShows3d) {
+  expect_every_layer_visible(testing::bumpy_reconstruction());
+}
+
+std::size_t pixels_of(const render::Image& image, scene::Color c) {
+  return render::count_pixels_near(image, c.r, c.g, c.b, 12);
+}
+
+TEST(Render_layers, PaperColoursAppear) {
+  scene::Request request;
+  request.stage = scene::Stage::outer_concave;
+  const auto poles_2d = testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
+  EXPECT_GT(pixels_of(poles_2d, scene::palette::sample), 100u) << "green samples";
+  EXPECT_GT(pixels_of(poles_2d, scene::palette::inner_pole), 100u) << "red inner poles";
+  EXPECT_GT(pixels_of(poles_2d, scene::palette::outer_pole_2d), 50u) << "blue outer concave poles";
+
+  const auto poles_3d = testing::render_scene(scene::build_scene(testing::bumpy_reconstruction(), request), 240);
+  EXPECT_GT(pixels_of(poles_3d, scene::palette::outer_pole_3d), 50u) << "orange outer concave poles";
+
+  request.stage = scene::Stage::delaunay;
+  const auto delaunay = testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
+  EXPECT_GT(pixels_of(delaunay, scene::palette::delaunay_edge), 500u) << "blue Delaunay edges";
+
+  request.stage = scene::Stage::surface;
+  const auto curve = testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
+  EXPECT_GT(pixels_of(curve, scene::palette::curve), 100u) << "the black curve";
+  const auto surface = testing::render_scene(scene::build_scene(testing::bumpy_reconstruction(), request), 240);
+  EXPECT_GT(testing::non_background_pixels(surface), 240u * 240u / 10) << "a shaded surface";
+}
+
+TEST(Render_layers, RenderingIsDeterministic) {
+  scene::Request request;
+  request.stage = scene::Stage::solid;
+  const auto scene = scene::build_scene(testing::bumpy_reconstruction(), request);
+  const auto a = testing::render_scene(scene, 128), b = testing::render_scene(scene, 128);
+  EXPECT_EQ(a.rgba, b.rgba);
+}
+
+TEST(Render_layers, ReportsLlvmpipe) {
+  EXPECT_NE(std::string(testing::headless().gl_renderer()).find("llvmpipe"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sculpt

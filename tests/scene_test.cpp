@@ -1,0 +1,107 @@
+// The scene layer without GL: which layers each stage has, the propagation replay, the camera.
+#include <gtest/gtest.h>
+
+#include "render/camera.hpp"
+#include "scene/scene.hpp"
+#include "shapes/shapes.hpp"
+
+namespace sculpt {
+namespace {
+
+const Reconstruction<2>& star() {
+  static const auto result = reconstruct(shapes::star(80).samples);
+  return result;
+}
+
+const scene::Layer* find(const scene::Scene& scene, const std::string& id) {
+  for (const auto& layer : scene.layers) {
+    if (layer.id == id) return &layer;
+  }
+  return nullptr;
+}
+
+TEST(Scene, StagesHaveTheirLayers) {
+  const std::pair<scene::Stage, std::vector<std::string>> expected[] = {
+      {scene::Stage::samples, {"samples"}},
+      {scene::Stage::delaunay, {"delaunay", "samples"}},
+      {scene::Stage::voronoi, {"voronoi", "samples"}},
+      {scene::Stage::poles, {"polar-balls", "poles", "samples"}},
+      {scene::Stage::seeds, {"other-poles", "inner-seeds", "outer-seeds", "samples"}},
+      {scene::Stage::outer_concave, {"inner-poles", "outer-poles", "samples"}},
+      {scene::Stage::sculpted_delaunay, {"sculpted-delaunay", "inner-poles", "outer-poles", "samples"}},
+      {scene::Stage::solid, {"solid", "samples"}},
+      {scene::Stage::surface, {"curve", "samples"}},
+  };
+  for (const auto& [stage, ids] : expected) {
+    scene::Request request;
+    request.stage = stage;
+    EXPECT_EQ(scene::layer_ids(scene::build_scene(star(), request)), ids) << scene::stage_id(stage);
+  }
+}
+
+TEST(Scene, PropagationReplaysEventByEvent) {
+  scene::Request request;
+  request.stage = scene::Stage::propagation;
+  for (long step : {1L, 10L, 50L}) {
+    request.step = step;
+    const auto s = scene::build_scene(star(), request);
+    std::size_t labelled = find(s, "inner-poles")->positions.size() + find(s, "outer-poles")->positions.size();
+    EXPECT_EQ(labelled, std::size_t(step));
+    const auto& event = star().propagation.events[step - 1];
+    const auto& pole = star().poles.poles[event.pole].center;
+    EXPECT_FLOAT_EQ(find(s, "current-pole")->positions[0][0], float(pole[0]));
+    EXPECT_EQ(find(s, "source-ball") != nullptr, event.source >= 0);
+  }
+  request.step = -1;
+  EXPECT_EQ(find(scene::build_scene(star(), request), "unlabelled-poles")->positions.size(),
+            star().propagation.unlabelled);
+}
+
+TEST(Scene, LayerSelectionAndErrors) {
+  scene::Request request;
+  request.stage = scene::Stage::poles;
+  request.layers = {"poles"};
+  EXPECT_EQ(scene::layer_ids(scene::build_scene(star(), request)), std::vector<std::string>{"poles"});
+  request.layers = {"nonsense"};
+  EXPECT_THROW(scene::build_scene(star(), request), std::invalid_argument);
+  request = {};
+  request.focus_sample = 1000;
+  EXPECT_THROW(scene::build_scene(star(), request), std::invalid_argument);
+
+  Options lean;
+  lean.keep_triangulations = false;
+  const auto without_cells = reconstruct(shapes::star(40).samples, lean);
+  request = {};
+  request.stage = scene::Stage::delaunay;
+  EXPECT_THROW(scene::build_scene(without_cells, request), std::invalid_argument);
+}
+
+TEST(Scene, FocusShowsTwoBallsAndTheirSquares) {
+  scene::Request request;
+  request.stage = scene::Stage::samples;
+  request.focus_sample = 5;
+  const auto s = scene::build_scene(star(), request);
+  EXPECT_EQ(find(s, "focus-balls")->radii.size(), 2u);
+  EXPECT_EQ(find(s, "focus-cubes")->positions.size(), 2u * 4u * 2u);  // 2 squares, 4 edges
+}
+
+TEST(Camera, FitsAndRoundTripsThroughJson) {
+  scene::Request request;
+  const auto s = scene::build_scene(star(), request);
+  const auto camera = render::fit(s);
+  EXPECT_EQ(camera.dimension, 2);
+  EXPECT_GT(camera.half_height, 0.5f * (s.upper[1] - s.lower[1]));
+  const auto back = render::camera_from_json(render::to_json(camera));
+  EXPECT_EQ(back.center, camera.center);
+  EXPECT_EQ(back.half_height, camera.half_height);
+  render::Camera orbit;
+  orbit.yaw = 1.25f;
+  orbit.target = {1, 2, 3};
+  const auto again = render::camera_from_json(render::to_json(orbit));
+  EXPECT_EQ(again.yaw, orbit.yaw);
+  EXPECT_EQ(again.target, orbit.target);
+  EXPECT_THROW(render::camera_from_json(nlohmann::json{{"dimension", 4}}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace sculpt
