@@ -1,5 +1,6 @@
 #include "bench.hpp"
 
+#include <chrono>
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -10,6 +11,7 @@
 
 #include "io/atomic_file.hpp"
 #include "io/point_reader.hpp"
+#include "render/headless.hpp"
 #include "report.hpp"
 #include "shapes/shapes.hpp"
 
@@ -129,6 +131,45 @@ void print_rows(const std::vector<nlohmann::json>& rows) {
   }
 }
 
+// A torus surface of about `triangles` triangles (a closed torus has twice as many triangles as
+// samples), rendered headless at 1600x1200: building its scene, then two renders (the first
+// also makes the context and compiles the shaders).
+void bench_rendering(int triangles) {
+  const auto samples = shapes::torus(triangles / 2);
+  Options options;
+  options.keep_triangulations = false;
+  const auto result = reconstruct(samples, options);
+  const auto measured = in_child_process([&] {
+    using Clock = std::chrono::steady_clock;
+    const auto seconds = [](Clock::time_point since) {
+      return std::chrono::duration<double>(Clock::now() - since).count();
+    };
+    auto start = Clock::now();
+    scene::Request request;
+    request.stage = scene::Stage::surface;
+    const auto scene = scene::build_scene(result, request);
+    const double build = seconds(start);
+    start = Clock::now();
+    render::Headless_renderer renderer;
+    const auto camera = render::fit(scene, 1600.0f / 1200.0f);
+    renderer.render(scene, camera, 1600, 1200);
+    const double first = seconds(start);
+    start = Clock::now();
+    renderer.render(scene, camera, 1600, 1200);
+    return nlohmann::json{{"scene", build}, {"first", first}, {"second", seconds(start)},
+                          {"renderer", renderer.gl_renderer()}};
+  });
+  if (measured.contains("error")) {
+    std::cout << "rendering failed: " << measured["error"].get<std::string>() << '\n';
+    return;
+  }
+  std::cout << fmt::format(
+      "\nheadless render, {} triangles at 1600x1200 ({}): scene {:.2f} s, first render {:.2f} s "
+      "(context, shaders, upload, draw), next render {:.2f} s, peak {:.0f} MiB\n",
+      result.surface.size(), measured["renderer"].get<std::string>(), double(measured["scene"]),
+      double(measured["first"]), double(measured["second"]), double(measured["process_peak_mib"]));
+}
+
 }  // namespace
 
 int run_bench(const Bench_arguments& args) {
@@ -162,6 +203,7 @@ int run_bench(const Bench_arguments& args) {
                    false));
   }
   print_rows(rows);
+  if (args.render_triangles > 0) bench_rendering(args.render_triangles);
   if (!args.json.empty()) {
     io::Atomic_file file(args.json, false);
     file.stream() << nlohmann::json(rows).dump(2) << '\n';

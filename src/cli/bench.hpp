@@ -11,6 +11,7 @@ struct Bench_arguments {
   std::vector<std::string> inputs;    // point files
   std::vector<std::string> examples;  // built-in example names
   int torus_points = 0;               // also random points on a torus, if > 0
+  int render_triangles = 0;           // also time a headless render of a surface this large
   bool bordered = false;
   std::string json;  // write the rows as JSON too
 };

@@ -186,6 +186,8 @@ int main(int argc, char** argv) {
   bench->add_option("inputs", bench_args.inputs, "Point files");
   bench->add_option("--example", bench_args.examples, "Built-in examples");
   bench->add_option("--torus", bench_args.torus_points, "Also N random points on a torus");
+  bench->add_option("--render", bench_args.render_triangles,
+                    "Also time a headless 1600x1200 render of a surface of N triangles");
   bench->add_flag("--bordered", bench_args.bordered, "Treat the point files as bordered");
   bench->add_option("--json", bench_args.json, "Also write the measurements as JSON");
 
