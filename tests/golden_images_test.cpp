@@ -14,7 +14,7 @@ namespace sculpt {
 namespace {
 
 constexpr int image_size = 240;
-constexpr int channel_tolerance = 24;        // llvmpipe is deterministic; leave room for Mesa updates
+constexpr int channel_tolerance = 24;  // llvmpipe is deterministic; leave room for Mesa updates
 constexpr double allowed_mismatch = 0.005;  // share of pixels beyond the tolerance
 
 struct Golden_case {
@@ -28,7 +28,8 @@ std::vector<Golden_case> golden_cases() {
   for (scene::Stage stage : scene::all_stages()) {
     cases.push_back({std::string("star-") + scene::stage_id(stage), 2, stage});
   }
-  for (scene::Stage stage : {scene::Stage::outer_concave, scene::Stage::solid, scene::Stage::surface}) {
+  for (scene::Stage stage :
+       {scene::Stage::outer_concave, scene::Stage::solid, scene::Stage::surface}) {
     cases.push_back({std::string("bumpy-") + scene::stage_id(stage), 3, stage});
   }
   return cases;
@@ -60,7 +61,8 @@ TEST_P(Golden_images, MatchesTheGolden) {
     const std::string stem = std::string(SCULPT_TEST_OUTPUT) + "/golden-failures/" + c.name;
     std::filesystem::create_directories(std::string(SCULPT_TEST_OUTPUT) + "/golden-failures");
     render::write_png(stem + ".actual.png", actual);
-    if (!comparison.difference.rgba.empty()) render::write_png(stem + ".diff.png", comparison.difference);
+    if (!comparison.difference.rgba.empty())
+      render::write_png(stem + ".diff.png", comparison.difference);
     ADD_FAILURE() << c.name << ": " << comparison.mismatch_ratio * 100
                   << "% of pixels differ by more than " << channel_tolerance
                   << " (largest difference " << comparison.largest_difference << ")\n"
@@ -86,7 +88,9 @@ TEST(Golden_comparison, DetectsAChangedPicture) {
   const auto a = testing::render_scene(scene, 120);
   auto camera = render::fit(scene);
   camera.center.x += 0.2f;
-  const auto b = testing::headless().render(scene, camera, 120, 120, {false, false, {1, 1, 1, 1}});
+  render::Draw_options plain;
+  plain.legend = plain.title = false;
+  const auto b = testing::headless().render(scene, camera, 120, 120, plain);
   EXPECT_GT(render::compare(a, b, channel_tolerance).mismatch_ratio, allowed_mismatch);
   EXPECT_EQ(render::compare(a, a, 0).mismatch_ratio, 0.0);
 }

@@ -51,10 +51,11 @@ void expect_every_layer_visible(const Reconstruction<D>& reconstruction) {
       EXPECT_GT(testing::non_background_pixels(testing::render_scene(alone, 160)), 0u);
       // In the usual frame, each layer that reaches into it leaves a mark on the picture. Not
       // in 3D, where a layer may be hidden behind another (inner poles in the sample cloud).
-      const bool in_frame = std::any_of(layer.positions.begin(), layer.positions.end(), [&](const scene::Vec3& p) {
-        return p[0] >= framed.lower[0] && p[0] <= framed.upper[0] && p[1] >= framed.lower[1] &&
-               p[1] <= framed.upper[1];
-      });
+      const bool in_frame =
+          std::any_of(layer.positions.begin(), layer.positions.end(), [&](const scene::Vec3& p) {
+            return p[0] >= framed.lower[0] && p[0] <= framed.upper[0] && p[1] >= framed.lower[1] &&
+                   p[1] <= framed.upper[1];
+          });
       if (D == 2 && in_frame) {
         EXPECT_GT(render::compare(all, testing::render_scene(without, 160), 0).mismatch_ratio, 0.0)
             << "removing the layer changes nothing";
@@ -78,22 +79,28 @@ std::size_t pixels_of(const render::Image& image, scene::Color c) {
 TEST(Render_layers, PaperColoursAppear) {
   scene::Request request;
   request.stage = scene::Stage::outer_concave;
-  const auto poles_2d = testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
+  const auto poles_2d =
+      testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
   EXPECT_GT(pixels_of(poles_2d, scene::palette::sample), 100u) << "green samples";
   EXPECT_GT(pixels_of(poles_2d, scene::palette::inner_pole), 100u) << "red inner poles";
   EXPECT_GT(pixels_of(poles_2d, scene::palette::outer_pole_2d), 50u) << "blue outer concave poles";
 
-  const auto poles_3d = testing::render_scene(scene::build_scene(testing::bumpy_reconstruction(), request), 240);
-  EXPECT_GT(pixels_of(poles_3d, scene::palette::outer_pole_3d), 50u) << "orange outer concave poles";
+  const auto poles_3d =
+      testing::render_scene(scene::build_scene(testing::bumpy_reconstruction(), request), 240);
+  EXPECT_GT(pixels_of(poles_3d, scene::palette::outer_pole_3d), 50u)
+      << "orange outer concave poles";
 
   request.stage = scene::Stage::delaunay;
-  const auto delaunay = testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
+  const auto delaunay =
+      testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
   EXPECT_GT(pixels_of(delaunay, scene::palette::delaunay_edge), 500u) << "blue Delaunay edges";
 
   request.stage = scene::Stage::surface;
-  const auto curve = testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
+  const auto curve =
+      testing::render_scene(scene::build_scene(testing::star_reconstruction(), request), 240);
   EXPECT_GT(pixels_of(curve, scene::palette::curve), 100u) << "the black curve";
-  const auto surface = testing::render_scene(scene::build_scene(testing::bumpy_reconstruction(), request), 240);
+  const auto surface =
+      testing::render_scene(scene::build_scene(testing::bumpy_reconstruction(), request), 240);
   EXPECT_GT(testing::non_background_pixels(surface), 240u * 240u / 10) << "a shaded surface";
 }
 

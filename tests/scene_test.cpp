@@ -1,8 +1,9 @@
 // The scene layer without GL: which layers each stage has, the propagation replay, the camera.
+#include "scene/scene.hpp"
+
 #include <gtest/gtest.h>
 
 #include "render/camera.hpp"
-#include "scene/scene.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt {
@@ -28,7 +29,8 @@ TEST(Scene, StagesHaveTheirLayers) {
       {scene::Stage::poles, {"polar-balls", "poles", "samples"}},
       {scene::Stage::seeds, {"other-poles", "inner-seeds", "outer-seeds", "samples"}},
       {scene::Stage::outer_concave, {"inner-poles", "outer-poles", "samples"}},
-      {scene::Stage::sculpted_delaunay, {"sculpted-delaunay", "inner-poles", "outer-poles", "samples"}},
+      {scene::Stage::sculpted_delaunay,
+       {"sculpted-delaunay", "inner-poles", "outer-poles", "samples"}},
       {scene::Stage::solid, {"solid", "samples"}},
       {scene::Stage::surface, {"curve", "samples"}},
   };
@@ -45,7 +47,8 @@ TEST(Scene, PropagationReplaysEventByEvent) {
   for (long step : {1L, 10L, 50L}) {
     request.step = step;
     const auto s = scene::build_scene(star(), request);
-    std::size_t labelled = find(s, "inner-poles")->positions.size() + find(s, "outer-poles")->positions.size();
+    std::size_t labelled =
+        find(s, "inner-poles")->positions.size() + find(s, "outer-poles")->positions.size();
     EXPECT_EQ(labelled, std::size_t(step));
     const auto& event = star().propagation.events[step - 1];
     const auto& pole = star().poles.poles[event.pole].center;
@@ -61,7 +64,8 @@ TEST(Scene, LayerSelectionAndErrors) {
   scene::Request request;
   request.stage = scene::Stage::poles;
   request.layers = {"poles"};
-  EXPECT_EQ(scene::layer_ids(scene::build_scene(star(), request)), std::vector<std::string>{"poles"});
+  EXPECT_EQ(scene::layer_ids(scene::build_scene(star(), request)),
+            std::vector<std::string>{"poles"});
   request.layers = {"nonsense"};
   EXPECT_THROW(scene::build_scene(star(), request), std::invalid_argument);
   request = {};

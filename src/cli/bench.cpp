@@ -1,11 +1,11 @@
 #include "bench.hpp"
 
-#include <chrono>
 #include <fmt/format.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -156,7 +156,9 @@ void bench_rendering(int triangles) {
     const double first = seconds(start);
     start = Clock::now();
     renderer.render(scene, camera, 1600, 1200);
-    return nlohmann::json{{"scene", build}, {"first", first}, {"second", seconds(start)},
+    return nlohmann::json{{"scene", build},
+                          {"first", first},
+                          {"second", seconds(start)},
                           {"renderer", renderer.gl_renderer()}};
   });
   if (measured.contains("error")) {

@@ -8,10 +8,10 @@
 #include <iostream>
 
 #include "bench.hpp"
+#include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_reader.hpp"
 #include "io/writers.hpp"
-#include "input.hpp"
 #include "render_command.hpp"
 #include "report.hpp"
 #include "shapes/shapes.hpp"
@@ -105,7 +105,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 }
 
 int run_reconstruct(const Reconstruct_arguments& args) {
-  const Input input = load_input(args.input, args.example, args.dimension);
+  const frontend::Input input = frontend::load_input(args.input, args.example, args.dimension);
   check_output_formats(args, input.dimension());
   Run_description run;
   run.input = input.description;

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <variant>
 
-#include "input.hpp"
+#include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
 #include "render/headless.hpp"
@@ -22,8 +22,8 @@ std::pair<int, int> parse_size(const std::string& size) {
   int width = 0, height = 0;
   char x = 0;
   std::istringstream in(size);
-  if (!(in >> width >> x >> height) || x != 'x' || width <= 0 || height <= 0 ||
-      width > 16384 || height > 16384) {
+  if (!(in >> width >> x >> height) || x != 'x' || width <= 0 || height <= 0 || width > 16384 ||
+      height > 16384) {
     throw io::Error("the size must be WIDTHxHEIGHT, e.g. 800x600: '" + size + "'");
   }
   return {width, height};
@@ -48,6 +48,9 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.stage = j.value("stage", shot.stage);
   shot.step = j.value("step", -1L);
   shot.focus_sample = j.value("focus_sample", -1);
+  shot.focus_pole = j.value("focus_pole", -1);
+  shot.box_factor = j.value("box_factor", 5.0);
+  shot.rule = j.value("rule", shot.rule);
   shot.layers = j.value("layers", std::vector<std::string>{});
   shot.camera_file = j.value("camera_file", "");
   shot.save_camera = j.value("save_camera", "");
@@ -70,11 +73,13 @@ class Shot_renderer {
     scene::Request request;
     if (!scene::parse_stage(shot.stage, request.stage)) {
       std::string stages;
-      for (auto s : scene::all_stages()) stages += std::string(stages.empty() ? "" : ", ") + scene::stage_id(s);
+      for (auto s : scene::all_stages())
+        stages += std::string(stages.empty() ? "" : ", ") + scene::stage_id(s);
       throw io::Error("no stage '" + shot.stage + "' (stages: " + stages + ")");
     }
     request.step = shot.step;
     request.focus_sample = shot.focus_sample;
+    request.focus_pole = shot.focus_pole;
     request.layers = shot.layers;
     request.wireframe = shot.wireframe;
     request.smooth = shot.smooth;
@@ -112,12 +117,17 @@ class Shot_renderer {
 
   const Any_reconstruction& reconstruction(const Shot& shot) {
     const std::string key = shot.input + "|" + shot.example + "|" + std::to_string(shot.bordered) +
-                            "|" + std::to_string(shot.dimension);
+                            "|" + std::to_string(shot.dimension) + "|" +
+                            std::to_string(shot.box_factor) + "|" + shot.rule;
     auto found = cache_.find(key);
     if (found != cache_.end()) return found->second;
-    const Input input = load_input(shot.input, shot.example, shot.dimension);
+    const frontend::Input input = frontend::load_input(shot.input, shot.example, shot.dimension);
     Options options;
     options.kind = shot.bordered ? Surface_kind::bordered : Surface_kind::closed;
+    options.box_factor = shot.box_factor;
+    options.rule = shot.rule == "skin"         ? Surface_rule::skin
+                   : shot.rule == "extraction" ? Surface_rule::extraction
+                                               : Surface_rule::automatic;
     Any_reconstruction result = std::visit(
         [&](const auto& points) -> Any_reconstruction { return reconstruct(points, options); },
         input.points);
@@ -137,13 +147,19 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   auto* input = render->add_option("input", shot.input, "Point file");
   auto* example = render->add_option("--example", shot.example, "A built-in example instead");
   input->excludes(example);
-  render->add_option("--stage", shot.stage,
-                     "samples, delaunay, voronoi, poles, seeds, propagation, outer-concave, "
-                     "sculpted-delaunay, solid, surface")
+  render
+      ->add_option("--stage", shot.stage,
+                   "samples, delaunay, voronoi, poles, seeds, propagation, outer-concave, "
+                   "sculpted-delaunay, solid, surface")
       ->capture_default_str();
   render->add_option("--step", shot.step, "Propagation: show the first K labelling events");
   render->add_option("--focus-sample", shot.focus_sample,
-                     "Show this sample's poles, polar balls and inscribed cubes");
+                     "Show this sample's Voronoi cell, poles, polar balls and inscribed cubes");
+  render->add_option("--focus-pole", shot.focus_pole,
+                     "Show this pole's polar ball and the pole that labelled it");
+  render->add_option("--box-factor", shot.box_factor, "Bounding box factor")->capture_default_str();
+  render->add_option("--rule", shot.rule, "Surface rule: auto, skin or extraction")
+      ->check(CLI::IsMember({"auto", "skin", "extraction"}));
   render->add_option("--layers", shot.layers, "Only these layers (comma separated)")
       ->delimiter(',');
   render->add_option("--camera", shot.camera_file, "Camera JSON (default: fit the samples)");

@@ -17,7 +17,9 @@ struct Shot {
   int dimension = 0;
   std::string stage = "surface";
   long step = -1;
-  int focus_sample = -1;
+  int focus_sample = -1, focus_pole = -1;
+  double box_factor = 5.0;
+  std::string rule = "auto";
   std::vector<std::string> layers;
   std::string camera_file, save_camera;
   std::string size = "800x800";

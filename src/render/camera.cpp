@@ -76,12 +76,9 @@ nlohmann::json to_json(const Camera& c) {
   if (c.dimension == 2) {
     return {{"dimension", 2}, {"center", {c.center.x, c.center.y}}, {"half_height", c.half_height}};
   }
-  return {{"dimension", 3},
-          {"target", {c.target.x, c.target.y, c.target.z}},
-          {"distance", c.distance},
-          {"yaw", c.yaw},
-          {"pitch", c.pitch},
-          {"fov_degrees", c.fov_degrees}};
+  return {{"dimension", 3},         {"target", {c.target.x, c.target.y, c.target.z}},
+          {"distance", c.distance}, {"yaw", c.yaw},
+          {"pitch", c.pitch},       {"fov_degrees", c.fov_degrees}};
 }
 
 Camera camera_from_json(const nlohmann::json& json) {

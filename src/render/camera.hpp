@@ -15,8 +15,8 @@ struct Camera {
   // 3D orbit
   glm::vec3 target{0.0f};
   float distance = 3.0f;
-  float yaw = 0.6f;    // radians around the vertical (y) axis
-  float pitch = 0.35f; // radians above the horizontal plane
+  float yaw = 0.6f;     // radians around the vertical (y) axis
+  float pitch = 0.35f;  // radians above the horizontal plane
   float fov_degrees = 35.0f;
   // 2D
   glm::vec2 center{0.0f};

@@ -14,14 +14,23 @@ namespace sculpt::render {
 
 struct Headless_renderer::Context {
   OSMesaContext context = nullptr;
-  std::vector<unsigned char> dummy = std::vector<unsigned char>(16 * 16 * 4);  // OSMesa's own buffer; we draw to FBOs
+  std::vector<unsigned char> dummy =
+      std::vector<unsigned char>(16 * 16 * 4);  // OSMesa's own buffer; we draw to FBOs
 
   Context() {
     // llvmpipe, whatever else Mesa finds: pictures must not depend on the machine.
     setenv("GALLIUM_DRIVER", "llvmpipe", 0);
-    const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24,
-                              OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION, 3, OSMESA_CONTEXT_MINOR_VERSION, 3, 0};
+    const int attributes[] = {OSMESA_FORMAT,
+                              OSMESA_RGBA,
+                              OSMESA_DEPTH_BITS,
+                              24,
+                              OSMESA_PROFILE,
+                              OSMESA_CORE_PROFILE,
+                              OSMESA_CONTEXT_MAJOR_VERSION,
+                              3,
+                              OSMESA_CONTEXT_MINOR_VERSION,
+                              3,
+                              0};
     context = OSMesaCreateContextAttribs(attributes, nullptr);
     if (!context) throw std::runtime_error("OSMesa cannot create an OpenGL 3.3 core context");
     if (!OSMesaMakeCurrent(context, dummy.data(), GL_UNSIGNED_BYTE, 16, 16)) {
@@ -41,10 +50,12 @@ class Framebuffer {
     glGenRenderbuffers(2, renderbuffers_);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, renderbuffers_[0]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                              renderbuffers_[0]);
     glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
     glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, renderbuffers_[1]);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                              renderbuffers_[1]);
     if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
       throw std::runtime_error("cannot make a " + std::to_string(width) + "x" +
                                std::to_string(height) + " offscreen framebuffer");
@@ -89,20 +100,10 @@ Image Headless_renderer::render(const scene::Scene& scene, const Camera& camera,
   glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved.id());
 
-  Image image;
-  image.width = width;
-  image.height = height;
-  image.rgba.resize(std::size_t(width) * height * 4);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  Image image = read_pixels(width, height);
   renderer_->set_scene({});
-  // GL's rows start at the bottom; images start at the top.
-  const std::size_t row = std::size_t(width) * 4;
-  for (int y = 0; y < height / 2; ++y) {
-    std::swap_ranges(image.rgba.begin() + y * row, image.rgba.begin() + (y + 1) * row,
-                     image.rgba.begin() + (height - 1 - y) * row);
-  }
-  if (glGetError() != GL_NO_ERROR) throw std::runtime_error("OpenGL reported an error while rendering");
+  if (glGetError() != GL_NO_ERROR)
+    throw std::runtime_error("OpenGL reported an error while rendering");
   return image;
 }
 

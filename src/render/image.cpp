@@ -45,7 +45,8 @@ Comparison compare(const Image& expected, const Image& actual, int tolerance) {
   for (std::size_t i = 0; i < expected.rgba.size(); i += 4) {
     int difference = 0;
     for (int c = 0; c < 4; ++c) {
-      difference = std::max(difference, std::abs(int(expected.rgba[i + c]) - int(actual.rgba[i + c])));
+      difference =
+          std::max(difference, std::abs(int(expected.rgba[i + c]) - int(actual.rgba[i + c])));
     }
     result.largest_difference = std::max(result.largest_difference, difference);
     std::uint8_t* out = &result.difference.rgba[i];
@@ -66,7 +67,8 @@ std::size_t count_pixels_near(const Image& image, float r, float g, float b, int
   std::size_t count = 0;
   for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
     bool near = true;
-    for (int c = 0; c < 3 && near; ++c) near = std::abs(int(image.rgba[i + c]) - target[c]) <= tolerance;
+    for (int c = 0; c < 3 && near; ++c)
+      near = std::abs(int(image.rgba[i + c]) - target[c]) <= tolerance;
     count += near;
   }
   return count;

@@ -16,12 +16,12 @@ struct Image {
 };
 
 void write_png(const std::string& path, const Image& image);  // throws std::runtime_error
-Image read_png(const std::string& path);                       // throws std::runtime_error
+Image read_png(const std::string& path);                      // throws std::runtime_error
 
 struct Comparison {
   double mismatch_ratio = 1.0;  // share of pixels whose channels differ by more than the tolerance
   int largest_difference = 255;
-  Image difference;             // mismatching pixels in red over a faded copy of the expected
+  Image difference;  // mismatching pixels in red over a faded copy of the expected
 };
 
 Comparison compare(const Image& expected, const Image& actual, int tolerance);

@@ -2,6 +2,7 @@
 
 #include <stb/stb_easy_font.h>
 
+#include <algorithm>
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
 
@@ -47,7 +48,9 @@ GLuint link(const char* vertex, const char* geometry, const char* fragment) {
   return program;
 }
 
-GLint uniform(GLuint program, const char* name) { return glGetUniformLocation(program, name); }
+GLint uniform(GLuint program, const char* name) {
+  return glGetUniformLocation(program, name);
+}
 
 void set_color(GLuint program, const scene::Color& c) {
   glUniform4f(uniform(program, "color"), c.r, c.g, c.b, c.a);
@@ -106,9 +109,11 @@ void Renderer::set_scene(const scene::Scene& scene) {
       glEnableVertexAttribArray(location);
       glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, 0, nullptr);
     };
-    attribute(0, gpu.buffers[0], layer.positions.data(), layer.positions.size() * sizeof(scene::Vec3), 3);
+    attribute(0, gpu.buffers[0], layer.positions.data(),
+              layer.positions.size() * sizeof(scene::Vec3), 3);
     if (gpu.has_normals) {
-      attribute(1, gpu.buffers[1], layer.normals.data(), layer.normals.size() * sizeof(scene::Vec3), 3);
+      attribute(1, gpu.buffers[1], layer.normals.data(), layer.normals.size() * sizeof(scene::Vec3),
+                3);
     } else {
       glVertexAttrib3f(1, 0, 0, 1);
     }
@@ -127,7 +132,7 @@ void Renderer::set_scene(const scene::Scene& scene) {
 }
 
 void Renderer::draw(const Camera& camera, int width, int height, const Draw_options& options) {
-  glViewport(0, 0, width, height);
+  glViewport(options.viewport_x, 0, width, height);
   const auto& bg = options.background;
   glClearColor(bg.r, bg.g, bg.b, bg.a);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -149,13 +154,39 @@ void Renderer::draw(const Camera& camera, int width, int height, const Draw_opti
   if (three) {
     for (auto primitive : order_3d) {
       for (std::size_t i = 0; i < layers_.size(); ++i) {
-        if (scene_.layers[i].primitive == primitive) draw_layer(layers_[i], scene_.layers[i], camera, width, height);
+        if (scene_.layers[i].primitive == primitive && !hidden(scene_.layers[i], options)) {
+          draw_layer(layers_[i], scene_.layers[i], camera, width, height);
+        }
       }
     }
   } else {
-    for (std::size_t i = 0; i < layers_.size(); ++i) draw_layer(layers_[i], scene_.layers[i], camera, width, height);
+    for (std::size_t i = 0; i < layers_.size(); ++i) {
+      if (!hidden(scene_.layers[i], options))
+        draw_layer(layers_[i], scene_.layers[i], camera, width, height);
+    }
   }
   draw_overlay(width, height, options);
+}
+
+bool Renderer::hidden(const scene::Layer& layer, const Draw_options& options) {
+  return std::find(options.hidden_layers.begin(), options.hidden_layers.end(), layer.id) !=
+         options.hidden_layers.end();
+}
+
+Image read_pixels(int width, int height) {
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.rgba.resize(std::size_t(width) * height * 4);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  // GL's rows start at the bottom; images start at the top.
+  const std::size_t row = std::size_t(width) * 4;
+  for (int y = 0; y < height / 2; ++y) {
+    std::swap_ranges(image.rgba.begin() + y * row, image.rgba.begin() + (y + 1) * row,
+                     image.rgba.begin() + (height - 1 - y) * row);
+  }
+  return image;
 }
 
 void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera,
@@ -170,7 +201,8 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
     case scene::Primitive::points: {
       const GLuint p = programs_->points;
       glUseProgram(p);
-      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE,
+                         glm::value_ptr(view_projection));
       glUniform1f(uniform(p, "point_size"), info.size);
       set_color(p, info.color);
       glDrawArrays(GL_POINTS, 0, layer.count);
@@ -179,7 +211,8 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
     case scene::Primitive::lines: {
       const GLuint p = programs_->lines;
       glUseProgram(p);
-      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE,
+                         glm::value_ptr(view_projection));
       glUniform2f(uniform(p, "viewport"), float(width), float(height));
       glUniform1f(uniform(p, "line_width"), info.size);
       set_color(p, info.color);
@@ -190,7 +223,8 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
       const GLuint p = programs_->mesh;
       glUseProgram(p);
       glUniformMatrix4fv(uniform(p, "view"), 1, GL_FALSE, glm::value_ptr(view));
-      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE, glm::value_ptr(view_projection));
+      glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE,
+                         glm::value_ptr(view_projection));
       glUniform1i(uniform(p, "lit"), info.lit);
       glUniform1i(uniform(p, "smooth_normals"), layer.has_normals);
       set_color(p, info.color);
@@ -240,13 +274,14 @@ void Renderer::draw_overlay(int width, int height, const Draw_options& options) 
     pieces.push_back(std::move(piece));
   };
   const auto box = [&](float x, float y, float w, float h, scene::Color color) {
-    pieces.push_back({color, {x, y, 0, x + w, y, 0, x + w, y + h, 0, x, y, 0, x + w, y + h, 0, x, y + h, 0}});
+    pieces.push_back(
+        {color, {x, y, 0, x + w, y, 0, x + w, y + h, 0, x, y, 0, x + w, y + h, 0, x, y + h, 0}});
   };
   const float line = 12 * scale, margin = 8 * scale;
   if (options.legend) {
     float y = margin;
     for (const auto& layer : scene_.layers) {
-      if (!layer.in_legend) continue;
+      if (!layer.in_legend || hidden(layer, options)) continue;
       scene::Color swatch = layer.color;
       swatch.a = 1;
       box(margin, y + 1 * scale, 8 * scale, 8 * scale, swatch);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "render/camera.hpp"
+#include "render/image.hpp"
 #include "scene/scene.hpp"
 
 namespace sculpt::render {
@@ -16,7 +17,12 @@ struct Draw_options {
   bool legend = true;  // colour swatches with the layers' labels, top left
   bool title = true;   // the stage's title, bottom left
   scene::Color background{1, 1, 1, 1};
+  std::vector<std::string> hidden_layers;  // layer ids not to draw (nor list in the legend)
+  int viewport_x = 0;  // left edge of the drawing area in the framebuffer (the viewer's panel)
 };
+
+// Reads the bound framebuffer's colour into an image (rows from the top).
+Image read_pixels(int width, int height);
 
 class Renderer {
  public:
@@ -41,6 +47,7 @@ class Renderer {
   void draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera, int width,
                   int height);
   void draw_overlay(int width, int height, const Draw_options& options);
+  static bool hidden(const scene::Layer& layer, const Draw_options& options);
 };
 
 }  // namespace sculpt::render

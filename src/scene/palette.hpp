@@ -26,6 +26,8 @@ inline constexpr Color wireframe{0.15f, 0.15f, 0.20f};
 inline constexpr Color curve{0.05f, 0.05f, 0.05f};
 inline constexpr Color background{1.0f, 1.0f, 1.0f};
 
-inline Color outer_pole(int dimension) { return dimension == 2 ? outer_pole_2d : outer_pole_3d; }
+inline Color outer_pole(int dimension) {
+  return dimension == 2 ? outer_pole_2d : outer_pole_3d;
+}
 
 }  // namespace sculpt::scene::palette

@@ -4,10 +4,9 @@
 #pragma once
 
 #include <array>
+#include <sculpt/sculpt.hpp>
 #include <string>
 #include <vector>
-
-#include <sculpt/sculpt.hpp>
 
 namespace sculpt::scene {
 
@@ -53,14 +52,15 @@ enum class Stage {
 };
 
 const std::vector<Stage>& all_stages();
-const char* stage_id(Stage stage);       // "delaunay", "outer-concave", ...
-const char* stage_title(Stage stage);    // "Delaunay triangulation DT(S ∪ BBV)", ...
+const char* stage_id(Stage stage);     // "delaunay", "outer-concave", ...
+const char* stage_title(Stage stage);  // "Delaunay triangulation DT(S ∪ BBV)", ...
 bool parse_stage(const std::string& id, Stage& stage);
 
 struct Request {
   Stage stage = Stage::surface;
-  long step = -1;         // propagation: how many labelling events have happened; -1 = all
-  int focus_sample = -1;  // show this sample's poles with their balls and inscribed cubes
+  long step = -1;          // propagation: how many labelling events have happened; -1 = all
+  int focus_sample = -1;   // show this sample's Voronoi cell, poles, polar balls, inscribed cubes
+  int focus_pole = -1;     // show this pole's ball and the pole that labelled it
   bool wireframe = false;  // surface: draw its edges too
   bool smooth = false;     // surface: smooth instead of flat shading
   std::vector<std::string> layers;  // only these layer ids; empty = the stage's own choice

@@ -59,8 +59,10 @@ class Scene_builder {
         break;
     }
     if (request_.focus_sample >= 0) focus(request_.focus_sample);
+    if (request_.focus_pole >= 0) focus_pole(request_.focus_pole);
     // Dense samples would cover a shaded surface or solid: there they are shown when asked for.
-    const bool shaded = D == 3 && (request_.stage == Stage::surface || request_.stage == Stage::solid);
+    const bool shaded =
+        D == 3 && (request_.stage == Stage::surface || request_.stage == Stage::solid);
     if (!shaded || requested("samples")) samples();
     scene_.layers.assign(std::make_move_iterator(layers_.begin()),
                          std::make_move_iterator(layers_.end()));
@@ -199,8 +201,8 @@ class Scene_builder {
 
   void propagation() {
     const auto& events = r_.propagation.events;
-    const std::size_t shown = request_.step < 0 ? events.size()
-                                                : std::min<std::size_t>(request_.step, events.size());
+    const std::size_t shown =
+        request_.step < 0 ? events.size() : std::min<std::size_t>(request_.step, events.size());
     std::vector<Label> labels(r_.poles.poles.size(), Label::unlabelled);
     for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
     labelled_poles(labels, /*only_inserted=*/false);
@@ -209,8 +211,8 @@ class Scene_builder {
     const Labelling_event& last = events[shown - 1];
     if (last.source >= 0) {
       const auto& source = r_.poles.poles[last.source];
-      Layer& ball = add("source-ball", "labelling polar ball", Primitive::balls,
-                        palette::focus_ball, 2.0f);
+      Layer& ball =
+          add("source-ball", "labelling polar ball", Primitive::balls, palette::focus_ball, 2.0f);
       ball.positions.push_back(vec(source.center));
       ball.radii.push_back(float(source.radius));
       if (last.reason == Label_reason::inscribed_cube) {
@@ -242,10 +244,51 @@ class Scene_builder {
     }
   }
 
+  // The Voronoi cell of a sample: the Voronoi edges dual to the Delaunay facets that contain it.
+  void voronoi_cell(int sample) {
+    if (r_.delaunay.cells.size() != r_.delaunay.cell_count) return;
+    std::vector<Cell<D>> incident;
+    for (const auto& cell : r_.delaunay.cells) {
+      if (std::find(cell.begin(), cell.end(), sample) != cell.end()) incident.push_back(cell);
+    }
+    Layer& layer = add("focus-cell", "the sample's Voronoi cell", Primitive::lines,
+                       palette::voronoi_edge, 2.5f);
+    for (const auto& [a, b] : cells_sharing_a_facet<D>(incident)) {
+      std::array<Point<D>, D + 1> corners_a, corners_b;
+      for (int i = 0; i <= D; ++i) {
+        corners_a[i] = r_.sites[incident[a][i]];
+        corners_b[i] = r_.sites[incident[b][i]];
+      }
+      layer.positions.push_back(vec(circumcenter<D>(corners_a)));
+      layer.positions.push_back(vec(circumcenter<D>(corners_b)));
+    }
+  }
+
+  void focus_pole(int pole) {
+    if (pole >= static_cast<int>(r_.poles.poles.size())) {
+      throw std::invalid_argument("no pole " + std::to_string(pole));
+    }
+    const auto& p = r_.poles.poles[pole];
+    Layer& ball =
+        add("picked-ball", "the pole's polar ball", Primitive::balls, palette::focus_ball, 2.0f);
+    ball.positions.push_back(vec(p.center));
+    ball.radii.push_back(float(p.radius));
+    for (const auto& event : r_.propagation.events) {
+      if (event.pole != pole || event.source < 0) continue;
+      Layer& source = add("picked-source", "the pole that labelled it", Primitive::points,
+                          palette::convex_pole, D == 2 ? 11 : 8);
+      source.positions.push_back(vec(r_.poles.poles[event.source].center));
+    }
+    Layer& picked = add("picked-pole", "picked pole", Primitive::points, palette::current_pole,
+                        D == 2 ? 12 : 9);
+    picked.positions.push_back(vec(p.center));
+  }
+
   void focus(int sample) {
     if (sample >= n_) throw std::invalid_argument("no sample " + std::to_string(sample));
-    Layer& balls = add("focus-balls", "the sample's polar balls", Primitive::balls,
-                       palette::focus_ball, 2.0f);
+    voronoi_cell(sample);
+    Layer& balls =
+        add("focus-balls", "the sample's polar balls", Primitive::balls, palette::focus_ball, 2.0f);
     Layer& cubes = add("focus-cubes", D == 2 ? "inscribed squares" : "inscribed cubes",
                        Primitive::lines, palette::inscribed_cube, 2.0f);
     Layer& poles = add("focus-poles", "the sample's poles", Primitive::points,
@@ -301,8 +344,8 @@ class Scene_builder {
         layer.positions.push_back(vec(r_.sites[edge[1]]));
       }
     } else {
-      Layer& layer = add("surface", "reconstructed surface", Primitive::triangles,
-                         palette::surface, 1.0f);
+      Layer& layer =
+          add("surface", "reconstructed surface", Primitive::triangles, palette::surface, 1.0f);
       layer.lit = true;
       for (const auto& t : r_.surface) {
         for (int v : t) layer.positions.push_back(vec(r_.sites[v]));

@@ -64,7 +64,8 @@ std::vector<std::pair<int, int>> cells_sharing_a_facet(const std::vector<Cell<D>
   std::sort(facets.begin(), facets.end());
   std::vector<std::pair<int, int>> pairs;
   for (std::size_t i = 0; i + 1 < facets.size(); ++i) {
-    if (facets[i].first == facets[i + 1].first) pairs.emplace_back(facets[i].second, facets[i + 1].second);
+    if (facets[i].first == facets[i + 1].first)
+      pairs.emplace_back(facets[i].second, facets[i + 1].second);
   }
   return pairs;
 }
@@ -89,10 +90,11 @@ inline std::vector<Vec3> vertex_normals(const std::vector<Point<3>>& sites,
   normals.reserve(triangles.size() * 3);
   for (const auto& t : triangles) {
     for (int s : t) {
-      const double length = std::sqrt(sum[s][0] * sum[s][0] + sum[s][1] * sum[s][1] +
-                                       sum[s][2] * sum[s][2]);
+      const double length =
+          std::sqrt(sum[s][0] * sum[s][0] + sum[s][1] * sum[s][1] + sum[s][2] * sum[s][2]);
       const double scale = length > 0 ? 1.0 / length : 0.0;
-      normals.push_back({float(sum[s][0] * scale), float(sum[s][1] * scale), float(sum[s][2] * scale)});
+      normals.push_back(
+          {float(sum[s][0] * scale), float(sum[s][1] * scale), float(sum[s][2] * scale)});
     }
   }
   return normals;

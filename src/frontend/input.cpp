@@ -1,4 +1,4 @@
-#include "input.hpp"
+#include "frontend/input.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,14 +6,14 @@
 #include "io/point_reader.hpp"
 #include "shapes/shapes.hpp"
 
-namespace sculpt::cli {
+namespace sculpt::frontend {
 
 Input load_input(const std::string& path, const std::string& example, int forced_dimension) {
   Input input;
   if (!example.empty()) {
     const auto& list = shapes::examples();
-    const auto found = std::find_if(list.begin(), list.end(),
-                                    [&](const auto& e) { return e.name == example; });
+    const auto found =
+        std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.name == example; });
     if (found == list.end()) {
       throw io::Error("no built-in example named '" + example + "' (see `sculpt examples`)");
     }
@@ -41,4 +41,4 @@ Input load_input(const std::string& path, const std::string& example, int forced
   return input;
 }
 
-}  // namespace sculpt::cli
+}  // namespace sculpt::frontend

@@ -1,14 +1,13 @@
-// Where the samples of a command come from: a point file or a built-in example, in the
-// dimension the file gives or the user forces.
+// Where the samples of a command or the viewer come from: a point file or a built-in example, in
+// the dimension the file gives or the user forces.
 #pragma once
 
+#include <sculpt/sculpt.hpp>
 #include <string>
 #include <variant>
 #include <vector>
 
-#include <sculpt/sculpt.hpp>
-
-namespace sculpt::cli {
+namespace sculpt::frontend {
 
 struct Input {
   std::string description;  // the file name or "example NAME", and what was done to it
@@ -21,4 +20,4 @@ struct Input {
 // Throws io::Error with a one-line message.
 Input load_input(const std::string& path, const std::string& example, int forced_dimension);
 
-}  // namespace sculpt::cli
+}  // namespace sculpt::frontend

@@ -1,0 +1,145 @@
+// sculpt-view: the workbench window. GLFW + Dear ImGui 1.86 + the shared OpenGL 3.3 renderer.
+// Our GL header first: it must be the first to include GL/gl.h (see render/gl.hpp).
+#include "render/gl.hpp"
+// clang-format off
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+// clang-format on
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <optional>
+
+#include "io/atomic_file.hpp"
+#include "render/image.hpp"
+#include "render/renderer.hpp"
+#include "script.hpp"
+#include "viewer.hpp"
+
+namespace {
+
+std::string glfw_error;
+
+void on_glfw_error(int code, const char* description) {
+  glfw_error = std::to_string(code) + ": " + description;
+}
+
+void on_drop(GLFWwindow* window, int count, const char** paths) {
+  auto* viewer = static_cast<sculpt::viewer::Viewer*>(glfwGetWindowUserPointer(window));
+  if (count > 0 && viewer && !viewer->busy()) viewer->open_file(paths[0]);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"sculpt-view: step through the sculpting reconstruction, in 2D and 3D"};
+  std::string file, example = "star", script_path, screenshot;
+  int frames = 0, width = 1280, height = 860;
+  bool bordered = false;
+  app.add_option("file", file, "Point file to open (default: the built-in example)");
+  app.add_option("--example", example, "Built-in example to open")->capture_default_str();
+  app.add_flag("--bordered", bordered, "Reconstruct a bordered surface");
+  app.add_option("--script", script_path, "Run the commands of a script file, then quit");
+  app.add_option("--frames", frames, "Draw this many frames, then quit");
+  app.add_option("--screenshot", screenshot,
+                 "With --frames: save the window to this PNG at the end");
+  app.add_option("--size", width, "Window width")->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  glfwSetErrorCallback(on_glfw_error);
+  if (!glfwInit()) {
+    std::cerr << "sculpt-view: no display to open a window on (" << glfw_error
+              << "). Render pictures headless instead, e.g.\n"
+                 "  sculpt render --example star --stage poles -o poles.png\n";
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  GLFWwindow* window = glfwCreateWindow(width, height, "Sculpt", nullptr, nullptr);
+  if (!window) {
+    std::cerr << "sculpt-view: cannot open an OpenGL 3.3 window (" << glfw_error
+              << "). Render pictures headless instead: sculpt render --help\n";
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  int status = 0;
+  {
+    sculpt::viewer::Viewer viewer(window);
+    glfwSetWindowUserPointer(window, &viewer);
+    glfwSetDropCallback(window, on_drop);
+
+    std::optional<sculpt::viewer::Script> script;
+    try {
+      if (!script_path.empty()) script = sculpt::viewer::Script::from_file(script_path);
+      if (frames > 0) {
+        script = sculpt::viewer::Script::from_text("wait\nframes " + std::to_string(frames) +
+                                                   "\nscreenshot " + screenshot + "\nquit\n");
+      }
+    } catch (const std::exception& e) {
+      std::cerr << "sculpt-view: " << e.what() << '\n';
+      return 1;
+    }
+    if (!file.empty()) {
+      viewer.set_bordered(bordered);
+      viewer.open_file(file);
+    } else {
+      viewer.open_example(example);
+    }
+
+    double last = glfwGetTime();
+    while (!glfwWindowShouldClose(window) && !viewer.wants_to_quit()) {
+      if (script || viewer.animating()) {
+        glfwPollEvents();
+      } else {
+        glfwWaitEventsTimeout(0.1);
+      }
+      std::string screenshot_now;
+      if (script) {
+        screenshot_now = script->before_frame(viewer);
+        if (script->finished() && screenshot_now.empty()) break;
+      }
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      int w = 0, h = 0;
+      glfwGetFramebufferSize(window, &w, &h);
+      const double now = glfwGetTime();
+      viewer.frame(w, h, now - last);
+      last = now;
+      ImGui::Render();
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      if (!screenshot_now.empty()) {
+        try {
+          sculpt::render::write_png(screenshot_now, sculpt::render::read_pixels(w, h));
+        } catch (const std::exception& e) {
+          std::cerr << "sculpt-view: " << e.what() << '\n';
+          status = 1;
+        }
+      }
+      glfwSwapBuffers(window);
+    }
+    if (script && script->failed()) status = 1;
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return status;
+}

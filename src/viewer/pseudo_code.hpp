@@ -1,0 +1,62 @@
+// The pole separation and sculpting as the paper's Fig. 5 pseudo-code, in the order our
+// implementation runs it, and which line a moment of the algorithm is at.
+#pragma once
+
+#include <vector>
+
+#include "scene/scene.hpp"
+
+namespace sculpt::viewer {
+
+inline const std::vector<const char*>& pseudo_code() {
+  static const std::vector<const char*> lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    p+(s) <- farthest vertex of Vor(s)",
+      "    p-(s) <- farthest v, (v-s).(p+ -s) < 0",
+      "OSP <- convex poles: outer",
+      "ISP <- poles paired with OSP: inner",
+      "queue <- OSP, ISP",
+      "while queue not empty:",
+      "    p <- pop(queue)",
+      "    for q in kd-range(cube in B(p)):",
+      "        label q like p",
+      "    for q paired with p:",
+      "        label q opposite p",
+      "OUP <- outer poles that are not convex",
+      "DT <- insert(DT, OUP)",
+      "solid <- cells whose vertices are all in S",
+      "surface <- facets solid | rest",
+  };
+  return lines;
+}
+
+// The line to highlight for a stage; in the propagation, the line of the latest event's reason.
+inline int current_line(scene::Stage stage, const Labelling_event* latest) {
+  switch (stage) {
+    case scene::Stage::samples:
+    case scene::Stage::delaunay:
+    case scene::Stage::voronoi:
+      return 0;
+    case scene::Stage::poles:
+      return 2;
+    case scene::Stage::seeds:
+      return 4;
+    case scene::Stage::propagation:
+      if (!latest) return 6;
+      if (latest->reason == Label_reason::convex_seed) return 4;
+      if (latest->reason == Label_reason::inscribed_cube) return 10;
+      return 12;
+    case scene::Stage::outer_concave:
+      return 13;
+    case scene::Stage::sculpted_delaunay:
+      return 14;
+    case scene::Stage::solid:
+      return 15;
+    case scene::Stage::surface:
+      return 16;
+  }
+  return 0;
+}
+
+}  // namespace sculpt::viewer

@@ -1,0 +1,58 @@
+// Runs a reconstruction off the UI thread: loading the input and every stage, with the stage
+// name and progress readable at any time and a cancel that takes effect at the next report.
+#pragma once
+
+#include <atomic>
+#include <mutex>
+#include <optional>
+#include <sculpt/sculpt.hpp>
+#include <string>
+#include <thread>
+#include <variant>
+
+namespace sculpt::viewer {
+
+using Any_reconstruction = std::variant<Reconstruction<2>, Reconstruction<3>>;
+
+struct Job_request {
+  std::string path, example;  // one of them
+  int dimension = 0;          // 0: as the file says
+  Options options;
+};
+
+class Reconstruction_job {
+ public:
+  ~Reconstruction_job();
+
+  void start(Job_request request);  // cancels and replaces a running job
+  // Asks the job to stop at its next progress report; returns at once (the UI stays live).
+  void request_cancel() { cancelled_ = true; }
+  bool running() const { return running_; }
+
+  struct Status {
+    std::string stage;
+    double fraction = 0;
+  };
+  Status status() const;
+
+  // Once the job has ended: its reconstruction and input description, or its error message.
+  struct Outcome {
+    std::optional<Any_reconstruction> reconstruction;
+    std::string description;
+    std::string error;  // empty on success; "cancelled" when cancelled
+  };
+  std::optional<Outcome> take_outcome();
+
+ private:
+  void run(Job_request request);
+  void cancel_and_join();
+
+  std::thread thread_;
+  std::atomic<bool> running_{false};
+  std::atomic<bool> cancelled_{false};
+  mutable std::mutex mutex_;
+  Status status_;
+  std::optional<Outcome> outcome_;
+};
+
+}  // namespace sculpt::viewer

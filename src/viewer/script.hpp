@@ -1,0 +1,41 @@
+// Scripted runs of the viewer, for tests and demonstrations: one command a line, run in order
+// between frames, e.g.
+//   example star        open a built-in example (open PATH for a file; bordered on|off before)
+//   wait                until the reconstruction has finished (and fail if it failed)
+//   wait-idle           until no reconstruction runs, whatever its outcome
+//   cancel              ask the running reconstruction to stop
+//   expect-busy         fail unless a reconstruction is running (the UI is not blocked)
+//   stage poles         show a stage (next / previous step through them)
+//   step 25             propagation: show the first 25 labelling events
+//   pick-sample 10      select a sample (pick-pole N: a pole)
+//   frames 3            draw three frames
+//   screenshot a.png    save the window, panels included
+//   export b.png 800x600  save a picture through the headless renderer
+//   quit
+#pragma once
+
+#include <deque>
+#include <string>
+
+#include "viewer.hpp"
+
+namespace sculpt::viewer {
+
+class Script {
+ public:
+  static Script from_file(const std::string& path);  // throws std::runtime_error
+  static Script from_text(const std::string& text);
+
+  // Runs commands until one needs frames to pass. Returns a screenshot path to save after this
+  // frame is drawn, if a command asked for one.
+  std::string before_frame(Viewer& viewer);
+  bool finished() const { return commands_.empty() && frames_to_wait_ == 0; }
+  bool failed() const { return failed_; }
+
+ private:
+  std::deque<std::string> commands_;
+  int frames_to_wait_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace sculpt::viewer

@@ -1,0 +1,132 @@
+// The viewer in a real window under Xvfb, driven by scripts: it steps through every stage of a
+// 2D and a 3D example, its pictures change from stage to stage with the panel present, it keeps
+// drawing while a 100k-point reconstruction runs, it saves pictures through the headless
+// renderer, and without a display it says how to render headless.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "file_support.hpp"
+#include "render/image.hpp"
+#include "scene/scene.hpp"
+#include "shapes/shapes.hpp"
+
+namespace sculpt {
+namespace {
+
+constexpr int panel_width = 360;  // the viewer's panel, on the left
+
+int run(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// Runs the viewer on a script in a virtual X display; returns its exit code.
+int run_viewer_script(const std::string& name, const std::string& script) {
+  if (run("command -v xvfb-run >/dev/null") != 0) {
+    ADD_FAILURE() << "xvfb-run is missing: install xvfb and xauth (scripts/install-dependencies)";
+    return -1;
+  }
+  const std::string path = testing::write_file(name + ".script", script);
+  const std::string log = testing::output_path(name + ".log");
+  const int code =
+      run("xvfb-run -a -s '-screen 0 1280x1024x24' " + std::string(SCULPT_VIEW_EXECUTABLE) +
+          " --script " + path + " >" + log + " 2>&1");
+  if (code != 0) std::cerr << testing::read_file(log);
+  return code;
+}
+
+std::size_t dark_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
+  std::size_t count = 0;
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const auto* p = image.pixel(x, y);
+      count += p[0] < 70 && p[1] < 70 && p[2] < 70;
+    }
+  }
+  return count;
+}
+
+std::size_t drawn_pixels(const render::Image& image) {
+  std::size_t count = 0;
+  for (int y = 30; y < image.height; ++y) {
+    for (int x = panel_width + 1; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      count += p[0] < 245 || p[1] < 245 || p[2] < 245;
+    }
+  }
+  return count;
+}
+
+TEST(Viewer, StepsThroughEveryStageIn2dAnd3d) {
+  std::string script;
+  std::vector<std::string> shots;
+  for (const std::string example : {"star", "bumpy"}) {
+    script += "example " + example + "\nwait\n";
+    for (scene::Stage stage : scene::all_stages()) {
+      const std::string shot =
+          testing::output_path("viewer-" + example + "-" + scene::stage_id(stage) + ".png");
+      script +=
+          std::string("stage ") + scene::stage_id(stage) + "\nframes 2\nscreenshot " + shot + "\n";
+      shots.push_back(shot);
+    }
+  }
+  script += "quit\n";
+  ASSERT_EQ(run_viewer_script("tour", script), 0);
+
+  std::optional<render::Image> previous;
+  for (const auto& shot : shots) {
+    SCOPED_TRACE(shot);
+    ASSERT_TRUE(std::filesystem::exists(shot));
+    const render::Image image = render::read_png(shot);
+    ASSERT_GT(image.width, panel_width + 100);
+    EXPECT_GT(drawn_pixels(image), 500u) << "the stage draws nothing";
+    // The panel: ImGui's dark window fills the left strip below the menu bar.
+    const std::size_t panel = std::size_t(panel_width - 20) * 200;
+    EXPECT_GT(dark_pixels(image, 10, 40, panel_width - 10, 240), panel / 2) << "no UI panel";
+    if (previous) {
+      EXPECT_GT(render::compare(*previous, image, 8).mismatch_ratio, 0.001)
+          << "same picture as the stage before";
+    }
+    previous = image;
+  }
+}
+
+TEST(Viewer, StaysResponsiveWhileAHundredThousandPointsReconstruct) {
+  std::string points;
+  for (const auto& p : shapes::torus(100000)) {
+    points += std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+  }
+  const std::string input = testing::write_file("torus-100k.xyz", points);
+  // Frames keep coming while the job runs; cancelling returns to an idle window.
+  EXPECT_EQ(run_viewer_script("responsive", "open " + input +
+                                                "\nframes 5\nexpect-busy\nframes 5\nexpect-busy\n"
+                                                "cancel\nwait-idle\nframes 2\nquit\n"),
+            0);
+}
+
+TEST(Viewer, SavesPicturesThroughTheHeadlessRenderer) {
+  const std::string picture = testing::output_path("viewer-export.png");
+  ASSERT_EQ(run_viewer_script("export",
+                              "example star\nwait\nstage poles\npick-sample 3\nframes 1\nexport " +
+                                  picture + " 400x300\nquit\n"),
+            0);
+  const render::Image image = render::read_png(picture);
+  EXPECT_EQ(image.width, 400);
+  EXPECT_EQ(image.height, 300);
+}
+
+TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {
+  const std::string log = testing::output_path("no-display.log");
+  const int code = run("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SCULPT_VIEW_EXECUTABLE) +
+                       " >" + log + " 2>&1");
+  EXPECT_EQ(code, 1);
+  EXPECT_NE(testing::read_file(log).find("sculpt render"), std::string::npos)
+      << testing::read_file(log);
+}
+
+}  // namespace
+}  // namespace sculpt
