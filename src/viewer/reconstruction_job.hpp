@@ -28,6 +28,11 @@ class Reconstruction_job {
   // Asks the job to stop at its next progress report; returns at once (the UI stays live).
   void request_cancel() { cancelled_ = true; }
   bool running() const { return running_; }
+  // Ended, with an outcome nobody has taken yet.
+  bool outcome_waiting() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return !running_ && outcome_.has_value();
+  }
 
   struct Status {
     std::string stage;

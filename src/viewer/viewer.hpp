@@ -34,7 +34,8 @@ class Viewer {
   void pick_pole(int pole);
   void reset_camera();
 
-  bool busy() const { return job_.running(); }
+  // A reconstruction runs, or has ended and its result is not shown yet.
+  bool busy() const { return job_.running() || job_.outcome_waiting(); }
   void cancel() { job_.request_cancel(); }
   const std::string& message() const { return message_; }
   bool has_reconstruction() const { return reconstruction_.has_value(); }
