@@ -25,6 +25,7 @@ TEST(Scene, StagesHaveTheirLayers) {
   const std::pair<scene::Stage, std::vector<std::string>> expected[] = {
       {scene::Stage::samples, {"samples"}},
       {scene::Stage::delaunay, {"delaunay", "samples"}},
+      {scene::Stage::hull, {"hull", "hull-edges", "samples"}},
       {scene::Stage::voronoi, {"voronoi", "samples"}},
       {scene::Stage::poles, {"polar-balls", "poles", "samples"}},
       {scene::Stage::seeds, {"other-poles", "inner-seeds", "outer-seeds", "samples"}},

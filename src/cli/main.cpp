@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "bench.hpp"
+#include "figures/figures.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_reader.hpp"
@@ -176,6 +177,18 @@ int main(int argc, char** argv) {
 
   auto* examples = app.add_subcommand("examples", "List the built-in examples");
 
+  sculpt::figures::Options figure_options;
+  auto* figures_command = app.add_subcommand(
+      "figures", "Regenerate the paper's figures and tables, headless, with a gallery page");
+  figures_command->add_option("--out", figure_options.out, "Folder of the images")
+      ->capture_default_str();
+  figures_command->add_option("--only", figure_options.only, "One figure, e.g. fig06");
+  figures_command->add_option("--size", figure_options.size, "Image size")->capture_default_str();
+  figures_command
+      ->add_option("--cgal-data", figure_options.cgal_archive,
+                   "CGAL's data archive (Debian's libcgal-demo)")
+      ->capture_default_str();
+
   Render_arguments render_args;
   add_render_command(app, render_args);
   auto* render = app.get_subcommand("render");
@@ -196,6 +209,7 @@ int main(int argc, char** argv) {
     if (examples->parsed()) return run_examples();
     if (bench->parsed()) return run_bench(bench_args);
     if (render->parsed()) return run_render(render_args);
+    if (figures_command->parsed()) return sculpt::figures::generate(figure_options) > 0 ? 0 : 1;
     if (args.input.empty() && args.example.empty()) {
       std::cerr << "sculpt: error: give an input file or --example NAME\n";
       return 2;

@@ -5,27 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "frontend/shots.hpp"
+
 namespace CLI {
 class App;
 }
 
 namespace sculpt::cli {
 
-struct Shot {
-  std::string input, example;
-  bool bordered = false;
-  int dimension = 0;
-  std::string stage = "surface";
-  long step = -1;
-  int focus_sample = -1, focus_pole = -1;
-  double box_factor = 5.0;
-  std::string rule = "auto";
-  std::vector<std::string> layers;
-  std::string camera_file, save_camera;
-  std::string size = "800x800";
-  bool wireframe = false, smooth = false, no_legend = false;
-  std::string output;
-};
+using frontend::Shot;
 
 struct Render_arguments {
   Shot shot;

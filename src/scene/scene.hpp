@@ -41,6 +41,7 @@ struct Layer {
 enum class Stage {
   samples,
   delaunay,           // DT(S ∪ BBV)
+  hull,               // its all-sample cells: the convex hull that the sculpting starts from
   voronoi,            // its dual
   poles,              // poles and polar balls
   seeds,              // convex poles (outer seeds) and their partners (inner seeds)
@@ -63,6 +64,7 @@ struct Request {
   int focus_pole = -1;     // show this pole's ball and the pole that labelled it
   bool wireframe = false;  // surface: draw its edges too
   bool smooth = false;     // surface: smooth instead of flat shading
+  int ball_every = 1;  // polar balls: draw those of every k-th pole only (legible medial circles)
   std::vector<std::string> layers;  // only these layer ids; empty = the stage's own choice
 };
 

@@ -29,6 +29,9 @@ class Scene_builder {
       case Stage::delaunay:
         edges_of(r_.delaunay, "delaunay", "Delaunay edges DT(S + BBV)", palette::delaunay_edge);
         break;
+      case Stage::hull:
+        hull();
+        break;
       case Stage::voronoi:
         voronoi_edges();
         break;
@@ -58,11 +61,12 @@ class Scene_builder {
         surface();
         break;
     }
+    if (request_.stage != Stage::poles && requested("polar-balls")) polar_balls();
     if (request_.focus_sample >= 0) focus(request_.focus_sample);
     if (request_.focus_pole >= 0) focus_pole(request_.focus_pole);
     // Dense samples would cover a shaded surface or solid: there they are shown when asked for.
-    const bool shaded =
-        D == 3 && (request_.stage == Stage::surface || request_.stage == Stage::solid);
+    const bool shaded = D == 3 && (request_.stage == Stage::surface ||
+                                   request_.stage == Stage::solid || request_.stage == Stage::hull);
     if (!shaded || requested("samples")) samples();
     scene_.layers.assign(std::make_move_iterator(layers_.begin()),
                          std::make_move_iterator(layers_.end()));
@@ -162,8 +166,10 @@ class Scene_builder {
   void polar_balls() {
     Layer& layer = add("polar-balls", D == 2 ? "polar circles" : "polar balls", Primitive::balls,
                        palette::polar_ball, 1.0f);
-    for (const auto& pole : r_.poles.poles) {
-      if (pole.convex) continue;  // their huge balls reach the box and hide everything
+    const int every = std::max(1, request_.ball_every);
+    for (std::size_t p = 0; p < r_.poles.poles.size(); ++p) {
+      const auto& pole = r_.poles.poles[p];
+      if (pole.convex || p % every != 0) continue;  // convex poles' huge balls hide everything
       layer.positions.push_back(vec(pole.center));
       layer.radii.push_back(float(pole.radius));
     }
@@ -301,6 +307,53 @@ class Scene_builder {
       inscribed_cube(p, cubes);
       poles.positions.push_back(vec(p.center));
     }
+  }
+
+  // The all-sample cells of DT(S ∪ BBV) fill the samples' convex hull: what the sculpting
+  // starts from before any pole is inserted (the paper's Fig. 1a and 2a).
+  void hull() {
+    require_cells(r_.delaunay);
+    std::vector<Cell<D>> cells;
+    for (const auto& cell : r_.delaunay.cells) {
+      if (std::all_of(cell.begin(), cell.end(), [&](int v) { return v < n_; }))
+        cells.push_back(cell);
+    }
+    if constexpr (D == 2) {
+      Layer& layer = add("hull", "convex hull (all-sample triangles)", Primitive::triangles,
+                         palette::solid, 1.0f);
+      for (const auto& cell : cells) {
+        for (int v : cell) layer.positions.push_back(vec(r_.sites[v]));
+      }
+      edges_of_cells(cells, "hull-edges", "their edges", palette::delaunay_edge);
+    } else {
+      // Its boundary: the facets of one all-sample cell only, facing out.
+      std::vector<std::pair<std::array<int, 3>, std::array<int, 3>>> facets;  // sorted, oriented
+      for (const auto& cell : cells) {
+        static constexpr int facet_vertex[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+        for (const auto& f : facet_vertex) {
+          std::array<int, 3> oriented{cell[f[0]], cell[f[1]], cell[f[2]]}, key = oriented;
+          std::sort(key.begin(), key.end());
+          facets.emplace_back(key, oriented);
+        }
+      }
+      std::sort(facets.begin(), facets.end());
+      Layer& layer = add("hull", "convex hull", Primitive::triangles, palette::surface, 1.0f);
+      layer.lit = true;
+      for (std::size_t i = 0; i < facets.size(); ++i) {
+        const bool shared = (i + 1 < facets.size() && facets[i + 1].first == facets[i].first) ||
+                            (i > 0 && facets[i - 1].first == facets[i].first);
+        if (shared) continue;
+        for (int v : facets[i].second) layer.positions.push_back(vec(r_.sites[v]));
+      }
+    }
+  }
+
+  void edges_of_cells(const std::vector<Cell<D>>& cells, const char* id, const std::string& label,
+                      Color color) {
+    Delaunay_stage<D> stage;
+    stage.cells = cells;
+    stage.cell_count = cells.size();
+    edges_of(stage, id, label, color);
   }
 
   void solid() {

@@ -5,9 +5,10 @@ namespace sculpt::scene {
 
 const std::vector<Stage>& all_stages() {
   static const std::vector<Stage> stages = {
-      Stage::samples, Stage::delaunay,    Stage::voronoi,       Stage::poles,
-      Stage::seeds,   Stage::propagation, Stage::outer_concave, Stage::sculpted_delaunay,
-      Stage::solid,   Stage::surface};
+      Stage::samples,     Stage::delaunay,      Stage::hull,
+      Stage::voronoi,     Stage::poles,         Stage::seeds,
+      Stage::propagation, Stage::outer_concave, Stage::sculpted_delaunay,
+      Stage::solid,       Stage::surface};
   return stages;
 }
 
@@ -17,6 +18,8 @@ const char* stage_id(Stage stage) {
       return "samples";
     case Stage::delaunay:
       return "delaunay";
+    case Stage::hull:
+      return "hull";
     case Stage::voronoi:
       return "voronoi";
     case Stage::poles:
@@ -40,25 +43,27 @@ const char* stage_id(Stage stage) {
 const char* stage_title(Stage stage) {
   switch (stage) {
     case Stage::samples:
-      return "1. Samples S";
+      return "Samples S";
     case Stage::delaunay:
-      return "2. Delaunay triangulation DT(S + BBV)";
+      return "Delaunay triangulation DT(S + BBV)";
+    case Stage::hull:
+      return "Convex hull: all-sample cells of DT(S + BBV)";
     case Stage::voronoi:
-      return "3. Voronoi diagram";
+      return "Voronoi diagram";
     case Stage::poles:
-      return "4. Poles and polar balls";
+      return "Poles and polar balls";
     case Stage::seeds:
-      return "5. Seeds: convex poles and their partners";
+      return "Seeds: convex poles and their partners";
     case Stage::propagation:
-      return "6. Pole separation";
+      return "Pole separation";
     case Stage::outer_concave:
-      return "7. Inner poles and outer concave poles";
+      return "Inner poles and outer concave poles";
     case Stage::sculpted_delaunay:
-      return "8. DT(S + OUP)";
+      return "DT(S + OUP)";
     case Stage::solid:
-      return "9. Sculpted solid";
+      return "Sculpted solid";
     case Stage::surface:
-      return "10. Reconstruction";
+      return "Reconstruction";
   }
   return "?";
 }

@@ -157,11 +157,123 @@ std::vector<Point<3>> saddle(int samples_per_side) {
   return points;
 }
 
+std::vector<Point<3>> monkey_saddle(int samples_per_side) {
+  auto points = saddle(samples_per_side);
+  for (auto& p : points) p[2] = 0.35 * (p[0] * p[0] * p[0] - 3 * p[0] * p[1] * p[1]);
+  return points;
+}
+
+std::vector<Point<3>> hemisphere(int samples) {
+  std::vector<Point<3>> points;
+  for (const auto& p : sphere(2 * samples)) {
+    if (p[2] >= 0) points.push_back(p);
+  }
+  return points;
+}
+
+std::vector<Point<3>> torus_knot_tube(int samples, unsigned seed) {
+  // The (2,3) torus knot c(t) on a torus of radii 1 and 0.45, with a tube of radius 0.16 around
+  // it; points are spread evenly in t and in the angle around the tube.
+  const auto knot = [](double t) {
+    const double r = 1.0 + 0.45 * std::cos(3 * t);
+    return std::array<double, 3>{r * std::cos(2 * t), r * std::sin(2 * t), 0.45 * std::sin(3 * t)};
+  };
+  std::mt19937_64 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Point<3>> points;
+  const double tube = 0.16, h = 1e-4;
+  for (int i = 0; i < samples; ++i) {
+    const double t = 2 * pi * (i + 0.5 * unit(random)) / samples;
+    const double angle = 2 * pi * unit(random);
+    const auto c = knot(t), ahead = knot(t + h);
+    std::array<double, 3> tangent{ahead[0] - c[0], ahead[1] - c[1], ahead[2] - c[2]};
+    const double tl =
+        std::sqrt(tangent[0] * tangent[0] + tangent[1] * tangent[1] + tangent[2] * tangent[2]);
+    for (double& x : tangent) x /= tl;
+    // A frame around the tangent: one normal from the z axis, the other by the cross product.
+    std::array<double, 3> n1{-tangent[1], tangent[0], 0.0};
+    const double nl = std::sqrt(n1[0] * n1[0] + n1[1] * n1[1]);
+    for (double& x : n1) x /= nl;
+    const std::array<double, 3> n2{tangent[1] * n1[2] - tangent[2] * n1[1],
+                                   tangent[2] * n1[0] - tangent[0] * n1[2],
+                                   tangent[0] * n1[1] - tangent[1] * n1[0]};
+    Point<3> p;
+    for (int k = 0; k < 3; ++k)
+      p[k] = c[k] + tube * (std::cos(angle) * n1[k] + std::sin(angle) * n2[k]);
+    points.push_back(p);
+  }
+  return points;
+}
+
+std::vector<Point<3>> three_holes(int samples, unsigned seed) {
+  // Three tori side by side, blended into one smooth solid with three holes: the smooth
+  // minimum of their distance functions. Samples of each torus that lie outside the others are
+  // projected onto the blended surface by a few Newton steps.
+  const double major = 1.0, minor = 0.35, spacing = 1.8, blend = 0.12;
+  const auto torus_distance = [&](const Point<3>& p, int which) {
+    const double x = p[0] - spacing * (which - 1);
+    return std::hypot(std::hypot(x, p[1]) - major, p[2]) - minor;
+  };
+  const auto distance = [&](const Point<3>& p) {
+    double sum = 0;
+    for (int which = 0; which < 3; ++which) sum += std::exp(-torus_distance(p, which) / blend);
+    return -blend * std::log(sum);
+  };
+  std::vector<Point<3>> points;
+  for (int which = 0; which < 3; ++which) {
+    for (auto p : torus(samples / 3 + samples / 10, major, minor, seed + which)) {
+      p[0] += spacing * (which - 1);
+      bool covered = false;
+      for (int other = 0; other < 3; ++other) {
+        covered = covered || (other != which && torus_distance(p, other) < 0.02);
+      }
+      if (covered) continue;
+      for (int step = 0; step < 6; ++step) {
+        const double d = distance(p), h = 1e-6;
+        Point<3> gradient;
+        for (int k = 0; k < 3; ++k) {
+          Point<3> q = p;
+          q[k] += h;
+          gradient[k] = (distance(q) - d) / h;
+        }
+        const double g2 =
+            gradient[0] * gradient[0] + gradient[1] * gradient[1] + gradient[2] * gradient[2];
+        for (int k = 0; k < 3; ++k) p[k] -= d * gradient[k] / g2;
+      }
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
+std::vector<Point<3>> torso(int samples) {
+  std::vector<Point<3>> points = sphere(samples);
+  for (auto& p : points) {
+    const double height = p[2];  // up the body, which stands along y
+    const double waist = 1.0 - 0.18 * std::exp(-std::pow((height + 0.1) / 0.35, 2));
+    const double shoulders =
+        1.0 + 0.35 * std::exp(-std::pow((height - 0.55) / 0.25, 2)) * p[0] * p[0];
+    const double depth = p[1];
+    p = {p[0] * 0.75 * waist * shoulders, height * 1.3, depth * 0.42 * waist};
+  }
+  return points;
+}
+
+std::vector<Point<3>> thinned_on_one_side(const std::vector<Point<3>>& points, int ratio) {
+  std::vector<Point<3>> kept;
+  int count = 0;
+  for (const auto& p : points) {
+    if (p[0] < 0 || count++ % ratio == 0) kept.push_back(p);
+  }
+  return kept;
+}
+
 const std::vector<Example>& examples() {
   static const std::vector<Example> list = {
       {"circle", 2, "64 samples on a circle", false},
       {"star", 2, "a five-armed star, 200 samples", false},
       {"blob", 2, "a smooth blob, 150 samples", false},
+      {"blob-dense", 2, "the same blob, 600 samples", false},
       {"nested", 2, "two nested circles (an annulus), 120 + 60 samples", false},
       {"nonuniform", 2, "an ellipse sampled 9:1 non-uniformly, 200 samples", false},
       {"arc", 2, "an open three-quarter circle, 60 samples (bordered)", true},
@@ -169,6 +281,12 @@ const std::vector<Example>& examples() {
       {"torus", 3, "4000 random samples on a torus (genus 1)", false},
       {"bumpy", 3, "a sphere with dents and bumps, 6000 samples", false},
       {"saddle", 3, "the saddle z = x^2 - y^2, 40 x 40 jittered samples (bordered)", true},
+      {"monkey-saddle", 3, "the monkey saddle z = x^3 - 3xy^2, 40 x 40 samples (bordered)", true},
+      {"hemisphere", 3, "half a sphere, 3000 samples (bordered)", true},
+      {"torso", 3, "a smooth torso-like blob, 8000 samples", false},
+      {"torus-knot", 3, "a tube around a (2,3) torus knot, 12000 samples", false},
+      {"three-holes", 3, "three overlapping tori: a solid with three holes, ~10000 samples", false},
+      {"bumpy-nonuniform", 3, "the bumpy sphere thinned 3:1 on its +x side", false},
   };
   return list;
 }
@@ -177,6 +295,7 @@ std::vector<Point<2>> example_points_2(const std::string& name) {
   if (name == "circle") return circle(64).samples;
   if (name == "star") return star(200).samples;
   if (name == "blob") return blob(150).samples;
+  if (name == "blob-dense") return blob(600).samples;
   if (name == "nested") return nested_circles(120, 60).samples;
   if (name == "nonuniform") return nonuniform_ellipse(200).samples;
   if (name == "arc") return open_arc(60).samples;
@@ -188,6 +307,12 @@ std::vector<Point<3>> example_points_3(const std::string& name) {
   if (name == "torus") return torus(4000);
   if (name == "bumpy") return bumpy_sphere(6000);
   if (name == "saddle") return saddle(40);
+  if (name == "monkey-saddle") return monkey_saddle(40);
+  if (name == "hemisphere") return hemisphere(3000);
+  if (name == "torso") return torso(8000);
+  if (name == "torus-knot") return torus_knot_tube(12000);
+  if (name == "three-holes") return three_holes(10000);
+  if (name == "bumpy-nonuniform") return thinned_on_one_side(bumpy_sphere(6000), 3);
   throw std::invalid_argument("no 3D example named '" + name + "'");
 }
 

@@ -33,6 +33,15 @@ std::vector<Point<3>> sphere(int samples);
 std::vector<Point<3>> torus(int samples, double major = 1.0, double minor = 0.4, unsigned seed = 1);
 std::vector<Point<3>> bumpy_sphere(int samples);     // a sphere with six dents and bumps
 std::vector<Point<3>> saddle(int samples_per_side);  // z = x^2 - y^2 over [-1, 1]^2, jittered
+std::vector<Point<3>> monkey_saddle(int samples_per_side);  // z = 0.35 (x^3 - 3 x y^2), jittered
+std::vector<Point<3>> hemisphere(int samples);  // the upper half of a sphere: one border
+std::vector<Point<3>> torus_knot_tube(int samples,
+                                      unsigned seed = 3);  // a tube around a (2,3) knot
+std::vector<Point<3>> three_holes(int samples,
+                                  unsigned seed = 5);  // three overlapping tori: genus 3
+std::vector<Point<3>> torso(int samples);              // a smooth torso-like blob with shoulders
+// Keeps every sample with x < 0 and one in `ratio` of the others: a non-uniform resampling.
+std::vector<Point<3>> thinned_on_one_side(const std::vector<Point<3>>& points, int ratio);
 
 // Built-in examples by name, for `sculpt reconstruct --example NAME` and the viewer.
 struct Example {

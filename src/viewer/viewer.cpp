@@ -15,9 +15,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "frontend/pseudo_code.hpp"
 #include "io/atomic_file.hpp"
 #include "picking.hpp"
-#include "pseudo_code.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt::viewer {
@@ -470,8 +470,8 @@ void Viewer::draw_propagation_controls() {
 
 void Viewer::draw_pseudo_code() {
   if (!ImGui::CollapsingHeader("Algorithm", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const int current = current_line(request_.stage, latest_event());
-  const auto& lines = pseudo_code();
+  const int current = frontend::current_line(request_.stage, latest_event());
+  const auto& lines = frontend::pseudo_code();
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "> %s", lines[i]);

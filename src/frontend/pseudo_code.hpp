@@ -6,7 +6,7 @@
 
 #include "scene/scene.hpp"
 
-namespace sculpt::viewer {
+namespace sculpt::frontend {
 
 inline const std::vector<const char*>& pseudo_code() {
   static const std::vector<const char*> lines = {
@@ -36,6 +36,7 @@ inline int current_line(scene::Stage stage, const Labelling_event* latest) {
   switch (stage) {
     case scene::Stage::samples:
     case scene::Stage::delaunay:
+    case scene::Stage::hull:
     case scene::Stage::voronoi:
       return 0;
     case scene::Stage::poles:
@@ -59,4 +60,4 @@ inline int current_line(scene::Stage stage, const Labelling_event* latest) {
   return 0;
 }
 
-}  // namespace sculpt::viewer
+}  // namespace sculpt::frontend

@@ -1,0 +1,74 @@
+// `sculpt figures`: the list covers every figure of the paper, each image is written, shows
+// something, and every layer it was drawn with has content; the tables and gallery are there.
+#include "figures/figures.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "file_support.hpp"
+#include "render/image.hpp"
+
+namespace sculpt {
+namespace {
+
+TEST(Figures, TheListCoversEveryFigureOfThePaper) {
+  std::set<std::string> ids;
+  for (const auto& figure : figures::paper_figures()) {
+    ids.insert(figure.id);
+    EXPECT_FALSE(figure.images.empty()) << figure.id;
+    EXPECT_EQ(figure.caption.rfind("Fig. ", 0), 0u) << figure.id;
+    EXPECT_FALSE(figure.data.empty()) << figure.id;
+  }
+  for (int n = 1; n <= 15; ++n) {
+    const std::string id = (n < 10 ? "fig0" : "fig") + std::to_string(n);
+    EXPECT_TRUE(ids.count(id)) << id << " is missing";
+  }
+}
+
+TEST(Figures, GeneratesEveryImageWithItsLayers) {
+  const std::string out = std::string(SCULPT_TEST_OUTPUT) + "/figures";
+  std::filesystem::remove_all(out);
+  const std::string command = std::string(SCULPT_EXECUTABLE) + " figures --size 240x240 --out " +
+                              out + " > " + out + ".log 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << testing::read_file(out + ".log");
+
+  const auto manifest = nlohmann::json::parse(testing::read_file(out + "/figures.json"));
+  std::size_t images = 0;
+  for (const auto& figure : manifest) {
+    for (const auto& image : figure["images"]) {
+      const std::string file = out + "/" + image["file"].get<std::string>();
+      SCOPED_TRACE(file);
+      ASSERT_TRUE(std::filesystem::exists(file));
+      const render::Image picture = render::read_png(file);
+      std::size_t drawn = 0;
+      for (std::size_t i = 0; i < picture.rgba.size(); i += 4) {
+        drawn += picture.rgba[i] < 240 || picture.rgba[i + 1] < 240 || picture.rgba[i + 2] < 240;
+      }
+      EXPECT_GT(drawn, picture.rgba.size() / 4 / 50) << "the image is (nearly) empty";
+      ASSERT_FALSE(image["layers"].empty());
+      for (const auto& [layer, count] : image["layers"].items()) {
+        if (layer == "unlabelled-poles") continue;  // empty once every pole has a label
+        EXPECT_GT(count.get<std::size_t>(), 0u) << "layer " << layer << " is empty";
+      }
+      ++images;
+    }
+  }
+  std::size_t listed = 0;
+  for (const auto& figure : figures::paper_figures()) listed += figure.images.size();
+  EXPECT_EQ(images, listed);
+  for (const char* name : {"README.md", "table1.md", "table2.md"}) {
+    EXPECT_GT(std::filesystem::file_size(out + "/" + name), 200u) << name;
+  }
+  const std::string gallery = testing::read_file(out + "/README.md");
+  EXPECT_NE(gallery.find("fig15b.png"), std::string::npos);
+  EXPECT_NE(gallery.find("label q like p"), std::string::npos) << "Fig. 5's pseudo-code";
+}
+
+}  // namespace
+}  // namespace sculpt
