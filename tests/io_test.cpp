@@ -182,15 +182,24 @@ TEST(Solid_writer, MeditVtuAndTetgen) {
 }
 
 TEST(Writers, AFailedWriteLeavesNoFile) {
+  // A folder of its own: other tests write (and briefly hold .partial files) in parallel.
+  const std::filesystem::path folder = std::string(SCULPT_TEST_OUTPUT) + "/atomic-writes";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
   const auto points = shapes::sphere(100);
   const auto result = reconstruct(points);
   EXPECT_THROW(io::write_surface("/nonexistent-folder/out.stl", points, result.surface, false),
                io::Error);
-  EXPECT_THROW(io::write_surface(output_path("out.xyz"), points, result.surface, false), io::Error);
-  EXPECT_FALSE(std::filesystem::exists(SCULPT_TEST_OUTPUT "/out.xyz"));
-  for (const auto& entry : std::filesystem::directory_iterator(SCULPT_TEST_OUTPUT)) {
-    EXPECT_EQ(entry.path().string().find(".partial-"), std::string::npos) << entry.path();
+  EXPECT_THROW(io::write_surface((folder / "out.xyz").string(), points, result.surface, false),
+               io::Error);
+  EXPECT_THROW(io::write_solid<3>((folder / "out.txt").string(), points, result.solid), io::Error);
+  io::write_surface((folder / "fine.off").string(), points, result.surface, false);
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    left.push_back(entry.path().filename().string());
   }
+  EXPECT_EQ(left, std::vector<std::string>{"fine.off"})
+      << "only the file written completely remains";
 }
 
 }  // namespace

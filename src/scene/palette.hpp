@@ -17,6 +17,8 @@ inline constexpr Color convex_pole{0.55f, 0.20f, 0.70f};
 inline constexpr Color unlabelled_pole{0.60f, 0.60f, 0.60f};
 inline constexpr Color box_corner{0.10f, 0.10f, 0.10f};
 inline constexpr Color polar_ball{0.15f, 0.15f, 0.15f, 0.55f};
+// Translucent spheres in 3D, legible a few at a time (a stride, or a picked sample).
+inline constexpr Color polar_ball_3d{0.45f, 0.55f, 0.85f, 0.8f};
 inline constexpr Color focus_ball{0.95f, 0.35f, 0.55f, 0.9f};
 inline constexpr Color inscribed_cube{0.85f, 0.20f, 0.45f};
 inline constexpr Color current_pole{1.00f, 0.85f, 0.00f};

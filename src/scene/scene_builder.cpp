@@ -165,7 +165,8 @@ class Scene_builder {
 
   void polar_balls() {
     Layer& layer = add("polar-balls", D == 2 ? "polar circles" : "polar balls", Primitive::balls,
-                       palette::polar_ball, 1.0f);
+                       D == 2 ? palette::polar_ball : palette::polar_ball_3d, 1.0f);
+    layer.translucent = D == 3;  // outlines of overlapping spheres are unreadable in 3D
     const int every = std::max(1, request_.ball_every);
     for (std::size_t p = 0; p < r_.poles.poles.size(); ++p) {
       const auto& pole = r_.poles.poles[p];
