@@ -94,6 +94,20 @@ TEST(Cli, BadInputGivesOneLineAndNoOutput) {
   }
 }
 
+TEST(Cli, MergeDuplicatesOnRequest) {
+  const auto input =
+      write_file("scan-with-repeats.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0\n1 1 1\n");
+  const auto output = output_path("scan-with-repeats.off");
+  const Command_result refused = run_sculpt("reconstruct " + input + " -o " + output);
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("--merge-duplicates"), std::string::npos) << refused.err;
+  const Command_result merged =
+      run_sculpt("reconstruct " + input + " --merge-duplicates -o " + output);
+  ASSERT_EQ(merged.exit_code, 0) << merged.err;
+  EXPECT_NE(merged.out.find("1 duplicate points merged"), std::string::npos) << merged.out;
+  EXPECT_NE(read_file(output).find("\n5 "), std::string::npos) << "five distinct vertices";
+}
+
 TEST(Cli, UnknownOutputFormatFailsBeforeWork) {
   const Command_result run =
       run_sculpt("reconstruct --example sphere -o " + output_path("sphere.xyz"));

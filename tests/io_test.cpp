@@ -30,6 +30,23 @@ TEST(Point_reader, TextWithPrefixesCommentsAndExtraColumns) {
   EXPECT_EQ(set.points[1], (Point<3>{4, 5, 6}));
 }
 
+TEST(Point_reader, OnlyPointRecordsArePoints) {
+  // Hoppe's scans carry scanner records (d, s, g) among the `p` points; OBJ-like files `vn`.
+  const auto set = io::read_points(write_file("records.pts",
+                                              "# scan\nd 0 0 0\ns 0 0 0\ng 1 0 0\n"
+                                              "p 1 2 3\nvn 0 0 1\nv 4 5 6\np 7 8 9\n"));
+  ASSERT_EQ(set.points.size(), 3u);
+  EXPECT_EQ(set.points[0], (Point<3>{1, 2, 3}));
+  EXPECT_EQ(set.points[1], (Point<3>{4, 5, 6}));
+}
+
+TEST(Point_reader, MergeDuplicatesKeepsFirstOccurrences) {
+  auto set =
+      io::read_points(write_file("repeated.xyz", "0 0 0\n1 0 0\n0 0 0\n0 1 0\n1 0 0\n0 0 1\n"));
+  EXPECT_EQ(io::merge_duplicates(set), 2u);
+  EXPECT_EQ(set.points, (std::vector<Point<3>>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}));
+}
+
 TEST(Point_reader, CountHeaderAndTwoColumns) {
   const auto set = io::read_points(write_file("counted.xy", "3\n0 0\n1 0\n0 1\n"));
   EXPECT_EQ(set.dimension, 2);

@@ -25,7 +25,7 @@ struct Reconstruct_arguments {
   int dimension = 0;  // 0: as the input says
   int seed_sample = -1;
   double box_factor = 5.0;
-  bool bordered = false, ascii = false, quiet = false;
+  bool bordered = false, ascii = false, quiet = false, merge_duplicates = false;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -106,7 +106,8 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 }
 
 int run_reconstruct(const Reconstruct_arguments& args) {
-  const frontend::Input input = frontend::load_input(args.input, args.example, args.dimension);
+  const frontend::Input input =
+      frontend::load_input(args.input, args.example, args.dimension, args.merge_duplicates);
   check_output_formats(args, input.dimension());
   Run_description run;
   run.input = input.description;
@@ -172,6 +173,9 @@ int main(int argc, char** argv) {
                    "Force 2 or 3 dimensions (2 drops a constant coordinate)")
       ->check(CLI::IsMember({2, 3}));
   reconstruct->add_flag("--ascii", args.ascii, "Write .stl and .ply as text");
+  reconstruct->add_flag("--merge-duplicates", args.merge_duplicates,
+                        "Remove repeated points instead of refusing them (output vertices are "
+                        "then the distinct samples, in input order)");
   reconstruct->add_option("--stats", args.stats, "Write the statistics as JSON");
   reconstruct->add_flag("-q,--quiet", args.quiet, "Print nothing but errors");
 
@@ -218,7 +222,10 @@ int main(int argc, char** argv) {
   } catch (const sculpt::io::Error& e) {
     std::cerr << "sculpt: error: " << e.what() << '\n';
   } catch (const sculpt::Input_error& e) {
-    std::cerr << "sculpt: error: " << e.what() << '\n';
+    const std::string message = e.what();
+    const bool duplicates = message.find(" duplicates point ") != std::string::npos;
+    std::cerr << "sculpt: error: " << message
+              << (duplicates ? " (--merge-duplicates removes repeated points)" : "") << '\n';
   } catch (const std::bad_alloc&) {
     std::cerr << "sculpt: error: out of memory\n";
   } catch (const std::exception& e) {

@@ -8,7 +8,8 @@
 
 namespace sculpt::frontend {
 
-Input load_input(const std::string& path, const std::string& example, int forced_dimension) {
+Input load_input(const std::string& path, const std::string& example, int forced_dimension,
+                 bool merge_duplicates) {
   Input input;
   if (!example.empty()) {
     const auto& list = shapes::examples();
@@ -26,8 +27,13 @@ Input load_input(const std::string& path, const std::string& example, int forced
     return input;
   }
   const auto start = std::chrono::steady_clock::now();
-  const io::Point_set set = io::read_points(path);
+  io::Point_set set = io::read_points(path);
   input.description = path;
+  if (merge_duplicates) {
+    const std::size_t merged = io::merge_duplicates(set);
+    if (merged > 0)
+      input.description += " (" + std::to_string(merged) + " duplicate points merged)";
+  }
   const int dimension = forced_dimension ? forced_dimension : set.dimension;
   if (dimension == 2) {
     std::string dropped;

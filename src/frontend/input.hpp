@@ -18,6 +18,8 @@ struct Input {
 };
 
 // Throws io::Error with a one-line message.
-Input load_input(const std::string& path, const std::string& example, int forced_dimension);
+// With merge_duplicates, repeated points of a file are removed (first occurrences kept, in order).
+Input load_input(const std::string& path, const std::string& example, int forced_dimension,
+                 bool merge_duplicates = false);
 
 }  // namespace sculpt::frontend

@@ -36,7 +36,8 @@ bool looks_binary(const std::string& content) {
   });
 }
 
-// One line of a text point file, split into numbers; a leading word (`p`, `v`) is skipped.
+// One line of a text point file, split into numbers; a leading `p` or `v` is skipped, and a
+// line led by another word is not a point (no numbers).
 struct Text_line {
   std::vector<double> numbers;
   bool integer_only = false;  // a single integer: a count header if it comes first
@@ -55,7 +56,12 @@ Text_line parse_text_line(std::string line, const std::string& where) {
     const bool leading_word = first && std::isalpha(static_cast<unsigned char>(word[0])) &&
                               word != "nan" && word != "inf" && word != "NaN" && word != "Inf";
     first = false;
-    if (leading_word) continue;
+    if (leading_word) {
+      // `p x y z` (Hoppe's .pts) and `v x y z` (OBJ-like) are points; other records, such as
+      // a scanner's `d`, `s` and `g` lines or `vn` normals, are not.
+      if (word != "p" && word != "v" && word != "P" && word != "V") return {};
+      continue;
+    }
     char* end = nullptr;
     const double value = std::strtod(word.c_str(), &end);
     if (end == word.c_str() || *end != '\0') {
@@ -208,6 +214,25 @@ std::vector<Point<2>> planar_points(const Point_set& set, std::string* dropped) 
     points.push_back(q);
   }
   return points;
+}
+
+std::size_t merge_duplicates(Point_set& set) {
+  std::vector<std::size_t> order(set.points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return set.points[a] < set.points[b]; });
+  std::vector<bool> repeated(set.points.size(), false);
+  for (std::size_t k = 1; k < order.size(); ++k) {
+    repeated[order[k]] = set.points[order[k]] == set.points[order[k - 1]];
+  }
+  std::vector<Point<3>> kept;
+  kept.reserve(set.points.size());
+  for (std::size_t i = 0; i < set.points.size(); ++i) {
+    if (!repeated[i]) kept.push_back(set.points[i]);
+  }
+  const std::size_t merged = set.points.size() - kept.size();
+  set.points = std::move(kept);
+  return merged;
 }
 
 std::vector<Point<3>> spatial_points(const Point_set& set) {

@@ -26,6 +26,10 @@ std::vector<Point<2>> planar_points(const Point_set& set, std::string* dropped =
 
 std::vector<Point<3>> spatial_points(const Point_set& set);
 
+// Removes repeated points (exact copies), keeping each first occurrence in order; returns how
+// many were removed. Scans often hold a few; reconstruction refuses them otherwise.
+std::size_t merge_duplicates(Point_set& set);
+
 // The extension of a path in lower case, with its dot ("" if none).
 std::string extension_of(const std::string& path);
 
