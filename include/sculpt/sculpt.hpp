@@ -83,6 +83,12 @@ class Input_error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Two samples at the same place (scans often repeat a few points).
+class Duplicate_points : public Input_error {
+ public:
+  using Input_error::Input_error;
+};
+
 // Thrown when Options::progress returned false.
 class Cancelled : public std::runtime_error {
  public:

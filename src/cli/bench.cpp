@@ -9,6 +9,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_reader.hpp"
 #include "render/headless.hpp"
@@ -180,26 +181,19 @@ int run_bench(const Bench_arguments& args) {
     std::cerr << "sculpt bench: " << row["input"].get<std::string>() << " done\n";
     rows.push_back(std::move(row));
   };
-  for (const auto& path : args.inputs) {
-    const auto set = io::read_points(path);
-    const std::string name = path.substr(path.find_last_of('/') + 1);
-    if (set.dimension == 2) {
-      add(measure<2>(name, io::planar_points(set), args.bordered));
-    } else {
-      add(measure<3>(name, set.points, args.bordered));
-    }
-  }
-  for (const auto& example : args.examples) {
-    const auto& list = shapes::examples();
-    const auto found =
-        std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.name == example; });
-    if (found == list.end()) throw io::Error("no built-in example named '" + example + "'");
-    if (found->dimension == 2) {
-      add(measure<2>(example, shapes::example_points_2(example), found->bordered));
-    } else {
-      add(measure<3>(example, shapes::example_points_3(example), found->bordered));
-    }
-  }
+  const auto measure_input = [&](const std::string& path, const std::string& example) {
+    const frontend::Input input = frontend::load_input(path, example, 0);
+    const std::string name = example.empty() ? path.substr(path.find_last_of('/') + 1) : example;
+    const bool bordered = example.empty() ? args.bordered : shapes::find_example(example)->bordered;
+    std::visit(
+        [&](const auto& points) {
+          constexpr int D = std::tuple_size_v<typename std::decay_t<decltype(points)>::value_type>;
+          add(measure<D>(name, points, bordered));
+        },
+        input.points);
+  };
+  for (const auto& path : args.inputs) measure_input(path, "");
+  for (const auto& example : args.examples) measure_input("", example);
   if (args.torus_points > 0) {
     add(measure<3>(fmt::format("torus {}", args.torus_points), shapes::torus(args.torus_points),
                    false));

@@ -47,17 +47,13 @@ std::function<bool(const Progress&)> progress_printer(std::size_t samples, bool 
 // Fails before any work is done if an output's extension is not one Sculpt can write.
 void check_output_formats(const Reconstruct_arguments& args, int dimension) {
   const std::string surface = io::extension_of(args.output);
-  const bool surface_ok = dimension == 3 ? (surface == ".stl" || surface == ".ply" ||
-                                            surface == ".off" || surface == ".obj")
-                                         : (surface == ".obj" || surface == ".svg");
-  if (!surface_ok) {
+  if (!(dimension == 3 ? io::writes_surface(surface) : io::writes_curve(surface))) {
     throw io::Error(fmt::format("cannot write a {} as '{}' (known: {})",
                                 dimension == 3 ? "surface" : "curve", args.output,
                                 dimension == 3 ? io::surface_formats : io::curve_formats));
   }
   if (!args.solid.empty()) {
-    const std::string solid = io::extension_of(args.solid);
-    if (solid != ".mesh" && solid != ".vtu" && solid != ".node" && solid != ".ele") {
+    if (!io::writes_solid(io::extension_of(args.solid))) {
       throw io::Error(
           fmt::format("cannot write a solid as '{}' (known: {})", args.solid, io::solid_formats));
     }
@@ -221,11 +217,10 @@ int main(int argc, char** argv) {
     return run_reconstruct(args);
   } catch (const sculpt::io::Error& e) {
     std::cerr << "sculpt: error: " << e.what() << '\n';
+  } catch (const sculpt::Duplicate_points& e) {
+    std::cerr << "sculpt: error: " << e.what() << " (--merge-duplicates removes repeated points)\n";
   } catch (const sculpt::Input_error& e) {
-    const std::string message = e.what();
-    const bool duplicates = message.find(" duplicates point ") != std::string::npos;
-    std::cerr << "sculpt: error: " << message
-              << (duplicates ? " (--merge-duplicates removes repeated points)" : "") << '\n';
+    std::cerr << "sculpt: error: " << e.what() << '\n';
   } catch (const std::bad_alloc&) {
     std::cerr << "sculpt: error: out of memory\n";
   } catch (const std::exception& e) {

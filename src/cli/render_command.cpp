@@ -1,16 +1,10 @@
 #include "render_command.hpp"
 
 #include <CLI/CLI.hpp>
-#include <fstream>
 #include <iostream>
-#include <map>
-#include <memory>
 #include <nlohmann/json.hpp>
-#include <variant>
 
-#include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
-#include "render/headless.hpp"
 
 namespace sculpt::cli {
 void add_render_command(CLI::App& app, Render_arguments& args) {

@@ -76,8 +76,9 @@ void check_input(const std::vector<Point<Traits::dimension>>& samples, const Opt
   });
   for (std::size_t k = 1; k < order.size(); ++k) {
     if (samples[order[k]] == samples[order[k - 1]]) {
-      throw Input_error("point " + std::to_string(order[k]) + " duplicates point " +
-                        std::to_string(order[k - 1]) + " " + describe_point<D>(samples[order[k]]));
+      throw Duplicate_points("point " + std::to_string(order[k]) + " duplicates point " +
+                             std::to_string(order[k - 1]) + " " +
+                             describe_point<D>(samples[order[k]]));
     }
   }
 

@@ -27,6 +27,9 @@ void find_poles(const typename Traits::Triangulation& triangulation,
     return CGAL::squared_distance(center, cell->vertex(0)->point());
   };
 
+  // Circumcentres are computed again in each pass rather than stored: storing them for every cell
+  // would take 24 bytes a cell (475 MB for the 19.8M cells of a 1M-point torus) to save ~2 s.
+
   // Pass 1: p+ of every sample.
   std::vector<double> plus_radius2(n, -1.0);
   std::vector<typename Traits::Cell_handle> plus_cell(n);

@@ -11,6 +11,8 @@
 
 #include <sculpt/sculpt.hpp>
 
+#include "../core/facet_orientation.hpp"
+
 namespace sculpt {
 
 struct Traits_2 {
@@ -33,10 +35,9 @@ struct Traits_2 {
   static auto all_cells(const Triangulation& t) { return t.all_face_handles(); }
   static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) { return t.dual(c); }
 
-  // Vertex j of the edge opposite vertex i, ordered so that the face lies on the edge's left:
-  // CGAL's faces are counterclockwise, so a closed curve comes out counterclockwise around the
-  // region it bounds, with its normals (the edge direction turned clockwise) pointing outward.
-  static constexpr int facet_vertex[3][2] = {{1, 2}, {2, 0}, {0, 1}};
+  // Vertex j of the edge opposite vertex i, with the face on its left: a closed curve comes out
+  // counterclockwise around the region it bounds, its normals pointing outward.
+  static constexpr const auto& facet_vertex = Facet_orientation<2>::vertex;
 };
 
 }  // namespace sculpt

@@ -10,6 +10,8 @@
 
 #include <sculpt/sculpt.hpp>
 
+#include "../core/facet_orientation.hpp"
+
 namespace sculpt {
 
 struct Traits_3 {
@@ -34,10 +36,8 @@ struct Traits_3 {
   static auto all_cells(const Triangulation& t) { return t.all_cell_handles(); }
   static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) { return t.dual(c); }
 
-  // Vertex j of the facet opposite vertex i, ordered so that the facet's normal points away
-  // from vertex i. CGAL's finite cells are positively oriented, and (a, b, c, i) is an odd
-  // permutation of (0, 1, 2, 3) for each row.
-  static constexpr int facet_vertex[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+  // Vertex j of the facet opposite vertex i, facing away from vertex i.
+  static constexpr const auto& facet_vertex = Facet_orientation<3>::vertex;
 };
 
 }  // namespace sculpt

@@ -301,12 +301,10 @@ std::string table_2(
   for (const auto& [name, any] : models) {
     std::visit(
         [&](const auto& r) {
+          constexpr int D = std::decay_t<decltype(r)>::dimension;
           const auto& s = r.stats;
-          if (r.options.kind != Surface_kind::closed) return;
-          // Both dimensions: the yardstick is the DT of the samples of the same dimension.
-          const std::vector<Point<std::decay_t<decltype(r)>::dimension>> samples(
-              r.sites.begin(), r.sites.begin() + r.sample_count());
-          if (s.dimension != 3) return;
+          if (D != 3 || r.options.kind != Surface_kind::closed) return;
+          const std::vector<Point<D>> samples(r.sites.begin(), r.sites.begin() + r.sample_count());
           const double dt = delaunay_seconds(samples);
           const bool closed =
               s.boundary_ridges == 0 && s.non_manifold_ridges == 0 && s.non_manifold_vertices == 0;

@@ -12,10 +12,8 @@ Input load_input(const std::string& path, const std::string& example, int forced
                  bool merge_duplicates) {
   Input input;
   if (!example.empty()) {
-    const auto& list = shapes::examples();
-    const auto found =
-        std::find_if(list.begin(), list.end(), [&](const auto& e) { return e.name == example; });
-    if (found == list.end()) {
+    const shapes::Example* found = shapes::find_example(example);
+    if (!found) {
       throw io::Error("no built-in example named '" + example + "' (see `sculpt examples`)");
     }
     input.description = "example " + found->name;

@@ -12,6 +12,10 @@ namespace sculpt::io {
 
 const char* const curve_formats = ".obj .svg";
 
+bool writes_curve(const std::string& extension) {
+  return extension == ".obj" || extension == ".svg";
+}
+
 namespace {
 
 // Polylines through the oriented edges; closed ones repeat their first sample at the end.
@@ -95,7 +99,7 @@ void write_svg(std::ostream& out, const std::vector<Point<2>>& samples,
 void write_curve(const std::string& path, const std::vector<Point<2>>& samples,
                  const std::vector<Facet<2>>& edges) {
   const std::string extension = extension_of(path);
-  if (extension != ".obj" && extension != ".svg") {
+  if (!writes_curve(extension)) {
     throw Error("cannot write a curve as '" + extension + "' (known: " + curve_formats + ")");
   }
   const auto lines = chain(samples.size(), edges);

@@ -9,6 +9,10 @@ namespace sculpt::io {
 
 const char* const solid_formats = ".mesh .vtu .node/.ele";
 
+bool writes_solid(const std::string& extension) {
+  return extension == ".mesh" || extension == ".vtu" || extension == ".node" || extension == ".ele";
+}
+
 namespace {
 
 template <int D>
@@ -81,7 +85,7 @@ void write_solid(const std::string& path, const std::vector<Point<D>>& samples,
     write_tetgen<D>(path.substr(0, path.size() - extension.size()), samples, cells);
     return;
   }
-  if (extension != ".mesh" && extension != ".vtu") {
+  if (!writes_solid(extension)) {
     throw Error("cannot write a solid as '" + extension + "' (known: " + solid_formats + ")");
   }
   Atomic_file file(path, false);

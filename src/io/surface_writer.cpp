@@ -13,12 +13,16 @@ namespace sculpt::io {
 
 const char* const surface_formats = ".stl .ply .off .obj";
 
+bool writes_surface(const std::string& extension) {
+  return extension == ".stl" || extension == ".ply" || extension == ".off" || extension == ".obj";
+}
+
 void write_surface(const std::string& path, const std::vector<Point<3>>& samples,
                    const std::vector<Facet<3>>& triangles, bool ascii) {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   const std::string extension = extension_of(path);
   const bool binary = !ascii && (extension == ".stl" || extension == ".ply");
-  if (extension != ".stl" && extension != ".ply" && extension != ".off" && extension != ".obj") {
+  if (!writes_surface(extension)) {
     throw Error("cannot write a surface as '" + extension + "' (known: " + surface_formats + ")");
   }
   std::vector<Kernel::Point_3> points;

@@ -25,6 +25,11 @@ template <int D>
 void write_solid(const std::string& path, const std::vector<Point<D>>& samples,
                  const std::vector<Cell<D>>& cells);
 
+// Whether a writer knows the extension (lower case, with its dot: see extension_of).
+bool writes_surface(const std::string& extension);
+bool writes_curve(const std::string& extension);
+bool writes_solid(const std::string& extension);
+
 // The formats each writer knows, for messages and --help.
 extern const char* const surface_formats;
 extern const char* const curve_formats;

@@ -35,6 +35,8 @@ class Renderer {
   void set_scene(const scene::Scene& scene);
   // Draws the uploaded scene into a width x height viewport of the bound framebuffer.
   void draw(const Camera& camera, int width, int height, const Draw_options& options = {});
+  // The uploaded scene without its geometry: its layers' ids, labels and colours.
+  const scene::Scene& scene() const { return scene_; }
 
  private:
   struct Programs;

@@ -5,6 +5,7 @@
 #include <deque>
 #include <stdexcept>
 
+#include "core/facet_orientation.hpp"
 #include "palette.hpp"
 #include "scene.hpp"
 #include "simplex_geometry.hpp"
@@ -27,7 +28,9 @@ class Scene_builder {
       case Stage::samples:
         break;
       case Stage::delaunay:
-        edges_of(r_.delaunay, "delaunay", "Delaunay edges DT(S + BBV)", palette::delaunay_edge);
+        require_cells(r_.delaunay);
+        edges_of(r_.delaunay.cells, "delaunay", "Delaunay edges DT(S + BBV)",
+                 palette::delaunay_edge);
         break;
       case Stage::hull:
         hull();
@@ -50,7 +53,8 @@ class Scene_builder {
         labelled_poles(r_.propagation.labels, /*only_inserted=*/true);
         break;
       case Stage::sculpted_delaunay:
-        edges_of(r_.sculpted_delaunay, "sculpted-delaunay", "Delaunay edges DT(S + OUP)",
+        require_cells(r_.sculpted_delaunay);
+        edges_of(r_.sculpted_delaunay.cells, "sculpted-delaunay", "Delaunay edges DT(S + OUP)",
                  palette::delaunay_edge);
         labelled_poles(r_.propagation.labels, /*only_inserted=*/true);
         break;
@@ -118,11 +122,10 @@ class Scene_builder {
     }
   }
 
-  void edges_of(const Delaunay_stage<D>& stage, const char* id, const std::string& label,
+  void edges_of(const std::vector<Cell<D>>& cells, const char* id, const std::string& label,
                 Color color) {
-    require_cells(stage);
     std::vector<std::pair<int, int>> edges;
-    for (const auto& cell : stage.cells) {
+    for (const auto& cell : cells) {
       for (int i = 0; i <= D; ++i) {
         for (int j = i + 1; j <= D; ++j) edges.push_back(std::minmax(cell[i], cell[j]));
       }
@@ -325,13 +328,12 @@ class Scene_builder {
       for (const auto& cell : cells) {
         for (int v : cell) layer.positions.push_back(vec(r_.sites[v]));
       }
-      edges_of_cells(cells, "hull-edges", "their edges", palette::delaunay_edge);
+      edges_of(cells, "hull-edges", "their edges", palette::delaunay_edge);
     } else {
       // Its boundary: the facets of one all-sample cell only, facing out.
       std::vector<std::pair<std::array<int, 3>, std::array<int, 3>>> facets;  // sorted, oriented
       for (const auto& cell : cells) {
-        static constexpr int facet_vertex[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
-        for (const auto& f : facet_vertex) {
+        for (const auto& f : Facet_orientation<3>::vertex) {
           std::array<int, 3> oriented{cell[f[0]], cell[f[1]], cell[f[2]]}, key = oriented;
           std::sort(key.begin(), key.end());
           facets.emplace_back(key, oriented);
@@ -347,14 +349,6 @@ class Scene_builder {
         for (int v : facets[i].second) layer.positions.push_back(vec(r_.sites[v]));
       }
     }
-  }
-
-  void edges_of_cells(const std::vector<Cell<D>>& cells, const char* id, const std::string& label,
-                      Color color) {
-    Delaunay_stage<D> stage;
-    stage.cells = cells;
-    stage.cell_count = cells.size();
-    edges_of(stage, id, label, color);
   }
 
   void solid() {

@@ -291,6 +291,13 @@ const std::vector<Example>& examples() {
   return list;
 }
 
+const Example* find_example(const std::string& name) {
+  for (const auto& example : examples()) {
+    if (example.name == name) return &example;
+  }
+  return nullptr;
+}
+
 std::vector<Point<2>> example_points_2(const std::string& name) {
   if (name == "circle") return circle(64).samples;
   if (name == "star") return star(200).samples;

@@ -51,6 +51,7 @@ struct Example {
   bool bordered;
 };
 const std::vector<Example>& examples();
+const Example* find_example(const std::string& name);  // nullptr if there is none
 // Throws std::invalid_argument for an unknown name.
 std::vector<Point<2>> example_points_2(const std::string& name);
 std::vector<Point<3>> example_points_3(const std::string& name);

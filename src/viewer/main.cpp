@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
 
   int status = 0;
   {
-    sculpt::viewer::Viewer viewer(window);
+    sculpt::viewer::Viewer viewer;
     glfwSetWindowUserPointer(window, &viewer);
     glfwSetDropCallback(window, on_drop);
 

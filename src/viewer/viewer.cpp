@@ -37,8 +37,7 @@ int view_width(int window_width) {
 
 }  // namespace
 
-Viewer::Viewer(GLFWwindow* window)
-    : window_(window), renderer_(std::make_unique<render::Renderer>()) {}
+Viewer::Viewer() : renderer_(std::make_unique<render::Renderer>()) {}
 
 // ---------------------------------------------------------------------------------------------
 // Reconstructions
@@ -46,9 +45,7 @@ Viewer::Viewer(GLFWwindow* window)
 void Viewer::open_example(const std::string& name) {
   Job_request request;
   request.example = name;
-  for (const auto& e : shapes::examples()) {
-    if (e.name == name) bordered_ = e.bordered;
-  }
+  if (const auto* example = shapes::find_example(name)) bordered_ = example->bordered;
   start_job(request);
 }
 
@@ -154,13 +151,6 @@ void Viewer::rebuild_scene() {
     scene::Scene scene = std::visit([&](const auto& r) { return scene::build_scene(r, request_); },
                                     *reconstruction_);
     renderer_->set_scene(scene);
-    scene_ = scene::Scene{scene.dimension, scene.title, {}, scene.lower, scene.upper};
-    for (auto& layer : scene.layers) {
-      layer.positions.clear();
-      layer.normals.clear();
-      layer.radii.clear();
-      scene_.layers.push_back(std::move(layer));
-    }
     if (!camera_fitted_) {
       camera_ = render::fit(
           scene, frame_height_ > 0 ? float(view_width(frame_width_)) / frame_height_ : 1.0f);
@@ -305,7 +295,7 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
   if (!last_request_.path.empty())
     shot["input"] = std::filesystem::absolute(last_request_.path).string();
   std::vector<std::string> visible;
-  for (const auto& layer : scene_.layers) {
+  for (const auto& layer : renderer_->scene().layers) {
     if (std::find(hidden_layers_.begin(), hidden_layers_.end(), layer.id) == hidden_layers_.end()) {
       visible.push_back(layer.id);
     }
@@ -483,7 +473,7 @@ void Viewer::draw_pseudo_code() {
 
 void Viewer::draw_layers() {
   if (!ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  for (const auto& layer : scene_.layers) {
+  for (const auto& layer : renderer_->scene().layers) {
     ImGui::ColorButton(("##" + layer.id).c_str(), imgui_color(layer.color),
                        ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
     ImGui::SameLine();

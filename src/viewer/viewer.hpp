@@ -13,13 +13,11 @@
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 
-struct GLFWwindow;
-
 namespace sculpt::viewer {
 
 class Viewer {
  public:
-  explicit Viewer(GLFWwindow* window);
+  Viewer();
 
   // Reconstruction inputs; each starts a background job.
   void open_example(const std::string& name);
@@ -73,14 +71,12 @@ class Viewer {
   long event_count() const;
   const Labelling_event* latest_event() const;
 
-  GLFWwindow* window_;
   std::unique_ptr<render::Renderer> renderer_;
   Reconstruction_job job_;
   Job_request last_request_;
   std::optional<Any_reconstruction> reconstruction_;
   std::string description_;
   scene::Request request_;
-  scene::Scene scene_;  // layer ids, labels, colours of what is uploaded
   bool scene_dirty_ = true;
   render::Camera camera_;
   bool camera_fitted_ = false;
