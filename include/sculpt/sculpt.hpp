@@ -1,10 +1,17 @@
 // Sculpt: Delaunay-based curve and surface reconstruction by sculpting
 // (Kuo & Yau, "A Delaunay-based region-growing approach to surface reconstruction from
-// unorganized points", 2003, sections 3 and 4).
+// unorganized points", 2003, sections 3 and 4), and methods beyond the paper over the same stages.
 //
 // This is the whole public API of the core. It is plain C++ with no CGAL or GL in it, so that
 // the command line, the tests and the viewer compile against it quickly; the algorithm itself is
 // instantiated once per dimension in src/core2d and src/core3d.
+//
+// Methods (Options::method) share stages 1-3 and differ after them:
+//   paper   the paper's algorithm, literally: breadth-first pole separation, insertion of the
+//           outer concave poles, the all-sample cells of DT(S ∪ OUP) (stages 4-8 below);
+//   robust  the default, right on real scans: poles labelled by confidence (a priority queue of
+//           evidence, as in the power crust), then the hull's all-sample cells carved from the
+//           outside in an order that keeps the surface a 2-manifold (stages 4, 6b, 7, 8).
 //
 // Every stage of the algorithm is kept in the returned Reconstruction as plain data:
 //   1. delaunay           DT(S ∪ BBV): the samples plus the corners of an enlarged bounding box
@@ -14,6 +21,7 @@
 //   4. propagation        the ordered labelling events of the pole separation
 //   5. insertion          the poles inserted: OUP (closed) or UP (bordered)
 //   6. sculpted_delaunay  DT(S ∪ OUP), made by inserting those poles into the first DT
+//   6b. carving           (robust) the all-sample cells removed, in order, with the reason
 //   7. solid              the cells whose vertices are all samples
 //   8. surface            the triangles (3D) or edges (2D) of the reconstruction
 #pragma once
@@ -44,6 +52,13 @@ using Facet = std::array<int, D>;
 
 enum class Surface_kind { closed, bordered };
 
+// The reconstruction method: siblings over the shared stages 1-3. The names are what the command
+// line, the viewer and the statistics use (method_names(), parse_method()).
+enum class Method {
+  paper,   // Kuo & Yau's algorithm exactly as published (the figures and lessons use it)
+  robust,  // confidence labelling and a manifold carve: the default, for real scans
+};
+
 // Which facets of DT(S ∪ OUP) make the surface.
 //  skin:       facets with an outer apex (outer pole, box corner) on one side and an inner apex
 //              (a sample, i.e. an all-sample cell, or an inner pole) on the other. For a closed
@@ -62,7 +77,9 @@ struct Progress {
   double fraction;    // 0..1 within that stage, where known
 };
 
+// The one place the defaults live: front ends initialise their own settings from Options{}.
 struct Options {
+  Method method = Method::robust;
   Surface_kind kind = Surface_kind::closed;
   Surface_rule rule = Surface_rule::automatic;
   // Side lengths of the bounding box BB relative to those of the samples' bounding box.
@@ -107,6 +124,7 @@ enum class Label_reason : std::uint8_t {
   convex_seed,     // a convex pole, labelled outer at the start
   pairing,         // the opposite label of a pole it is paired with (both poles of one sample)
   inscribed_cube,  // lies strictly inside the inscribed cube (square) of a labelled polar ball
+  ball_overlap,    // robust: its polar ball meets the ball of a labelled pole deeply (same side)
 };
 
 // Stage 1 and 6: a Delaunay triangulation, its finite cells as indices into the sites.
@@ -158,10 +176,15 @@ struct Labelling_event {
   Label label;
   int source;  // the pole that gave the label; -1 for a convex seed
   Label_reason reason;
+  // The strength of the evidence, 0..1: 1 for the paper's rules; for the robust labelling the
+  // cosine of the angle at which the two polar balls meet (see confidence_labelling.hpp).
+  float weight = 1;
 };
 
 // Stage 4: the pole separation, in the order it ran. A conflict is an offer of the opposite
-// label to a pole that already has one; the first label stays.
+// label to a pole that already has one; the first label stays (paper). In the robust labelling
+// a conflict is evidence for the other side, arriving after the pole was labelled, at least as
+// strong as the evidence the pole was labelled by: a "contradicted" pole.
 struct Propagation_stage {
   std::vector<Labelling_event> events;
   std::vector<Labelling_event> conflicts;
@@ -176,6 +199,25 @@ struct Insertion_stage {
   std::vector<int> inserted_poles;
 };
 
+// Stage 6b (robust method): the all-sample cells of DT(S ∪ BBV) removed from the hull, in the
+// order they were removed (cells are numbered as in stage 1), and those that stayed.
+enum class Carve_reason : std::uint8_t {
+  outer_pole_inside,  // its circumball holds an outer pole: inserting OUP would destroy it
+  outer_power_cell,   // its circumcentre lies in the power cell of an outer polar ball
+  exposes_sample,     // judged inner, removed so that a buried sample reaches the surface
+};
+
+struct Carve_event {
+  int cell;
+  Carve_reason reason;
+};
+
+struct Carving_stage {
+  std::vector<Carve_event> events;    // removed cells, in order
+  std::vector<int> kept_outer_cells;  // judged outer but kept: removing them breaks the manifold
+  std::vector<int> buried_samples;    // samples left inside the solid, on no surface facet
+};
+
 struct Stage_measure {
   std::string name;
   double seconds = 0;
@@ -183,6 +225,8 @@ struct Stage_measure {
 };
 
 struct Statistics {
+  Method method = Method::robust;
+  Surface_kind kind = Surface_kind::closed;
   int dimension = 0;
   std::size_t samples = 0;  // n
   std::size_t poles = 0;    // distinct poles
@@ -192,6 +236,8 @@ struct Statistics {
   std::size_t unlabelled_poles = 0;
   std::size_t conflicts = 0;        // poles offered both labels
   std::size_t conflict_offers = 0;  // offers of the other label (several per pole)
+  std::size_t carved_cells = 0;     // robust: all-sample cells removed from the hull
+  std::size_t kept_outer_cells = 0;  // robust: judged outer, kept so the surface stays manifold
   std::size_t inserted_poles = 0;   // m (closed) or l (bordered), without the box corners
   std::size_t delaunay_cells = 0;   // cells of DT(S ∪ BBV)
   std::size_t sculpted_cells = 0;   // cells of DT(S ∪ OUP)
@@ -222,8 +268,9 @@ struct Reconstruction {
   Poles_stage<D> poles;                 // 2
   Seeds_stage seeds;                    // 3
   Propagation_stage propagation;        // 4
-  Insertion_stage insertion;            // 5
-  Delaunay_stage<D> sculpted_delaunay;  // 6
+  Insertion_stage insertion;            // 5 (paper)
+  Delaunay_stage<D> sculpted_delaunay;  // 6 (paper)
+  Carving_stage carving;                // 6b (robust)
   std::vector<Cell<D>> solid;           // 7: cells of stage 6 whose vertices are all samples
   std::vector<Facet<D>> surface;        // 8: oriented facets; closed: normals point outward
   Statistics stats;
@@ -246,6 +293,29 @@ struct Reconstruction {
 // The rule `automatic` stands for with this kind of surface.
 Surface_rule resolved_rule(const Options& options);
 
+// The verdict on a result, from its statistics: a closed 2-manifold (closed curve in 2D), a
+// bordered one (open curves), or what is wrong with it.
+struct Verdict {
+  bool manifold = false;  // closed or properly bordered, every sample on it, no defect
+  std::string line;       // one line for people, e.g. "closed 2-manifold, 1 component, genus 0"
+};
+Verdict verdict(const Statistics& stats);
+
+// The topology fields of Statistics (facets ... unused_samples) for any facets on n samples: a
+// reference mesh's own, for comparison.
+Statistics facet_topology(std::size_t sample_count, const std::vector<Facet<2>>& facets);
+Statistics facet_topology(std::size_t sample_count, const std::vector<Facet<3>>& facets);
+
+// The share (0..1) of a reference's triangles that a result has, whatever their orientation:
+// how close a reconstruction of a mesh's vertices comes to the mesh.
+double triangles_reproduced(const std::vector<Facet<3>>& reference,
+                            const std::vector<Facet<3>>& result);
+
+// Names of the methods and rules, and the reverse (false for an unknown name).
+const std::vector<const char*>& method_names();
+bool parse_method(const std::string& name, Method& method);
+bool parse_rule(const std::string& name, Surface_rule& rule);  // auto, skin, extraction
+
 // Reconstructs a curve from 2D samples or a surface from 3D samples.
 // Throws Input_error for input it cannot work on, Cancelled when the progress callback says so.
 Reconstruction<2> reconstruct(const std::vector<Point<2>>& samples, const Options& options = {});
@@ -256,6 +326,8 @@ Reconstruction<3> reconstruct(const std::vector<Point<3>>& samples, const Option
 double delaunay_seconds(const std::vector<Point<2>>& points);
 double delaunay_seconds(const std::vector<Point<3>>& points);
 
+const char* to_string(Method method);
+const char* to_string(Carve_reason reason);
 const char* to_string(Label label);
 const char* to_string(Label_reason reason);
 const char* to_string(Surface_rule rule);

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <iostream>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 
 #include "frontend/input.hpp"
@@ -57,78 +58,107 @@ nlohmann::json in_child_process(Work&& work) {
   return result;
 }
 
+// One row: CGAL's Delaunay of the points, then every method on the same points, each in a
+// process of its own; a mesh input's own triangles are the reference the results are compared
+// with (its topology, and the share of its triangles each method reproduces).
 template <int D>
 nlohmann::json measure(const std::string& name, const std::vector<Point<D>>& points,
-                       bool bordered) {
+                       bool bordered, const std::vector<Facet<3>>& reference) {
   nlohmann::json row;
   row["input"] = name;
   row["samples"] = points.size();
+  if constexpr (D == 3) {
+    if (!reference.empty()) {
+      const Statistics own = facet_topology(points.size(), reference);
+      row["reference"] = {{"triangles", reference.size()},
+                          {"euler_characteristic", own.euler_characteristic},
+                          {"components", own.components},
+                          {"boundary_loops", own.boundary_loops}};
+    }
+  }
   row["delaunay_only"] = in_child_process([&] {
     return nlohmann::json{{"seconds", delaunay_seconds(points)}};
   });
-  row["sculpt"] = in_child_process([&] {
-    Options options;
-    options.kind = bordered ? Surface_kind::bordered : Surface_kind::closed;
-    options.keep_triangulations = false;
-    Run_description run;
-    run.input = name;
-    run.kind = to_string(options.kind);
-    run.rule = to_string(resolved_rule(options));
-    return report_json(reconstruct(points, options).stats, run);
-  });
+  for (const char* method_name : method_names()) {
+    row["methods"][method_name] = in_child_process([&] {
+      Options options;
+      parse_method(method_name, options.method);
+      options.kind = bordered ? Surface_kind::bordered : Surface_kind::closed;
+      options.keep_triangulations = false;
+      Run_description run;
+      run.input = name;
+      run.kind = to_string(options.kind);
+      run.rule = to_string(resolved_rule(options));
+      const auto result = reconstruct(points, options);
+      nlohmann::json json = report_json(result.stats, run);
+      if constexpr (D == 3) {
+        if (!reference.empty()) json["reproduced"] = triangles_reproduced(reference, result.surface);
+      }
+      return json;
+    });
+  }
   return row;
 }
 
+double stage_seconds(const nlohmann::json& stats, std::initializer_list<const char*> names) {
+  double sum = 0;
+  for (const auto& stage : stats["stages"]) {
+    for (const char* name : names) sum += stage["name"] == name ? double(stage["seconds"]) : 0.0;
+  }
+  return sum;
+}
+
 void print_rows(const std::vector<nlohmann::json>& rows) {
-  std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>8}{:>9}{:>9}{:>8}{:>9}{:>9}{:>8}{:>8}\n",
-                           "time (s)", "n", "CGAL DT", "ours:DT", "poles", "separate", "insert",
-                           "solid+", "total", "/ DT", "m/n");
+  std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>8}{:>9}{:>9}{:>9}{:>9}{:>9}{:>8}{:>8}\n",
+                           "time (s)", "n", "CGAL DT", "method", "ours:DT", "poles", "label",
+                           "sculpt", "total", "/ DT", "MiB/DT");
   for (const auto& row : rows) {
-    const auto& s = row["sculpt"];
-    if (s.contains("error") || row["delaunay_only"].contains("error")) {
+    if (row["delaunay_only"].contains("error")) {
       std::cout << fmt::format("{:<22} failed: {}\n", row["input"].get<std::string>(),
-                               s.value("error", row["delaunay_only"].value("error", "")));
+                               row["delaunay_only"]["error"].get<std::string>());
       continue;
     }
-    std::map<std::string, double> stage;
-    for (const auto& st : s["stages"]) stage[st["name"]] = st["seconds"];
     const double dt = row["delaunay_only"]["seconds"];
-    const double total = s["total_seconds"];
-    std::cout << fmt::format(
-        "{:<22}{:>9}{:>9.3f}{:>8.3f}{:>9.3f}{:>9.3f}{:>8.3f}{:>9.3f}{:>9.3f}{:>8.2f}{:>8.3f}\n",
-        row["input"].get<std::string>(), s["samples"].get<std::size_t>(), dt, stage["delaunay"],
-        stage["poles"], stage["seeds"] + stage["propagation"], stage["insertion"],
-        stage["solid"] + stage["surface"] + stage["topology"] + stage["checks"], total, total / dt,
-        double(s["inserted_poles"]) / double(s["samples"]));
+    const double dt_mib = row["delaunay_only"]["process_peak_mib"];
+    for (const auto& [method, s] : row["methods"].items()) {
+      if (s.contains("error")) {
+        std::cout << fmt::format("{:<22} {} failed: {}\n", row["input"].get<std::string>(), method,
+                                 s["error"].get<std::string>());
+        continue;
+      }
+      const double total = s["total_seconds"];
+      std::cout << fmt::format(
+          "{:<22}{:>9}{:>9.3f}{:>8}{:>9.3f}{:>9.3f}{:>9.3f}{:>9.3f}{:>9.3f}{:>8.2f}{:>8.2f}\n",
+          row["input"].get<std::string>(), s["samples"].get<std::size_t>(), dt, method,
+          stage_seconds(s, {"delaunay"}), stage_seconds(s, {"poles"}),
+          stage_seconds(s, {"seeds", "propagation", "labelling"}),
+          stage_seconds(s, {"insertion", "carving", "solid", "surface"}), total, total / dt,
+          double(s["process_peak_mib"]) / dt_mib);
+    }
   }
-  std::cout << fmt::format("\n{:<22}{:>11}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}{:>10}\n",
-                           "peak memory (MiB)", "CGAL DT", "delaunay", "poles", "separate",
-                           "insert", "surface", "process", "/ DT");
+  std::cout << fmt::format("\n{:<22}{:>8}{:>10}{:>10}{:>9}{:>9}{:>8}{:>8}{:>11}{:>10}  {}\n",
+                           "result", "method", "triangles", "non-man.", "n.-m. v", "border",
+                           "unused", "pieces", "Euler(own)", "reproduced", "verdict");
   for (const auto& row : rows) {
-    const auto& s = row["sculpt"];
-    if (s.contains("error")) continue;
-    std::map<std::string, double> peak;
-    for (const auto& st : s["stages"]) peak[st["name"]] = st["peak_memory_mib"];
-    const double dt = row["delaunay_only"]["process_peak_mib"];
-    const double ours = s["process_peak_mib"];
-    std::cout << fmt::format(
-        "{:<22}{:>11.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.0f}{:>10.2f}\n",
-        row["input"].get<std::string>(), dt, peak["delaunay"], peak["poles"], peak["propagation"],
-        peak["insertion"], peak["topology"], ours, ours / dt);
-  }
-  std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>11}{:>10}{:>10}{:>10}{:>9}{:>8}{:>8}\n", "result",
-                           "poles", "m (or l)", "conflicts", "unlabel.", "triangles", "boundary",
-                           "non-man.", "unused", "pieces");
-  for (const auto& row : rows) {
-    const auto& s = row["sculpt"];
-    if (s.contains("error")) continue;
-    std::cout << fmt::format(
-        "{:<22}{:>9}{:>9}{:>11}{:>10}{:>10}{:>10}{:>9}{:>8}{:>8}\n",
-        row["input"].get<std::string>(), s["poles"].get<std::size_t>(),
-        s["inserted_poles"].get<std::size_t>(), s["conflicts"].get<std::size_t>(),
-        s["unlabelled_poles"].get<std::size_t>(), s["facets"].get<std::size_t>(),
-        s["boundary_ridges"].get<std::size_t>(), s["non_manifold_ridges"].get<std::size_t>(),
-        s["unused_samples"].get<std::size_t>(), s["components"].get<std::size_t>());
+    const bool has_reference = row.contains("reference");
+    for (const auto& [method, s] : row["methods"].items()) {
+      if (s.contains("error")) continue;
+      const std::string euler =
+          has_reference ? fmt::format("{}({})", s["euler_characteristic"].get<long>(),
+                                      row["reference"]["euler_characteristic"].get<long>())
+                        : std::to_string(s["euler_characteristic"].get<long>());
+      const std::string reproduced =
+          s.contains("reproduced") ? fmt::format("{:.1f}%", 100 * double(s["reproduced"])) : "";
+      std::cout << fmt::format("{:<22}{:>8}{:>10}{:>10}{:>9}{:>9}{:>8}{:>8}{:>11}{:>10}  {}\n",
+                               row["input"].get<std::string>(), method,
+                               s["facets"].get<std::size_t>(),
+                               s["non_manifold_ridges"].get<std::size_t>(),
+                               s["non_manifold_vertices"].get<std::size_t>(),
+                               s["boundary_ridges"].get<std::size_t>(),
+                               s["unused_samples"].get<std::size_t>(),
+                               s["components"].get<std::size_t>(), euler, reproduced,
+                               s["manifold"].get<bool>() ? "manifold" : "DEFECTIVE");
+    }
   }
 }
 
@@ -182,13 +212,13 @@ int run_bench(const Bench_arguments& args) {
     rows.push_back(std::move(row));
   };
   const auto measure_input = [&](const std::string& path, const std::string& example) {
-    const frontend::Input input = frontend::load_input(path, example, 0);
+    const frontend::Input input = frontend::load_input(path, example, 0, args.merge_duplicates);
     const std::string name = example.empty() ? path.substr(path.find_last_of('/') + 1) : example;
     const bool bordered = example.empty() ? args.bordered : shapes::find_example(example)->bordered;
     std::visit(
         [&](const auto& points) {
           constexpr int D = std::tuple_size_v<typename std::decay_t<decltype(points)>::value_type>;
-          add(measure<D>(name, points, bordered));
+          add(measure<D>(name, points, bordered, input.reference_triangles));
         },
         input.points);
   };
@@ -196,7 +226,7 @@ int run_bench(const Bench_arguments& args) {
   for (const auto& example : args.examples) measure_input("", example);
   if (args.torus_points > 0) {
     add(measure<3>(fmt::format("torus {}", args.torus_points), shapes::torus(args.torus_points),
-                   false));
+                   false, {}));
   }
   print_rows(rows);
   if (args.render_triangles > 0) bench_rendering(args.render_triangles);

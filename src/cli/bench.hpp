@@ -13,6 +13,7 @@ struct Bench_arguments {
   int torus_points = 0;               // also random points on a torus, if > 0
   int render_triangles = 0;           // also time a headless render of a surface this large
   bool bordered = false;
+  bool merge_duplicates = false;
   std::string json;  // write the rows as JSON too
 };
 

@@ -22,11 +22,16 @@ namespace {
 
 struct Reconstruct_arguments {
   std::string input, example, output, solid, stats, rule = "auto";
+  std::string method = to_string(Options{}.method);
   int dimension = 0;  // 0: as the input says
-  int seed_sample = -1;
-  double box_factor = 5.0;
+  int seed_sample = Options{}.bordered_seed_sample;
+  double box_factor = Options{}.box_factor;
   bool bordered = false, ascii = false, quiet = false, merge_duplicates = false;
+  bool require_manifold = false;
 };
+
+// Exit code of a run whose output was written but is not a manifold, with --require-manifold.
+constexpr int defective_result_exit = 3;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -67,10 +72,9 @@ template <int D>
 int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruct_arguments& args,
                           Run_description run) {
   Options options;
+  parse_method(args.method, options.method);
   options.kind = args.bordered ? Surface_kind::bordered : Surface_kind::closed;
-  options.rule = args.rule == "extraction" ? Surface_rule::extraction
-                 : args.rule == "skin"     ? Surface_rule::skin
-                                           : Surface_rule::automatic;
+  parse_rule(args.rule, options.rule);
   options.box_factor = args.box_factor;
   options.bordered_seed_sample = args.seed_sample;
   options.keep_triangulations = false;
@@ -78,6 +82,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 
   const Reconstruction<D> result = reconstruct(samples, options);
   run.rule = to_string(resolved_rule(options));
+  run.method = to_string(options.method);
 
   const auto start = std::chrono::steady_clock::now();
   if constexpr (D == 3) {
@@ -93,12 +98,16 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
     file.stream() << report_json(result.stats, run).dump(2) << '\n';
     file.commit();
   }
+  const Verdict verdict = sculpt::verdict(result.stats);
   if (!args.quiet) {
     print_report(std::cout, result.stats, run);
     std::cout << "  wrote " << args.output << (args.solid.empty() ? "" : " and " + args.solid)
               << '\n';
+    std::cout << "verdict: " << verdict.line << '\n';
+  } else if (!verdict.manifold) {
+    std::cerr << "sculpt: warning: " << verdict.line << '\n';  // never silent on broken output
   }
-  return 0;
+  return verdict.manifold || !args.require_manifold ? 0 : defective_result_exit;
 }
 
 int run_reconstruct(const Reconstruct_arguments& args) {
@@ -148,6 +157,15 @@ int main(int argc, char** argv) {
       ->add_option("-o,--output", args.output,
                    "Surface .stl .ply .off .obj (3D) or curve .obj .svg (2D)")
       ->required();
+  reconstruct
+      ->add_option("--method", args.method,
+                   "robust (default: confidence labelling, manifold carve) or paper (Kuo & Yau "
+                   "exactly)")
+      ->capture_default_str()
+      ->check(CLI::IsMember(sculpt::method_names()));
+  reconstruct->add_flag("--require-manifold", args.require_manifold,
+                        "Exit with code 3 when the result is not a closed (or, with --bordered, "
+                        "bordered) 2-manifold through every sample; the output is still written");
   reconstruct->add_flag("--bordered", args.bordered,
                         "The samples come from a surface (curve) with a border");
   reconstruct->add_option("--solid", args.solid,
@@ -202,6 +220,8 @@ int main(int argc, char** argv) {
   bench->add_option("--render", bench_args.render_triangles,
                     "Also time a headless 1600x1200 render of a surface of N triangles");
   bench->add_flag("--bordered", bench_args.bordered, "Treat the point files as bordered");
+  bench->add_flag("--merge-duplicates", bench_args.merge_duplicates,
+                  "Remove repeated points of the files instead of refusing them");
   bench->add_option("--json", bench_args.json, "Also write the measurements as JSON");
 
   CLI11_PARSE(app, argc, argv);

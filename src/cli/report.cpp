@@ -6,8 +6,11 @@ namespace sculpt::cli {
 
 void print_report(std::ostream& out, const Statistics& stats, const Run_description& run) {
   const bool three = stats.dimension == 3;
-  out << fmt::format("sculpt {} ({}D, {}, rule {}, box factor {})\n", run.input, stats.dimension,
-                     run.kind, run.rule, run.box_factor);
+  const bool paper = stats.method == Method::paper;
+  out << fmt::format("sculpt {} ({}D, {}, method {}, {}box factor {})\n", run.input,
+                     stats.dimension, run.kind, to_string(stats.method),
+                     paper || stats.kind == Surface_kind::bordered ? "rule " + run.rule + ", " : "",
+                     run.box_factor);
   out << fmt::format("  {:<14}{:>10}{:>12}\n", "stage", "seconds", "peak MiB");
   out << fmt::format("  {:<14}{:>10.3f}\n", "read", run.read_seconds);
   for (const auto& stage : stats.stages) {
@@ -23,11 +26,17 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   row("convex poles", stats.convex_poles);
   row("inner / outer poles", fmt::format("{} / {}", stats.inner_poles, stats.outer_poles));
   row("unlabelled poles", stats.unlabelled_poles);
-  row("conflicts (poles / offers)", fmt::format("{} / {}", stats.conflicts, stats.conflict_offers));
-  row(run.kind == "closed" ? "inserted poles (m - 2^D)" : "inserted poles (l - 2^D)",
-      stats.inserted_poles);
+  row(paper ? "conflicts (poles / offers)" : "contradicted poles (poles / offers)",
+      fmt::format("{} / {}", stats.conflicts, stats.conflict_offers));
   row("cells of DT(S+BBV)", stats.delaunay_cells);
-  row("cells of DT(S+OUP)", stats.sculpted_cells);
+  if (paper || stats.kind == Surface_kind::bordered) {
+    row(run.kind == "closed" ? "inserted poles (m - 2^D)" : "inserted poles (l - 2^D)",
+        stats.inserted_poles);
+    row("cells of DT(S+OUP)", stats.sculpted_cells);
+  } else {
+    row("carved cells", stats.carved_cells);
+    row("outer cells kept (manifold)", stats.kept_outer_cells);
+  }
   row("solid cells", stats.solid_cells);
   row(three ? "triangles" : "edges", stats.facets);
   row(three ? "boundary edges" : "curve end points", stats.boundary_ridges);
@@ -46,8 +55,14 @@ nlohmann::json report_json(const Statistics& stats, const Run_description& run) 
                       {"seconds", stage.seconds},
                       {"peak_memory_mib", stage.peak_memory_mib}});
   }
+  const Verdict verdict = sculpt::verdict(stats);
   return {
       {"input", run.input},
+      {"method", to_string(stats.method)},
+      {"verdict", verdict.line},
+      {"manifold", verdict.manifold},
+      {"carved_cells", stats.carved_cells},
+      {"kept_outer_cells", stats.kept_outer_cells},
       {"dimension", stats.dimension},
       {"kind", run.kind},
       {"rule", run.rule},

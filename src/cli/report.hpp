@@ -11,9 +11,10 @@ namespace sculpt::cli {
 
 struct Run_description {
   std::string input;
+  std::string method;
   std::string rule;
   std::string kind;
-  double box_factor = 5;
+  double box_factor = Options{}.box_factor;
   double read_seconds = 0;
   double write_seconds = 0;
 };

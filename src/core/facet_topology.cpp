@@ -143,6 +143,38 @@ void measure_topology(std::size_t sample_count, const std::vector<Facet<D>>& fac
   }
 }
 
+Statistics facet_topology(std::size_t sample_count, const std::vector<Facet<2>>& facets) {
+  Statistics stats;
+  stats.dimension = 2;
+  stats.samples = sample_count;
+  measure_topology<2>(sample_count, facets, stats);
+  return stats;
+}
+
+Statistics facet_topology(std::size_t sample_count, const std::vector<Facet<3>>& facets) {
+  Statistics stats;
+  stats.dimension = 3;
+  stats.samples = sample_count;
+  measure_topology<3>(sample_count, facets, stats);
+  return stats;
+}
+
+double triangles_reproduced(const std::vector<Facet<3>>& reference,
+                            const std::vector<Facet<3>>& result) {
+  if (reference.empty()) return 0;
+  const auto sorted = [](Facet<3> t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::vector<Facet<3>> have;
+  have.reserve(result.size());
+  for (const auto& t : result) have.push_back(sorted(t));
+  std::sort(have.begin(), have.end());
+  std::size_t found = 0;
+  for (const auto& t : reference) found += std::binary_search(have.begin(), have.end(), sorted(t));
+  return double(found) / double(reference.size());
+}
+
 template void measure_topology<2>(std::size_t, const std::vector<Facet<2>>&, Statistics&);
 template void measure_topology<3>(std::size_t, const std::vector<Facet<3>>&, Statistics&);
 

@@ -27,8 +27,60 @@ const char* to_string(Label_reason reason) {
       return "pairing";
     case Label_reason::inscribed_cube:
       return "inscribed cube";
+    case Label_reason::ball_overlap:
+      return "ball overlap";
   }
   return "?";
+}
+
+const char* to_string(Method method) {
+  switch (method) {
+    case Method::paper:
+      return "paper";
+    case Method::robust:
+      return "robust";
+  }
+  return "?";
+}
+
+const std::vector<const char*>& method_names() {
+  static const std::vector<const char*> names = {"robust", "paper"};
+  return names;
+}
+
+bool parse_method(const std::string& name, Method& method) {
+  for (Method m : {Method::paper, Method::robust}) {
+    if (name == to_string(m)) {
+      method = m;
+      return true;
+    }
+  }
+  return false;
+}
+
+const char* to_string(Carve_reason reason) {
+  switch (reason) {
+    case Carve_reason::outer_pole_inside:
+      return "outer pole in its circumball";
+    case Carve_reason::outer_power_cell:
+      return "in the power cell of an outer ball";
+    case Carve_reason::exposes_sample:
+      return "exposes a buried sample";
+  }
+  return "?";
+}
+
+bool parse_rule(const std::string& name, Surface_rule& rule) {
+  if (name == "auto" || name == "automatic") {
+    rule = Surface_rule::automatic;
+  } else if (name == "skin") {
+    rule = Surface_rule::skin;
+  } else if (name == "extraction") {
+    rule = Surface_rule::extraction;
+  } else {
+    return false;
+  }
+  return true;
 }
 
 const char* to_string(Surface_rule rule) {

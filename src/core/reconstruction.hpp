@@ -1,39 +1,23 @@
-// The sculpting algorithm, written once for every dimension: Traits is Traits_2 or Traits_3.
-// Each stage is a function of its own file; this driver runs them in the paper's order, times
-// them, and gathers the statistics.
+// A reconstruction, written once for every dimension: Traits is Traits_2 or Traits_3. Each
+// stage is a function of its own file. This driver runs the stages every method shares (checks,
+// Delaunay, poles, seeds), hands the triangulation to the chosen method (src/methods), then
+// measures the result's topology; it times every stage and gathers the statistics.
 #pragma once
 
 #include <algorithm>
 #include <chrono>
 #include <vector>
 
+#include "../methods/paper/paper_method.hpp"
+#include "../methods/robust/robust_method.hpp"
 #include "delaunay.hpp"
 #include "facet_topology.hpp"
 #include "input_checks.hpp"
-#include "pole_insertion.hpp"
-#include "pole_separation.hpp"
 #include "poles.hpp"
-#include "sculpting.hpp"
+#include "seeds.hpp"
 #include "stage_clock.hpp"
 
 namespace sculpt {
-
-template <int D>
-void count_labels(Reconstruction<D>& result) {
-  Statistics& stats = result.stats;
-  stats.poles = result.poles.poles.size();
-  stats.convex_poles = result.seeds.convex_poles.size();
-  for (Label label : result.propagation.labels) {
-    stats.inner_poles += label == Label::inner;
-    stats.outer_poles += label == Label::outer;
-  }
-  stats.unlabelled_poles = result.propagation.unlabelled;
-  std::vector<bool> conflicted(result.poles.poles.size(), false);
-  for (const auto& offer : result.propagation.conflicts) conflicted[offer.pole] = true;
-  stats.conflicts =
-      static_cast<std::size_t>(std::count(conflicted.begin(), conflicted.end(), true));
-  stats.conflict_offers = result.propagation.conflicts.size();
-}
 
 // CGAL's Delaunay triangulation of the points alone, timed: the benchmark's yardstick.
 template <class Traits>
@@ -54,6 +38,8 @@ Reconstruction<Traits::dimension> reconstruct_with(
   Reconstruction<Traits::dimension> result;
   result.options = options;
   result.stats.dimension = Traits::dimension;
+  result.stats.method = options.method;
+  result.stats.kind = options.kind;
   result.stats.samples = samples.size();
   Stage_clock clock(result.stats, result.options);
 
@@ -71,22 +57,15 @@ Reconstruction<Traits::dimension> reconstruct_with(
   clock.start("seeds");
   select_seeds(result);
 
-  clock.start("propagation");
-  propagate_labels(result, clock);
-  count_labels(result);
-
-  clock.start("insertion");
-  choose_inserted_poles(result);
-  insert_poles<Traits>(triangulation, result);
-  result.stats.inserted_poles = result.insertion.inserted_poles.size();
-  result.stats.sculpted_cells = result.sculpted_delaunay.cell_count;
-
-  clock.start("solid");
-  sculpt_solid<Traits>(triangulation, result);
+  switch (options.method) {
+    case Method::paper:
+      run_paper_method<Traits>(triangulation, result, clock);
+      break;
+    case Method::robust:
+      run_robust_method<Traits>(triangulation, result, clock);
+      break;
+  }
   result.stats.solid_cells = result.solid.size();
-
-  clock.start("surface");
-  extract_surface<Traits>(triangulation, result);
 
   clock.start("topology");
   measure_topology<Traits::dimension>(samples.size(), result.surface, result.stats);

@@ -10,6 +10,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <sculpt/sculpt.hpp>
+#include <vector>
 
 #include "../core/facet_orientation.hpp"
 
@@ -33,6 +34,16 @@ struct Traits_2 {
 
   static auto finite_cells(const Triangulation& t) { return t.finite_face_handles(); }
   static auto all_cells(const Triangulation& t) { return t.all_face_handles(); }
+  static auto finite_vertices(const Triangulation& t) { return t.finite_vertex_handles(); }
+  static void incident_cells(const Triangulation& t, Triangulation::Vertex_handle v,
+                             std::vector<Cell_handle>& cells) {
+    const auto first = t.incident_faces(v);
+    auto face = first;
+    if (face != nullptr) {
+      do cells.push_back(face);
+      while (++face != first);
+    }
+  }
   static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) { return t.dual(c); }
 
   // Vertex j of the edge opposite vertex i, with the face on its left: a closed curve comes out

@@ -8,7 +8,9 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <iterator>
 #include <sculpt/sculpt.hpp>
+#include <vector>
 
 #include "../core/facet_orientation.hpp"
 
@@ -34,6 +36,11 @@ struct Traits_3 {
 
   static auto finite_cells(const Triangulation& t) { return t.finite_cell_handles(); }
   static auto all_cells(const Triangulation& t) { return t.all_cell_handles(); }
+  static auto finite_vertices(const Triangulation& t) { return t.finite_vertex_handles(); }
+  static void incident_cells(const Triangulation& t, Triangulation::Vertex_handle v,
+                             std::vector<Cell_handle>& cells) {
+    t.incident_cells(v, std::back_inserter(cells));
+  }
   static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) { return t.dual(c); }
 
   // Vertex j of the facet opposite vertex i, facing away from vertex i.

@@ -39,6 +39,7 @@ Input load_input(const std::string& path, const std::string& example, int forced
     if (!dropped.empty()) input.description += " (without its constant " + dropped + ")";
   } else {
     input.points = io::spatial_points(set);
+    input.reference_triangles = set.triangles;
   }
   input.read_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

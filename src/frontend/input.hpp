@@ -13,6 +13,9 @@ struct Input {
   std::string description;  // the file name or "example NAME", and what was done to it
   std::variant<std::vector<Point<2>>, std::vector<Point<3>>> points;
   double read_seconds = 0;
+  // A 3D mesh file's own triangles, on the same vertex indices: what a reconstruction of its
+  // vertices can be compared with. Empty for point files and examples.
+  std::vector<Facet<3>> reference_triangles;
 
   int dimension() const { return points.index() == 0 ? 2 : 3; }
 };

@@ -52,7 +52,8 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.step = j.value("step", -1L);
   shot.focus_sample = j.value("focus_sample", -1);
   shot.focus_pole = j.value("focus_pole", -1);
-  shot.box_factor = j.value("box_factor", 5.0);
+  shot.method = j.value("method", shot.method);
+  shot.box_factor = j.value("box_factor", shot.box_factor);
   shot.rule = j.value("rule", shot.rule);
   shot.layers = j.value("layers", std::vector<std::string>{});
   shot.camera_file = j.value("camera_file", "");
@@ -116,16 +117,19 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   const std::string key = shot.input + "|" + shot.example + "|" + std::to_string(shot.bordered) +
                           "|" + std::to_string(shot.dimension) + "|" +
-                          std::to_string(shot.box_factor) + "|" + shot.rule;
+                          std::to_string(shot.box_factor) + "|" + shot.rule + "|" + shot.method;
   auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
   const frontend::Input input = frontend::load_input(shot.input, shot.example, shot.dimension);
   Options options;
+  if (!parse_method(shot.method, options.method)) {
+    throw io::Error("no method '" + shot.method + "' (methods: robust, paper)");
+  }
+  if (!parse_rule(shot.rule, options.rule)) {
+    throw io::Error("no surface rule '" + shot.rule + "' (rules: auto, skin, extraction)");
+  }
   options.kind = shot.bordered ? Surface_kind::bordered : Surface_kind::closed;
   options.box_factor = shot.box_factor;
-  options.rule = shot.rule == "skin"         ? Surface_rule::skin
-                 : shot.rule == "extraction" ? Surface_rule::extraction
-                                             : Surface_rule::automatic;
   Any_reconstruction result = std::visit(
       [&](const auto& points) -> Any_reconstruction { return reconstruct(points, options); },
       input.points);

@@ -22,7 +22,8 @@ struct Shot {
   std::string stage = "surface";
   long step = -1;
   int focus_sample = -1, focus_pole = -1;
-  double box_factor = 5.0;
+  std::string method = to_string(Options{}.method);
+  double box_factor = Options{}.box_factor;
   std::string rule = "auto";
   std::vector<std::string> layers;
   std::string camera_file, save_camera;

@@ -134,6 +134,12 @@ Point_set read_mesh(const std::string& path, const std::string& format, bool bin
   }
   Point_set set;
   set.dimension = 3;
+  for (const auto& polygon : polygons) {
+    for (std::size_t j = 2; j < polygon.size(); ++j) {
+      set.triangles.push_back(
+          {int(polygon[0]), int(polygon[j - 1]), int(polygon[j])});
+    }
+  }
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Point<3> p{points[i].x(), points[i].y(), points[i].z()};
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
@@ -227,9 +233,22 @@ std::size_t merge_duplicates(Point_set& set) {
   }
   std::vector<Point<3>> kept;
   kept.reserve(set.points.size());
+  std::vector<int> new_index(set.points.size());
   for (std::size_t i = 0; i < set.points.size(); ++i) {
-    if (!repeated[i]) kept.push_back(set.points[i]);
+    if (!repeated[i]) {
+      new_index[i] = static_cast<int>(kept.size());
+      kept.push_back(set.points[i]);
+    }
   }
+  for (std::size_t k = 1; k < order.size(); ++k) {  // a copy takes its first occurrence's index
+    if (repeated[order[k]]) new_index[order[k]] = new_index[order[k - 1]];
+  }
+  std::vector<std::array<int, 3>> triangles;
+  for (auto t : set.triangles) {
+    for (int& v : t) v = new_index[v];
+    if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) triangles.push_back(t);
+  }
+  set.triangles = std::move(triangles);
   const std::size_t merged = set.points.size() - kept.size();
   set.points = std::move(kept);
   return merged;

@@ -4,6 +4,7 @@
 //   meshes: .ply (ascii or binary) .off .obj .stl (ascii or binary), through CGAL's readers
 #pragma once
 
+#include <array>
 #include <sculpt/sculpt.hpp>
 #include <string>
 #include <vector>
@@ -15,6 +16,9 @@ namespace sculpt::io {
 struct Point_set {
   std::vector<Point<3>> points;  // 2D files have z = 0
   int dimension = 3;             // coordinates per point in the file: 2 or 3
+  // A mesh file's faces, as triangles (polygons split into fans): the reference a
+  // reconstruction of its vertices is compared with (sculpt bench, the tests). Empty otherwise.
+  std::vector<std::array<int, 3>> triangles;
 };
 
 // Throws io::Error with a one-line message on any problem with the file.

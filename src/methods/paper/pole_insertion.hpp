@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "delaunay.hpp"
+#include "../../core/delaunay.hpp"
 
 namespace sculpt {
 

@@ -1,0 +1,76 @@
+// The verdict on a result: one line that says whether it is what was asked for (a closed
+// 2-manifold or closed curves; a bordered 2-manifold or open curves) and, if not, what is wrong.
+#include <fmt/format.h>
+
+#include <sculpt/sculpt.hpp>
+#include <string>
+#include <vector>
+
+namespace sculpt {
+namespace {
+
+std::string plural(std::size_t count, const char* one, const char* many) {
+  return fmt::format("{} {}", count, count == 1 ? one : many);
+}
+
+std::string join(const std::vector<std::string>& parts) {
+  std::string line;
+  for (const auto& part : parts) line += (line.empty() ? "" : ", ") + part;
+  return line;
+}
+
+}  // namespace
+
+Verdict verdict(const Statistics& s) {
+  const bool surface = s.dimension == 3;
+  const bool bordered = s.kind == Surface_kind::bordered;
+  std::vector<std::string> defects;
+  if (s.facets == 0) defects.push_back(surface ? "no triangles" : "no edges");
+  if (s.non_manifold_ridges > 0) {
+    defects.push_back(surface ? plural(s.non_manifold_ridges, "non-manifold edge",
+                                       "non-manifold edges")
+                              : plural(s.non_manifold_ridges, "branching sample",
+                                       "branching samples"));
+  }
+  if (surface && s.non_manifold_vertices > 0) {
+    defects.push_back(
+        plural(s.non_manifold_vertices, "non-manifold vertex", "non-manifold vertices"));
+  }
+  if (!bordered && s.boundary_ridges > 0) {
+    defects.push_back(surface ? fmt::format("{} ({} border edges)",
+                                            plural(s.boundary_loops, "hole", "holes"),
+                                            s.boundary_ridges)
+                              : plural(s.boundary_ridges, "curve end", "curve ends"));
+  }
+  if (s.unused_samples > 0) {
+    defects.push_back(plural(s.unused_samples, "sample", "samples") + " not on it");
+  }
+
+  const std::string shape =
+      surface ? fmt::format("{}, Euler characteristic {}",
+                            plural(s.components, "component", "components"),
+                            s.euler_characteristic)
+              : plural(s.components, "component", "components");
+  const char* wanted = surface ? (bordered ? "bordered 2-manifold" : "closed 2-manifold")
+                               : (bordered ? "set of curves" : "closed curve");
+  Verdict v;
+  v.manifold = defects.empty();
+  if (v.manifold) {
+    std::string what = wanted;
+    if (surface && !bordered && s.components == 1 && s.euler_characteristic % 2 == 0) {
+      what += fmt::format(" of genus {}", (2 - s.euler_characteristic) / 2);
+    }
+    if (bordered) {
+      what += fmt::format(" with {}", surface ? plural(s.boundary_loops, "border loop",
+                                                      "border loops")
+                                              : plural(s.boundary_loops, "open curve",
+                                                       "open curves"));
+    }
+    v.line = fmt::format("{}: {}, all {} samples on it", what, shape, s.samples);
+  } else {
+    v.line = fmt::format("NOT a {}: {}; {}", wanted, join(defects), shape);
+  }
+  return v;
+}
+
+}  // namespace sculpt

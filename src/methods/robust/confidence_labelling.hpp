@@ -1,0 +1,207 @@
+// Stage 4 of the robust method: the poles labelled inner or outer by confidence, not by arrival.
+//
+// Why: the paper's breadth-first separation (section 3.1.1) keeps the first label a pole is
+// offered. On real input some samples have both poles on one side (sharp CAD edges, sparse
+// fingers, nearly touching strands); one such wrong offer early is spread by the cube and pairing
+// rules to hundreds of poles. Amenta, Choi and Kolluri's power crust (2001, section 5) labels
+// instead in order of confidence, with a priority queue; we do the same with their evidence:
+//
+//   same side:  two polar balls through one sample s that meet deeply. The weight is the cosine
+//               of the angle between their radii at s, cos(p s q), which is also the cosine of
+//               the balls' intersection angle: 1 for tangent balls, 0 at right angles.
+//   opposite:   the two poles of one sample, when they are roughly antipodal (the pair filter:
+//               cos(p+ s p-) <= -0.7); weight -cos(p+ s p-). A sample whose poles are not
+//               antipodal (at a sharp edge, in a thin part) says nothing about sides.
+//   seeds:      the convex poles (their cells touch the box) are outer, with weight 1.
+//
+// Every pole keeps the strongest evidence for each side it was offered. The queue pops the pole
+// whose evidence disagrees least, |outer - inner|; it is labelled by the stronger side and
+// offers its label to its neighbours. Evidence that arrives after a pole was labelled and is at
+// least as strong as what labelled it is recorded as a conflict: the pole is "contradicted".
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+#include <sculpt/sculpt.hpp>
+#include <utility>
+#include <vector>
+
+#include "../../core/stage_clock.hpp"
+
+namespace sculpt {
+
+// Below this cosine the two poles of a sample count as antipodal (robust.md: -0.5 ... -0.9
+// behave alike).
+constexpr double antipodal_pair_cosine = -0.7;
+
+// The evidence between poles: for each pole, its neighbours with a weight and whether the
+// evidence says "same side" or "opposite sides". Compressed rows.
+struct Pole_evidence {
+  struct Link {
+    int pole;
+    float weight;
+    bool opposite;
+  };
+  std::vector<int> offsets;
+  std::vector<Link> links;
+};
+
+// Links pole p to the poles of the samples on its ball (the vertices of its Delaunay cell): both
+// balls pass through that sample, so the angle between them there is the evidence.
+// `pole_cells[p]` are the sites of pole p's cell.
+template <int D>
+Pole_evidence pole_evidence(const Reconstruction<D>& result,
+                            const std::vector<Cell<D>>& pole_cells) {
+  const auto& stage = result.poles;
+  const int n = static_cast<int>(stage.positive_pole.size());
+  const int pole_count = static_cast<int>(stage.poles.size());
+  struct Directed {
+    int from, to;
+    float weight;
+    bool opposite;
+  };
+  std::vector<Directed> directed;
+  directed.reserve(static_cast<std::size_t>(pole_count) * 2 * (D + 1) * 2);
+  for (int p = 0; p < pole_count; ++p) {
+    for (int s : pole_cells[p]) {
+      if (s >= n) continue;  // a box corner
+      for (int q : {stage.positive_pole[s], stage.negative_pole[s]}) {
+        if (q < 0 || q == p) continue;
+        const auto& sample = result.sites[s];
+        double dot = 0, a2 = 0, b2 = 0;
+        for (int k = 0; k < D; ++k) {
+          const double a = stage.poles[p].center[k] - sample[k];
+          const double b = stage.poles[q].center[k] - sample[k];
+          dot += a * b;
+          a2 += a * a;
+          b2 += b * b;
+        }
+        if (a2 <= 0 || b2 <= 0) continue;
+        const double cosine = dot / std::sqrt(a2 * b2);
+        const int plus = stage.positive_pole[s], minus = stage.negative_pole[s];
+        const bool pair = (p == plus && q == minus) || (p == minus && q == plus);
+        if (pair && cosine <= antipodal_pair_cosine) {
+          directed.push_back({p, q, float(-cosine), true});
+          directed.push_back({q, p, float(-cosine), true});
+        } else if (!pair && cosine > 0) {
+          directed.push_back({p, q, float(cosine), false});
+          directed.push_back({q, p, float(cosine), false});
+        }
+      }
+    }
+  }
+  // One link per (from, to, kind), with the strongest weight.
+  std::sort(directed.begin(), directed.end(), [](const Directed& a, const Directed& b) {
+    if (a.from != b.from) return a.from < b.from;
+    if (a.to != b.to) return a.to < b.to;
+    if (a.opposite != b.opposite) return a.opposite < b.opposite;
+    return a.weight > b.weight;
+  });
+  Pole_evidence evidence;
+  evidence.offsets.assign(pole_count + 1, 0);
+  for (std::size_t i = 0; i < directed.size(); ++i) {
+    const Directed& d = directed[i];
+    if (i > 0 && directed[i - 1].from == d.from && directed[i - 1].to == d.to &&
+        directed[i - 1].opposite == d.opposite) {
+      continue;
+    }
+    evidence.links.push_back({d.to, d.weight, d.opposite});
+    ++evidence.offsets[d.from + 1];
+  }
+  for (int p = 0; p < pole_count; ++p) evidence.offsets[p + 1] += evidence.offsets[p];
+  return evidence;
+}
+
+template <int D>
+class Confidence_labelling {
+ public:
+  Confidence_labelling(Reconstruction<D>& result, const Pole_evidence& evidence,
+                       const Stage_clock& clock)
+      : stage_(result.propagation),
+        evidence_(evidence),
+        clock_(clock),
+        pole_count_(static_cast<int>(result.poles.poles.size())),
+        offers_(static_cast<std::size_t>(pole_count_)) {
+    stage_.labels.assign(pole_count_, Label::unlabelled);
+  }
+
+  void run(const Seeds_stage& seeds) {
+    for (int seed : seeds.outer_seeds) {
+      offers_[seed].side[side(Label::outer)] = {1.0f, -1, Label_reason::convex_seed};
+      queue_.push({seed_priority, seed});
+    }
+    std::size_t popped = 0;
+    while (!queue_.empty()) {
+      const auto [priority, pole] = queue_.top();
+      queue_.pop();
+      if (stage_.labels[pole] != Label::unlabelled) continue;
+      if (priority != seed_priority && priority != confidence(pole)) {
+        continue;  // a stale entry: the pole has been offered stronger evidence since
+      }
+      label(pole);
+      if (++popped % 65536 == 0) clock_.report(double(popped) / double(pole_count_));
+    }
+    for (Label label : stage_.labels) stage_.unlabelled += label == Label::unlabelled;
+  }
+
+ private:
+  struct Offer {
+    float weight = 0;
+    int source = -1;
+    Label_reason reason = Label_reason::pairing;
+  };
+  struct Offers {
+    Offer side[2];  // strongest evidence for inner (0) and outer (1)
+  };
+  struct Entry {
+    float priority;
+    int pole;
+    bool operator<(const Entry& other) const { return priority < other.priority; }
+  };
+
+  static constexpr float seed_priority = 2;  // seeds first: evidence weighs at most 1
+
+  static int side(Label label) { return label == Label::outer ? 1 : 0; }
+  static Label label_of_side(int s) { return s == 1 ? Label::outer : Label::inner; }
+
+  float confidence(int pole) const {
+    return std::abs(offers_[pole].side[1].weight - offers_[pole].side[0].weight);
+  }
+
+  void label(int pole) {
+    const Offers& offers = offers_[pole];
+    const int winner = offers.side[1].weight >= offers.side[0].weight ? 1 : 0;
+    const Label label = label_of_side(winner);
+    const Offer& why = offers.side[winner];
+    stage_.labels[pole] = label;
+    stage_.events.push_back({pole, label, why.source, why.reason, why.weight});
+
+    for (int i = evidence_.offsets[pole]; i < evidence_.offsets[pole + 1]; ++i) {
+      const auto& link = evidence_.links[i];
+      const Label offered =
+          link.opposite ? (label == Label::inner ? Label::outer : Label::inner) : label;
+      const Label_reason reason = link.opposite ? Label_reason::pairing : Label_reason::ball_overlap;
+      const Label current = stage_.labels[link.pole];
+      if (current == Label::unlabelled) {
+        Offer& offer = offers_[link.pole].side[side(offered)];
+        if (link.weight > offer.weight) {
+          offer = {link.weight, pole, reason};
+          queue_.push({confidence(link.pole), link.pole});
+        }
+      } else if (current != offered &&
+                 link.weight >= offers_[link.pole].side[side(current)].weight) {
+        stage_.conflicts.push_back({link.pole, offered, pole, reason, link.weight});
+      }
+    }
+  }
+
+  Propagation_stage& stage_;
+  const Pole_evidence& evidence_;
+  const Stage_clock& clock_;
+  int pole_count_;
+  std::vector<Offers> offers_;
+  std::priority_queue<Entry> queue_;
+};
+
+}  // namespace sculpt

@@ -1,0 +1,409 @@
+// Stage 6b of the robust method: carve the hull of the samples from the outside in, one cell at
+// a time, keeping the surface a 2-manifold (a closed curve in 2D) after every removal.
+//
+// The solid starts as every all-sample cell of DT(S ∪ BBV) (the hull of the samples); the
+// outside is every other cell. A cell judged outer (cell_classification.hpp) is removed when it
+// touches the outside through k of its facets and the removal keeps the surface a manifold,
+// which is Boissonnat's condition for sculpting (1984): the part of the cell's boundary that
+// touches the outside must be a disk. It is, unless the simplex spanned by the vertices opposite
+// those k facets already touches the outside:
+//   k = 1        its opposite vertex must not be on the surface (or the surface pinches there);
+//   k = 2 (3D)   its opposite edge must not be on the surface (or the surface folds over it);
+//   k >= D       always (the rest of its boundary is one facet shared with the solid).
+// A removal must also leave every one of its samples on some solid cell, so that the surface
+// interpolates them all. Cells are removed largest circumball first (as Boissonnat does); a cell
+// that cannot be removed now is tried again whenever a neighbour is removed. Outer cells that
+// never can be stay in the solid and are counted.
+//
+// Last, samples left buried inside the solid (their surface passed over them, as when a quad of
+// nearly cospherical samples takes the other diagonal) are exposed by removing one more cell
+// of theirs, when that keeps the manifold.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cstdint>
+#include <utility>
+#include <queue>
+#include <sculpt/sculpt.hpp>
+#include <vector>
+
+namespace sculpt {
+
+// What cell_classification.hpp says of every finite cell of DT(S ∪ BBV), by cell index.
+struct Cell_judgement {
+  std::vector<std::uint8_t> outer;  // 0: inner; else 1 + Carve_reason
+  std::vector<float> radius2;       // squared circumradius (all-sample cells)
+};
+
+template <class Traits>
+class Manifold_carving {
+  static constexpr int D = Traits::dimension;
+  using Triangulation = typename Traits::Triangulation;
+  using Cell_handle = typename Traits::Cell_handle;
+  using Vertex_handle = typename Triangulation::Vertex_handle;
+
+ public:
+  Manifold_carving(const Triangulation& triangulation, Reconstruction<D>& result,
+                   const Cell_judgement& judgement)
+      : triangulation_(triangulation),
+        result_(result),
+        judgement_(judgement),
+        sample_count_(static_cast<int>(result.sample_count())),
+        outside_(result.delaunay.cell_count, 0),
+        solid_cells_at_(sample_count_, 0),
+        outside_cells_at_(sample_count_, 0) {}
+
+  void run() {
+    start_from_hull();
+    carve_outer_cells();
+    // Punching leaves fragments of webs (bridges between strands) that are whole groups again.
+    for (int round = 0; round < 4; ++round) {
+      const std::size_t before = result_.carving.events.size();
+      open_handles();
+      punch_through();
+      if (result_.carving.events.size() == before) break;
+    }
+    expose_buried_samples();
+    record_what_stayed();
+  }
+
+  bool is_outside(Cell_handle cell) const {
+    return triangulation_.is_infinite(cell) || outside_[cell->info()];
+  }
+
+  // Stage 7: the cells left in the solid.
+  void collect_solid() const {
+    for (auto cell : Traits::finite_cells(triangulation_)) {
+      if (is_outside(cell)) continue;
+      Cell<D> sites;
+      for (int i = 0; i <= D; ++i) sites[i] = cell->vertex(i)->info();
+      result_.solid.push_back(sites);
+    }
+  }
+
+  // Stage 8: the facets between the solid and the outside, facing the outside.
+  void collect_surface() const {
+    for (auto cell : Traits::finite_cells(triangulation_)) {
+      if (is_outside(cell)) continue;
+      for (int i = 0; i <= D; ++i) {
+        if (!is_outside(cell->neighbor(i))) continue;
+        Facet<D> facet;
+        for (int j = 0; j < D; ++j) facet[j] = cell->vertex(Traits::facet_vertex[i][j])->info();
+        result_.surface.push_back(facet);
+      }
+    }
+  }
+
+ private:
+  struct Entry {
+    float radius2;
+    Cell_handle cell;
+    bool operator<(const Entry& other) const { return radius2 < other.radius2; }
+  };
+
+  bool is_sample(Vertex_handle v) const {
+    return !triangulation_.is_infinite(v) && v->info() < sample_count_;
+  }
+  bool judged_outer(Cell_handle cell) const { return judgement_.outer[cell->info()] != 0; }
+
+  void start_from_hull() {
+    for (auto cell : Traits::finite_cells(triangulation_)) {
+      bool all_samples = true;
+      for (int i = 0; i <= D; ++i) all_samples = all_samples && is_sample(cell->vertex(i));
+      outside_[cell->info()] = !all_samples;
+      for (int i = 0; i <= D; ++i) {
+        if (!is_sample(cell->vertex(i))) continue;
+        ++(all_samples ? solid_cells_at_ : outside_cells_at_)[cell->vertex(i)->info()];
+      }
+    }
+  }
+
+  int outside_facets(Cell_handle cell, int opposite[]) const {
+    int k = 0;
+    for (int i = 0; i <= D; ++i) {
+      if (is_outside(cell->neighbor(i))) opposite[k++] = i;
+    }
+    return k;
+  }
+
+  bool vertex_on_surface(Vertex_handle v) const { return outside_cells_at_[v->info()] > 0; }
+
+  bool edge_on_surface(Cell_handle cell, int i, int j) const {
+    if constexpr (D == 3) {
+      const auto first = triangulation_.incident_cells(cell, i, j);
+      auto c = first;
+      do {
+        if (is_outside(c)) return true;
+      } while (++c != first);
+    }
+    return false;
+  }
+
+  // Boissonnat's condition, and no sample left off the solid.
+  bool can_remove(Cell_handle cell) const {
+    for (int i = 0; i <= D; ++i) {
+      if (solid_cells_at_[cell->vertex(i)->info()] <= 1) return false;
+    }
+    int opposite[D + 1];
+    const int k = outside_facets(cell, opposite);
+    if (k == 0) return false;
+    if (k >= D) return true;
+    if (k == 1) return !vertex_on_surface(cell->vertex(opposite[0]));
+    return !edge_on_surface(cell, opposite[0], opposite[1]);  // k = 2 in 3D
+  }
+
+  void set_outside(Cell_handle cell, bool outside) {
+    outside_[cell->info()] = outside;
+    const int change = outside ? 1 : -1;
+    for (int i = 0; i <= D; ++i) {
+      const int s = cell->vertex(i)->info();
+      solid_cells_at_[s] -= change;
+      outside_cells_at_[s] += change;
+    }
+  }
+
+  void remove(Cell_handle cell, Carve_reason reason) {
+    set_outside(cell, true);
+    result_.carving.events.push_back({cell->info(), reason});
+  }
+
+  void push_if_outer(Cell_handle cell) {
+    if (!is_outside(cell) && judged_outer(cell)) {
+      queue_.push({judgement_.radius2[cell->info()], cell});
+    }
+  }
+
+  void carve_outer_cells() {
+    for (auto cell : Traits::finite_cells(triangulation_)) {
+      if (is_outside(cell) || !judged_outer(cell)) continue;
+      for (int i = 0; i <= D; ++i) {
+        if (is_outside(cell->neighbor(i))) {
+          push_if_outer(cell);
+          break;
+        }
+      }
+    }
+    carve_queue();
+  }
+
+  void carve_queue() {
+    while (!queue_.empty()) {
+      const Cell_handle cell = queue_.top().cell;
+      queue_.pop();
+      if (is_outside(cell) || !can_remove(cell)) continue;
+      remove(cell, static_cast<Carve_reason>(judgement_.outer[cell->info()] - 1));
+      for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
+    }
+  }
+
+  // The surface is a 2-manifold at a vertex when its facets around the vertex form one fan:
+  // 3D, the link edges (the facets' sides opposite v) make one cycle; 2D, two edges meet at v.
+  // A vertex on no facet passes.
+  bool manifold_at(Vertex_handle v) {
+    star_.clear();
+    Traits::incident_cells(triangulation_, v, star_);
+    link_.clear();
+    for (Cell_handle cell : star_) {
+      if (is_outside(cell)) continue;
+      const int at = cell->index(v);
+      for (int i = 0; i <= D; ++i) {
+        if (i == at || !is_outside(cell->neighbor(i))) continue;
+        std::array<int, 2> edge{-1, -1};
+        for (int j = 0, k = 0; j <= D; ++j) {
+          if (j != at && j != i) edge[k++] = cell->vertex(j)->info();
+        }
+        link_.push_back(edge);
+      }
+    }
+    if (link_.empty()) return true;
+    if constexpr (D == 2) {
+      return link_.size() == 2;
+    } else {
+      // One cycle: every link vertex has degree 2, and walking from one edge visits them all.
+      std::vector<std::pair<int, int>> ends;
+      for (const auto& e : link_) {
+        ends.push_back({e[0], e[1]});
+        ends.push_back({e[1], e[0]});
+      }
+      std::sort(ends.begin(), ends.end());
+      for (std::size_t i = 0; i < ends.size(); i += 2) {
+        if (i + 1 >= ends.size() || ends[i].first != ends[i + 1].first) return false;
+        if (i + 2 < ends.size() && ends[i + 2].first == ends[i].first) return false;
+      }
+      const auto next = [&](int at, int from) {
+        const auto it = std::lower_bound(ends.begin(), ends.end(), std::make_pair(at, INT_MIN));
+        return it->second == from ? (it + 1)->second : it->second;
+      };
+      const int start = link_[0][0];
+      int previous = start, current = link_[0][1];
+      std::size_t length = 1;
+      while (current != start && length <= link_.size()) {
+        const int after = next(current, previous);
+        previous = current;
+        current = after;
+        ++length;
+      }
+      return length == link_.size();
+    }
+  }
+
+  // Sculpting by Boissonnat's condition never changes the topology of the solid: a torus stays
+  // filled, its hole a wall of outer cells that cannot be removed one at a time. Each connected
+  // group of outer cells still in the solid is tried as a whole: it goes if the surface stays a
+  // manifold at every vertex of the group and no sample leaves the solid.
+  void open_handles() {
+    std::vector<std::uint8_t> seen(outside_.size(), 0);
+    std::vector<Cell_handle> group, stack;
+    for (int round = 0; round < 4; ++round) {
+      bool opened = false;
+      std::fill(seen.begin(), seen.end(), 0);
+      for (auto start : Traits::finite_cells(triangulation_)) {
+        if (is_outside(start) || !judged_outer(start) || seen[start->info()]) continue;
+        group.clear();
+        stack.assign(1, start);
+        seen[start->info()] = 1;
+        while (!stack.empty()) {
+          const Cell_handle cell = stack.back();
+          stack.pop_back();
+          group.push_back(cell);
+          for (int i = 0; i <= D; ++i) {
+            const Cell_handle next = cell->neighbor(i);
+            if (is_outside(next) || !judged_outer(next) || seen[next->info()]) continue;
+            seen[next->info()] = 1;
+            stack.push_back(next);
+          }
+        }
+        opened = try_remove_group(group) || opened;
+      }
+      if (!opened) break;
+    }
+  }
+
+  // A web of outer cells spanning a loop of the shape (between the strands of a knot) has no free
+  // edge to carve from: its first removable cell is blocked by a vertex (or edge) already on the
+  // surface on the web's other side. Removing that cell together with the outer cells around the
+  // blocking vertex (edge) punches a hole through the web at once; it goes if the surface stays a
+  // manifold there, and Boissonnat's carving then widens the hole.
+  void punch_through() {
+    std::vector<Cell_handle> group;
+    for (int round = 0; round < 4; ++round) {
+      bool punched = false;
+      for (Cell_handle cell : Traits::finite_cells(triangulation_)) {
+        if (is_outside(cell) || !judged_outer(cell)) continue;
+        int opposite[D + 1];
+        const int k = outside_facets(cell, opposite);
+        if (k == 0 || k >= D) continue;
+        group.assign(1, cell);
+        const auto add = [&](Cell_handle c) {
+          if (c != cell && !is_outside(c) && judged_outer(c)) group.push_back(c);
+        };
+        if (k == 1) {
+          star_.clear();
+          Traits::incident_cells(triangulation_, cell->vertex(opposite[0]), star_);
+          for (Cell_handle c : star_) add(c);
+        } else if constexpr (D == 3) {
+          const auto first = triangulation_.incident_cells(cell, opposite[0], opposite[1]);
+          auto c = first;
+          do add(c);
+          while (++c != first);
+        }
+        punched = try_remove_group(group) || punched;
+      }
+      if (!punched) break;
+    }
+  }
+
+  bool try_remove_group(const std::vector<Cell_handle>& group) {
+    bool touches_outside = false;
+    for (Cell_handle cell : group) {
+      for (int i = 0; i <= D; ++i) touches_outside = touches_outside || is_outside(cell->neighbor(i));
+    }
+    if (!touches_outside) return false;  // a pocket inside the solid: leave it filled
+    for (Cell_handle cell : group) set_outside(cell, true);
+    bool fine = true;
+    for (Cell_handle cell : group) {
+      for (int i = 0; i <= D && fine; ++i) {
+        const Vertex_handle v = cell->vertex(i);
+        fine = solid_cells_at_[v->info()] > 0 && manifold_at(v);
+      }
+      if (!fine) break;
+    }
+    if (!fine) {
+      for (Cell_handle cell : group) set_outside(cell, false);
+      return false;
+    }
+    for (Cell_handle cell : group) {
+      result_.carving.events.push_back(
+          {cell->info(), static_cast<Carve_reason>(judgement_.outer[cell->info()] - 1)});
+    }
+    // Removing the group can make Boissonnat's condition hold for outer cells next to it.
+    for (Cell_handle cell : group) {
+      for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
+    }
+    carve_queue();
+    return true;
+  }
+
+  bool buried(int sample) const {
+    return solid_cells_at_[sample] > 0 && outside_cells_at_[sample] == 0;
+  }
+
+  void expose_buried_samples() {
+    std::vector<Vertex_handle> waiting;
+    for (auto v : Traits::finite_vertices(triangulation_)) {
+      if (is_sample(v) && buried(v->info())) waiting.push_back(v);
+    }
+    // A removal can make a deeper sample reachable: a few rounds, while they help.
+    for (int round = 0; round < 8 && !waiting.empty(); ++round) {
+      std::vector<Vertex_handle> still;
+      for (Vertex_handle v : waiting) {
+        if (!buried(v->info())) continue;
+        std::vector<Cell_handle> star;
+        Traits::incident_cells(triangulation_, v, star);
+        Cell_handle best{};
+        float best_radius2 = -1;
+        for (Cell_handle cell : star) {
+          if (triangulation_.is_infinite(cell) || is_outside(cell) || !can_remove(cell)) continue;
+          const float r2 = judgement_.radius2[cell->info()];
+          if (r2 > best_radius2) {
+            best = cell;
+            best_radius2 = r2;
+          }
+        }
+        if (best_radius2 >= 0) {
+          remove(best, Carve_reason::exposes_sample);
+        } else {
+          still.push_back(v);
+        }
+      }
+      if (still.size() == waiting.size()) break;
+      waiting.swap(still);
+    }
+  }
+
+  void record_what_stayed() {
+    for (auto cell : Traits::finite_cells(triangulation_)) {
+      if (!is_outside(cell) && judged_outer(cell)) {
+        result_.carving.kept_outer_cells.push_back(cell->info());
+      }
+    }
+    for (int s = 0; s < sample_count_; ++s) {
+      if (buried(s)) result_.carving.buried_samples.push_back(s);
+    }
+  }
+
+  const Triangulation& triangulation_;
+  Reconstruction<D>& result_;
+  const Cell_judgement& judgement_;
+  int sample_count_;
+  std::vector<std::uint8_t> outside_;
+  std::vector<int> solid_cells_at_;    // per sample: incident cells still in the solid
+  std::vector<int> outside_cells_at_;  // per sample: incident cells outside
+  std::priority_queue<Entry> queue_;
+  std::vector<Cell_handle> star_;
+  std::vector<std::array<int, 2>> link_;
+};
+
+}  // namespace sculpt

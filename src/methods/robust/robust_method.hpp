@@ -1,0 +1,78 @@
+// The robust method, after the shared stages 1-3 (Delaunay, poles, seeds):
+//   4.  labelling   poles labelled by confidence (confidence_labelling.hpp)
+//   6b. carving     the hull's all-sample cells judged (cell_classification.hpp) and carved from
+//                   the outside in, keeping a 2-manifold (manifold_carving.hpp)
+//   7.  solid       the cells left
+//   8.  surface     the facets between the solid and the outside
+// No pole is inserted: a cell judged outer is removed directly, so DT(S ∪ OUP) is never built.
+// Bordered surfaces (section 4) keep the paper's insertion of UP and its extraction rule, with
+// the confidence labels; their own rule is future work.
+#pragma once
+
+#include <sculpt/sculpt.hpp>
+#include <vector>
+
+#include "../../core/label_statistics.hpp"
+#include "../../core/stage_clock.hpp"
+#include "../paper/pole_insertion.hpp"
+#include "../paper/surface_extraction.hpp"
+#include "cell_classification.hpp"
+#include "confidence_labelling.hpp"
+#include "manifold_carving.hpp"
+
+namespace sculpt {
+
+// The sites of each pole's Delaunay cell.
+template <class Traits>
+std::vector<Cell<Traits::dimension>> pole_cells(const typename Traits::Triangulation& triangulation,
+                                                const Reconstruction<Traits::dimension>& result) {
+  constexpr int D = Traits::dimension;
+  const auto& poles = result.poles.poles;
+  std::vector<int> pole_of_cell(result.delaunay.cell_count, -1);
+  for (std::size_t p = 0; p < poles.size(); ++p) pole_of_cell[poles[p].cell] = static_cast<int>(p);
+  std::vector<Cell<D>> cells(poles.size());
+  for (auto cell : Traits::finite_cells(triangulation)) {
+    const int pole = pole_of_cell[cell->info()];
+    if (pole < 0) continue;
+    for (int i = 0; i <= D; ++i) cells[pole][i] = cell->vertex(i)->info();
+  }
+  return cells;
+}
+
+template <class Traits>
+void run_robust_method(typename Traits::Triangulation& triangulation,
+                       Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
+  clock.start("labelling");
+  {
+    const Pole_evidence evidence = pole_evidence(result, pole_cells<Traits>(triangulation, result));
+    Confidence_labelling<Traits::dimension>(result, evidence, clock).run(result.seeds);
+  }
+  count_labels(result);
+
+  if (result.options.kind == Surface_kind::bordered) {
+    clock.start("insertion");
+    choose_inserted_poles(result);
+    insert_poles<Traits>(triangulation, result);
+    result.stats.inserted_poles = result.insertion.inserted_poles.size();
+    result.stats.sculpted_cells = result.sculpted_delaunay.cell_count;
+    clock.start("solid");
+    sculpt_solid<Traits>(triangulation, result);
+    clock.start("surface");
+    extract_surface<Traits>(triangulation, result);
+    return;
+  }
+
+  clock.start("carving");
+  const Cell_judgement judgement = judge_cells<Traits>(triangulation, result, clock);
+  Manifold_carving<Traits> carving(triangulation, result, judgement);
+  carving.run();
+  result.stats.carved_cells = result.carving.events.size();
+  result.stats.kept_outer_cells = result.carving.kept_outer_cells.size();
+
+  clock.start("solid");
+  carving.collect_solid();
+  clock.start("surface");
+  carving.collect_surface();
+}
+
+}  // namespace sculpt
