@@ -1,5 +1,7 @@
 // The `sculpt` command as a user runs it: outputs, statistics, and one clear line and a
 // non-zero exit on bad input, with no output file left behind.
+#include <fmt/format.h>
+#include "shapes/shapes.hpp"
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -36,13 +38,16 @@ Command_result run_sculpt(const std::string& arguments) {
 TEST(Cli, ReconstructsAnExampleWithSolidAndStatistics) {
   const auto surface = output_path("torus.stl"), solid = output_path("torus.vtu"),
              stats = output_path("torus.json");
-  const Command_result run = run_sculpt("reconstruct --example torus -o " + surface + " --solid " +
-                                        solid + " --stats " + stats);
+  const Command_result run = run_sculpt("reconstruct --method paper --example torus -o " +
+                                        surface + " --solid " + solid + " --stats " + stats);
   ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("verdict: closed 2-manifold of genus 1"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("conflicts"), std::string::npos);
   EXPECT_NE(run.out.find("propagation"), std::string::npos);
   const auto json = nlohmann::json::parse(read_file(stats));
   EXPECT_EQ(json["dimension"], 3);
+  EXPECT_EQ(json["method"], "paper");
+  EXPECT_EQ(json["manifold"], true);
   EXPECT_EQ(json["euler_characteristic"], 0);
   EXPECT_EQ(json["boundary_ridges"], 0);
   EXPECT_EQ(json["stages"].size(), 9u);
@@ -92,6 +97,41 @@ TEST(Cli, BadInputGivesOneLineAndNoOutput) {
     EXPECT_EQ(run.err.rfind("sculpt: error: ", 0), 0u) << name << ": " << run.err;
     EXPECT_FALSE(std::filesystem::exists(output)) << name;
   }
+}
+
+TEST(Cli, VerdictAndRequireManifold) {
+  // A sphere with one sample at its centre: the paper method leaves that sample off the
+  // surface, and says so; --require-manifold turns that into exit code 3, the output written.
+  std::string points;
+  for (const auto& p : shapes::sphere(300)) points += fmt::format("{} {} {}\n", p[0], p[1], p[2]);
+  points += "0 0 0.01\n";
+  const auto input = write_file("sphere-and-centre.xyz", points);
+  const auto output = output_path("sphere-and-centre.stl");
+  const Command_result plain = run_sculpt("reconstruct --method paper " + input + " -o " + output);
+  EXPECT_EQ(plain.exit_code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("verdict: NOT a closed 2-manifold: 1 sample not on it"),
+            std::string::npos)
+      << plain.out;
+  const Command_result quiet =
+      run_sculpt("reconstruct -q --method paper " + input + " -o " + output);
+  EXPECT_NE(quiet.err.find("NOT a closed 2-manifold"), std::string::npos) << "never silent";
+  std::filesystem::remove(output);
+  const Command_result strict =
+      run_sculpt("reconstruct --require-manifold --method paper " + input + " -o " + output);
+  EXPECT_EQ(strict.exit_code, 3);
+  EXPECT_TRUE(std::filesystem::exists(output));
+  // The robust method brings the sample onto the surface.
+  const Command_result robust = run_sculpt("reconstruct --require-manifold " + input + " -o " + output);
+  EXPECT_EQ(robust.exit_code, 0) << robust.out;
+  EXPECT_NE(robust.out.find("method robust"), std::string::npos);
+  EXPECT_NE(robust.out.find("verdict: closed 2-manifold"), std::string::npos) << robust.out;
+}
+
+TEST(Cli, UnknownMethodIsRefused) {
+  const Command_result run =
+      run_sculpt("reconstruct --method crust --example star -o " + output_path("x.svg"));
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_FALSE(std::filesystem::exists(output_path("x.svg")));
 }
 
 TEST(Cli, MergeDuplicatesOnRequest) {

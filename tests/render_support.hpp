@@ -14,13 +14,20 @@ inline render::Headless_renderer& headless() {
   return *renderer;
 }
 
+// The goldens and layer tests show the paper's stages (DT(S + OUP) exists only there).
+inline Options paper_method() {
+  Options options;
+  options.method = Method::paper;
+  return options;
+}
+
 inline const Reconstruction<2>& star_reconstruction() {
-  static const auto result = reconstruct(shapes::star(100).samples);
+  static const auto result = reconstruct(shapes::star(100).samples, paper_method());
   return result;
 }
 
 inline const Reconstruction<3>& bumpy_reconstruction() {
-  static const auto result = reconstruct(shapes::bumpy_sphere(1500));
+  static const auto result = reconstruct(shapes::bumpy_sphere(1500), paper_method());
   return result;
 }
 

@@ -10,7 +10,11 @@ namespace sculpt {
 namespace {
 
 const Reconstruction<2>& star() {
-  static const auto result = reconstruct(shapes::star(80).samples);
+  static const auto result = [] {
+    Options paper;
+    paper.method = Method::paper;
+    return reconstruct(shapes::star(80).samples, paper);
+  }();
   return result;
 }
 

@@ -1,5 +1,7 @@
 // The intermediate stages are what the viewer shows and a student reads: check that each one
 // means what the API says it means.
+#include <map>
+#include <set>
 #include <cmath>
 
 #include "shapes/shapes.hpp"
@@ -123,16 +125,84 @@ void check_stages(const Reconstruction<D>& r) {
                                              "insertion", "solid", "surface", "topology"}));
 }
 
+Options paper_method() {
+  Options options;
+  options.method = Method::paper;
+  return options;
+}
+
+// The robust method's stages: a labelling in which every event is justified by an earlier one,
+// and a carving that removes distinct all-sample cells, leaving the solid whose boundary is the
+// surface.
+template <int D>
+void check_robust_stages(const Reconstruction<D>& r) {
+  std::vector<std::string> names;
+  for (const auto& stage : r.stats.stages) names.push_back(stage.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"checks", "delaunay", "poles", "seeds", "labelling",
+                                             "carving", "solid", "surface", "topology"}));
+  std::vector<int> labelled_at(r.poles.poles.size(), -1);
+  for (std::size_t i = 0; i < r.propagation.events.size(); ++i) {
+    const auto& event = r.propagation.events[i];
+    ASSERT_EQ(labelled_at[event.pole], -1) << "pole labelled twice";
+    labelled_at[event.pole] = static_cast<int>(i);
+    EXPECT_EQ(r.propagation.labels[event.pole], event.label);
+    EXPECT_GE(event.weight, 0.0f);
+    EXPECT_LE(event.weight, 1.0f);
+    if (event.reason == Label_reason::convex_seed) {
+      EXPECT_TRUE(r.poles.poles[event.pole].convex);
+    } else {
+      ASSERT_GE(event.source, 0);
+      EXPECT_GE(labelled_at[event.source], 0) << "labelled by a pole not yet labelled";
+      EXPECT_EQ(event.label == r.propagation.labels[event.source],
+                event.reason == Label_reason::ball_overlap);
+    }
+  }
+  EXPECT_TRUE(r.insertion.inserted_poles.empty()) << "the robust method inserts no pole";
+  const int n = static_cast<int>(r.sample_count());
+  std::set<Cell<D>> solid;
+  std::vector<bool> carved(r.delaunay.cells.size(), false);
+  for (const auto& event : r.carving.events) {
+    ASSERT_LT(static_cast<std::size_t>(event.cell), r.delaunay.cells.size());
+    EXPECT_FALSE(carved[event.cell]) << "a cell carved twice";
+    carved[event.cell] = true;
+    for (int v : r.delaunay.cells[event.cell]) EXPECT_LT(v, n) << "carved a non-sample cell";
+  }
+  for (std::size_t c = 0; c < r.delaunay.cells.size(); ++c) {
+    bool all_samples = true;
+    for (int v : r.delaunay.cells[c]) all_samples = all_samples && v < n;
+    if (all_samples && !carved[c]) solid.insert(r.delaunay.cells[c]);
+  }
+  EXPECT_EQ(solid, std::set<Cell<D>>(r.solid.begin(), r.solid.end()));
+  // Each surface facet is a facet of exactly one solid cell.
+  std::map<Facet<D>, int> solid_facets;
+  for (const auto& cell : r.solid) {
+    for (int skip = 0; skip <= D; ++skip) {
+      Facet<D> f;
+      for (int j = 0, k = 0; j <= D; ++j) {
+        if (j != skip) f[k++] = cell[j];
+      }
+      std::sort(f.begin(), f.end());
+      ++solid_facets[f];
+    }
+  }
+  for (auto f : r.surface) {
+    std::sort(f.begin(), f.end());
+    EXPECT_EQ(solid_facets[f], 1);
+  }
+}
+
 TEST(Stages, Curve2d) {
-  check_stages(reconstruct(shapes::star(150).samples));
+  check_stages(reconstruct(shapes::star(150).samples, paper_method()));
+  check_robust_stages(reconstruct(shapes::star(150).samples));
 }
 
 TEST(Stages, Surface3d) {
-  check_stages(reconstruct(shapes::torus(2000)));
+  check_stages(reconstruct(shapes::torus(2000), paper_method()));
+  check_robust_stages(reconstruct(shapes::torus(2000)));
 }
 
 TEST(Stages, BorderedSurface3d) {
-  Options options;
+  Options options = paper_method();
   options.kind = Surface_kind::bordered;
   const auto result = reconstruct(shapes::saddle(20), options);
   check_stages(result);
@@ -147,7 +217,7 @@ TEST(Stages, BorderedSurface3d) {
 }
 
 TEST(Stages, KeepTriangulationsOffStillCountsCells) {
-  Options options;
+  Options options = paper_method();
   options.keep_triangulations = false;
   const auto result = reconstruct(shapes::torus(1000), options);
   EXPECT_TRUE(result.delaunay.cells.empty());
@@ -167,7 +237,7 @@ TEST(Stages, ProgressCanCancel) {
 }
 
 TEST(Stages, BoxFactorIsAParameter) {
-  Options options;
+  Options options = paper_method();
   options.box_factor = 1.5;
   const auto result = reconstruct(shapes::star(100).samples, options);
   check_stages(result);

@@ -12,23 +12,50 @@ TEST(Surfaces_3d, SphereIsAClosedManifoldOfGenusZero) {
   EXPECT_EQ(result.stats.inserted_poles, 0u) << "a convex shape needs no sculpting";
 }
 
+Options with_method(Method method) {
+  Options options;
+  options.method = method;
+  return options;
+}
+
 TEST(Surfaces_3d, TorusHasEulerCharacteristicZero) {
-  const auto result = reconstruct(shapes::torus(4000));
-  testing::expect_closed_manifold(result, 0);
-  EXPECT_GT(result.stats.inserted_poles, 0u) << "the hole must be sculpted out";
+  const auto paper = reconstruct(shapes::torus(4000), with_method(Method::paper));
+  testing::expect_closed_manifold(paper, 0);
+  EXPECT_GT(paper.stats.inserted_poles, 0u) << "the hole must be sculpted out";
+  // The robust method opens the hole by carving, which Boissonnat's condition alone cannot.
+  const auto robust = reconstruct(shapes::torus(4000), with_method(Method::robust));
+  testing::expect_closed_manifold(robust, 0);
+  EXPECT_GT(robust.stats.carved_cells, 0u);
 }
 
 TEST(Surfaces_3d, NonConvexBumpySphere) {
-  const auto result = reconstruct(shapes::bumpy_sphere(6000));
-  testing::expect_closed_manifold(result, 2);
-  EXPECT_GT(result.stats.inserted_poles, 0u);
-  EXPECT_EQ(result.stats.conflicts, 0u);
+  for (Method method : {Method::paper, Method::robust}) {
+    SCOPED_TRACE(to_string(method));
+    const auto result = reconstruct(shapes::bumpy_sphere(6000), with_method(method));
+    testing::expect_closed_manifold(result, 2);
+    EXPECT_EQ(result.stats.conflicts, 0u);
+    EXPECT_GT(method == Method::paper ? result.stats.inserted_poles : result.stats.carved_cells, 0u);
+  }
+}
+
+TEST(Surfaces_3d, RobustMethodGivesTheRightGenusOnEveryClosedExample) {
+  for (const char* name : {"sphere", "torus", "bumpy", "torso", "torus-knot", "three-holes",
+                           "bumpy-nonuniform"}) {
+    SCOPED_TRACE(name);
+    const auto result = reconstruct(shapes::example_points_3(name));
+    const long euler = std::string(name) == "three-holes" ? -4
+                       : std::string(name) == "torus" || std::string(name) == "torus-knot" ? 0
+                                                                                             : 2;
+    testing::expect_closed_manifold(result, euler);
+    EXPECT_EQ(result.stats.components, 1u);
+    EXPECT_TRUE(verdict(result.stats).manifold) << verdict(result.stats).line;
+  }
 }
 
 TEST(Surfaces_3d, SkinAndExtractionAgreeOnCleanInput) {
-  Options extraction;
+  Options extraction = with_method(Method::paper);
   extraction.rule = Surface_rule::extraction;
-  const auto skin = reconstruct(shapes::torus(4000));
+  const auto skin = reconstruct(shapes::torus(4000), with_method(Method::paper));
   const auto literal = reconstruct(shapes::torus(4000), extraction);
   EXPECT_EQ(skin.surface, literal.surface);
 }

@@ -63,6 +63,12 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
   Cell_judgement judgement;
   judgement.outer.assign(result.delaunay.cell_count, 0);
   judgement.radius2.assign(result.delaunay.cell_count, 0.0f);
+  judgement.outer_pole.assign(result.delaunay.cell_count, 0);
+  for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
+    if (result.propagation.labels[p] == Label::outer) {
+      judgement.outer_pole[result.poles.poles[p].cell] = 1;
+    }
+  }
   std::size_t done = 0;
   for (auto cell : Traits::finite_cells(triangulation)) {
     if (++done % 262144 == 0) clock.report(double(done) / double(result.delaunay.cell_count));

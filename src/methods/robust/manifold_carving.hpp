@@ -35,6 +35,7 @@ namespace sculpt {
 struct Cell_judgement {
   std::vector<std::uint8_t> outer;  // 0: inner; else 1 + Carve_reason
   std::vector<float> radius2;       // squared circumradius (all-sample cells)
+  std::vector<std::uint8_t> outer_pole;  // the cell is an outer pole (its circumcentre is one)
 };
 
 template <class Traits>
@@ -58,6 +59,7 @@ class Manifold_carving {
   void run() {
     start_from_hull();
     carve_outer_cells();
+    open_cavities();
     // Punching leaves fragments of webs (bridges between strands) that are whole groups again.
     for (int round = 0; round < 4; ++round) {
       const std::size_t before = result_.carving.events.size();
@@ -246,6 +248,26 @@ class Manifold_carving {
         ++length;
       }
       return length == link_.size();
+    }
+  }
+
+  // Carving from the outside never reaches a cavity: the hole of an annulus (2D), the inside of a
+  // hollow part. A group of outer cells enclosed by the solid is a cavity when it holds the cell
+  // of an outer pole (the labelling saw an outer medial ball there; a few misjudged cells hold
+  // none). Removing that one cell makes a new boundary, a sphere (circle) around it, which is a
+  // manifold when none of its vertices is on the surface yet; carving goes on from there.
+  void open_cavities() {
+    for (auto cell : Traits::finite_cells(triangulation_)) {
+      if (is_outside(cell) || !judgement_.outer_pole[cell->info()]) continue;
+      bool clear = true;
+      for (int i = 0; i <= D && clear; ++i) {
+        const int s = cell->vertex(i)->info();
+        clear = outside_cells_at_[s] == 0 && solid_cells_at_[s] > 1;
+      }
+      if (!clear) continue;
+      remove(cell, Carve_reason::outer_pole_inside);
+      for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
+      carve_queue();
     }
   }
 
