@@ -49,7 +49,7 @@ TEST(Bad_input, Options) {
   Options options;
   options.box_factor = 0.5;
   EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {0, 1}}, options).find("box factor"), std::string::npos);
-  options.box_factor = 5;
+  options.box_factor = Options{}.box_factor;
   options.kind = Surface_kind::bordered;
   options.bordered_seed_sample = 10;
   EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {0, 1}}, options).find("not a sample"), std::string::npos);

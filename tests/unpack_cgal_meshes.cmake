@@ -6,6 +6,7 @@ file(MAKE_DIRECTORY "${DESTINATION}")
 execute_process(
   COMMAND ${CMAKE_COMMAND} -E tar xzf "${ARCHIVE}" data/meshes/bunny00.off data/meshes/knot1.off
           data/meshes/hand.off data/meshes/femur.off data/meshes/fandisk.off
+          data/meshes/elephant.off data/meshes/refined_elephant.off data/meshes/armadillo.off
   WORKING_DIRECTORY "${DESTINATION}"
   RESULT_VARIABLE result)
 if(NOT result EQUAL 0)

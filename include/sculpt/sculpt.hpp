@@ -183,8 +183,8 @@ struct Labelling_event {
 
 // Stage 4: the pole separation, in the order it ran. A conflict is an offer of the opposite
 // label to a pole that already has one; the first label stays (paper). In the robust labelling
-// a conflict is evidence for the other side, arriving after the pole was labelled, at least as
-// strong as the evidence the pole was labelled by: a "contradicted" pole.
+// a conflict is strong evidence (>= 0.5) for the side a pole did not get: present when it was
+// labelled, or arriving later and at least as strong as its own: a "contradicted" pole.
 struct Propagation_stage {
   std::vector<Labelling_event> events;
   std::vector<Labelling_event> conflicts;

@@ -33,7 +33,7 @@ Shot shot(const std::string& input, const char* stage) {
   return s;
 }
 
-Shot bordered(Shot s, double box_factor = 5.0) {
+Shot bordered(Shot s, double box_factor = sculpt::Options{}.box_factor) {
   s.bordered = true;
   s.box_factor = box_factor;
   return s;
@@ -235,7 +235,7 @@ std::string input_name(const Shot& s) {
 
 std::string model_key(const Shot& s) {
   return input_name(s) + (s.bordered ? " (bordered" : " (closed") +
-         (s.box_factor != 5.0 ? fmt::format(", box {}", s.box_factor) : "") + ")";
+         (s.box_factor != sculpt::Options{}.box_factor ? fmt::format(", box {}", s.box_factor) : "") + ")";
 }
 
 // Unpacks the CGAL meshes the figures use into a folder of their own.

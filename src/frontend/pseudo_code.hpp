@@ -1,5 +1,5 @@
-// The pole separation and sculpting as the paper's Fig. 5 pseudo-code, in the order our
-// implementation runs it, and which line a moment of the algorithm is at.
+// Each method's pseudo-code, in the order our implementation runs it (the paper method: its
+// Fig. 5), and which line a moment of the algorithm is at.
 #pragma once
 
 #include <vector>
@@ -7,6 +7,56 @@
 #include "scene/scene.hpp"
 
 namespace sculpt::frontend {
+
+inline const std::vector<const char*>& robust_pseudo_code() {
+  static const std::vector<const char*> lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",
+      "OSP <- convex poles: outer, weight 1",
+      "heap <- OSP   # by |outer - inner| evidence",
+      "while heap not empty:",
+      "    p <- most confident pole; label it",
+      "    for q whose ball meets B(p) at s:",
+      "        evidence(q, label p) += cos(p s q)",
+      "    for q paired with p (antipodal):",
+      "        evidence(q, other side) += -cos",
+      "outer(c) <- OUP in ball(c) or power(c) outer",
+      "carve outer c from outside, if manifold",
+      "open handles, cavities; expose samples",
+      "solid <- cells left",
+      "surface <- facets solid | outside",
+  };
+  return lines;
+}
+
+// The line to highlight in the robust method's pseudo-code.
+inline int robust_current_line(scene::Stage stage, const Labelling_event* latest) {
+  switch (stage) {
+    case scene::Stage::samples:
+    case scene::Stage::delaunay:
+    case scene::Stage::hull:
+    case scene::Stage::voronoi:
+      return 0;
+    case scene::Stage::poles:
+      return 2;
+    case scene::Stage::seeds:
+      return 3;
+    case scene::Stage::propagation:
+      if (!latest) return 4;
+      if (latest->reason == Label_reason::convex_seed) return 3;
+      return latest->reason == Label_reason::pairing ? 10 : 8;
+    case scene::Stage::outer_concave:
+      return 11;
+    case scene::Stage::sculpted_delaunay:
+      return 12;
+    case scene::Stage::solid:
+      return 14;
+    case scene::Stage::surface:
+      return 15;
+  }
+  return 0;
+}
 
 inline const std::vector<const char*>& pseudo_code() {
   static const std::vector<const char*> lines = {

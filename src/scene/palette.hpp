@@ -22,6 +22,7 @@ inline constexpr Color polar_ball_3d{0.45f, 0.55f, 0.85f, 0.8f};
 inline constexpr Color focus_ball{0.95f, 0.35f, 0.55f, 0.9f};
 inline constexpr Color inscribed_cube{0.85f, 0.20f, 0.45f};
 inline constexpr Color current_pole{1.00f, 0.85f, 0.00f};
+inline constexpr Color contradicted_pole{0.00f, 0.80f, 0.85f};  // cyan: apart from every label
 inline constexpr Color solid{0.55f, 0.70f, 0.90f};
 inline constexpr Color surface{0.78f, 0.80f, 0.86f};
 inline constexpr Color wireframe{0.15f, 0.15f, 0.20f};

@@ -50,9 +50,17 @@ class Scene_builder {
         propagation();
         break;
       case Stage::outer_concave:
-        labelled_poles(r_.propagation.labels, /*only_inserted=*/true);
+        labelled_poles(r_.propagation.labels, /*only_inserted=*/r_.options.method == Method::paper);
+        contradicted_poles(r_.propagation.labels);
         break;
       case Stage::sculpted_delaunay:
+        if (r_.options.method == Method::robust && r_.options.kind == Surface_kind::closed) {
+          // The robust method inserts no pole: it carves the hull's cells directly.
+          scene_.title = "Carved hull: the cells left after carving (robust method)";
+          edges_of(r_.solid, "carved-hull", "edges of the cells left", palette::delaunay_edge);
+          labelled_poles(r_.propagation.labels, /*only_inserted=*/false);
+          break;
+        }
         require_cells(r_.sculpted_delaunay);
         edges_of(r_.sculpted_delaunay.cells, "sculpted-delaunay", "Delaunay edges DT(S + OUP)",
                  palette::delaunay_edge);
@@ -210,12 +218,16 @@ class Scene_builder {
   }
 
   void propagation() {
+    if (r_.options.method == Method::robust) {
+      scene_.title = "Pole labelling by confidence (robust method)";
+    }
     const auto& events = r_.propagation.events;
     const std::size_t shown =
         request_.step < 0 ? events.size() : std::min<std::size_t>(request_.step, events.size());
     std::vector<Label> labels(r_.poles.poles.size(), Label::unlabelled);
     for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
     labelled_poles(labels, /*only_inserted=*/false);
+    contradicted_poles(labels);
     if (shown == 0) return;
     // The latest event: the pole just labelled, and the ball (and cube) that labelled it.
     const Labelling_event& last = events[shown - 1];
@@ -234,6 +246,21 @@ class Scene_builder {
     Layer& current = add("current-pole", "pole just labelled", Primitive::points,
                          palette::current_pole, D == 2 ? 12 : 9);
     current.positions.push_back(vec(r_.poles.poles[last.pole].center));
+  }
+
+  // Labelled poles that were offered the other label (paper: a conflict; robust: evidence at
+  // least as strong as their own). Only drawn when there are some.
+  void contradicted_poles(const std::vector<Label>& labels) {
+    std::vector<bool> contradicted(labels.size(), false);
+    for (const auto& offer : r_.propagation.conflicts) {
+      contradicted[offer.pole] = labels[offer.pole] != Label::unlabelled;
+    }
+    if (std::find(contradicted.begin(), contradicted.end(), true) == contradicted.end()) return;
+    const bool paper = r_.options.method == Method::paper;
+    poles_where("contradicted-poles",
+                paper ? "poles offered both labels (conflicts)"
+                      : "poles contradicted by strong evidence",
+                palette::contradicted_pole, [&](int p) { return bool(contradicted[p]); });
   }
 
   void inscribed_cube(const Pole<D>& pole, Layer& layer) {

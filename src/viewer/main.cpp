@@ -42,6 +42,10 @@ int main(int argc, char** argv) {
   app.add_option("file", file, "Point file to open (default: the built-in example)");
   app.add_option("--example", example, "Built-in example to open")->capture_default_str();
   app.add_flag("--bordered", bordered, "Reconstruct a bordered surface");
+  std::string method = sculpt::to_string(sculpt::Options{}.method);
+  app.add_option("--method", method, "Reconstruction method: robust or paper")
+      ->capture_default_str()
+      ->check(CLI::IsMember(sculpt::method_names()));
   app.add_option("--script", script_path, "Run the commands of a script file, then quit");
   app.add_option("--frames", frames, "Draw this many frames, then quit");
   app.add_option("--screenshot", screenshot,
@@ -95,6 +99,9 @@ int main(int argc, char** argv) {
       std::cerr << "sculpt-view: " << e.what() << '\n';
       return 1;
     }
+    sculpt::Method chosen = sculpt::Options{}.method;
+    sculpt::parse_method(method, chosen);
+    viewer.set_method(chosen);
     if (!file.empty()) {
       viewer.set_bordered(bordered);
       viewer.open_file(file);

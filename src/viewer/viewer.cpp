@@ -26,6 +26,8 @@ namespace {
 constexpr float panel_width = 360.0f;
 
 const char* rule_names[] = {"auto", "skin", "extraction"};
+const char* method_labels[] = {"robust (default)", "paper (Kuo & Yau)"};
+const Method methods[] = {Method::robust, Method::paper};
 
 ImVec4 imgui_color(const scene::Color& c) {
   return ImVec4(c.r, c.g, c.b, 1.0f);
@@ -61,6 +63,7 @@ void Viewer::rerun() {
 }
 
 void Viewer::start_job(Job_request request) {
+  request.options.method = methods[method_];
   request.options.kind = bordered_ ? Surface_kind::bordered : Surface_kind::closed;
   request.options.box_factor = box_factor_;
   request.options.rule = rule_ == 1   ? Surface_rule::skin
@@ -288,6 +291,7 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
                          {"bordered", bordered_},
                          {"box_factor", last_request_.options.box_factor},
                          {"rule", rule_names[rule_]},
+                         {"method", to_string(methods[method_])},
                          {"camera", render::to_json(camera_)},
                          {"size", std::to_string(width) + "x" + std::to_string(height)},
                          {"output", std::filesystem::absolute(path).string()}};
@@ -396,6 +400,7 @@ void Viewer::draw_panel(int height) {
     if (ImGui::Button("Cancel")) cancel();
   }
   if (ImGui::CollapsingHeader("Reconstruction options")) {
+    ImGui::Combo("method", &method_, method_labels, 2);
     ImGui::Checkbox("bordered surface", &bordered_);
     ImGui::SliderFloat("box factor", &box_factor_, 1.1f, 10.0f, "%.1f");
     ImGui::Combo("surface rule", &rule_, rule_names, 3);
@@ -460,8 +465,12 @@ void Viewer::draw_propagation_controls() {
 
 void Viewer::draw_pseudo_code() {
   if (!ImGui::CollapsingHeader("Algorithm", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const int current = frontend::current_line(request_.stage, latest_event());
-  const auto& lines = frontend::pseudo_code();
+  const Method method =
+      std::visit([](const auto& r) { return r.options.method; }, *reconstruction_);
+  const bool paper = method == Method::paper;
+  const int current = paper ? frontend::current_line(request_.stage, latest_event())
+                            : frontend::robust_current_line(request_.stage, latest_event());
+  const auto& lines = paper ? frontend::pseudo_code() : frontend::robust_pseudo_code();
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "> %s", lines[i]);
@@ -533,9 +542,20 @@ void Viewer::draw_statistics() {
       std::visit([](const auto& r) -> const Statistics& { return r.stats; }, *reconstruction_);
   const bool three = s.dimension == 3;
   ImGui::Text("%s", description_.c_str());
+  const Verdict v = verdict(s);
+  ImGui::PushStyleColor(ImGuiCol_Text, v.manifold ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1));
+  ImGui::TextWrapped("method %s: %s", to_string(s.method), v.line.c_str());
+  ImGui::PopStyleColor();
   ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
-  ImGui::Text("conflicts %zu   unlabelled %zu", s.conflicts, s.unlabelled_poles);
-  ImGui::Text("cells %zu -> %zu   solid %zu", s.delaunay_cells, s.sculpted_cells, s.solid_cells);
+  ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",
+              s.conflicts, s.unlabelled_poles);
+  if (s.method == Method::paper || s.kind == Surface_kind::bordered) {
+    ImGui::Text("cells %zu -> %zu   solid %zu", s.delaunay_cells, s.sculpted_cells, s.solid_cells);
+  } else {
+    ImGui::Text("cells %zu, carved %zu, outer kept %zu", s.delaunay_cells, s.carved_cells,
+                s.kept_outer_cells);
+    ImGui::Text("solid %zu", s.solid_cells);
+  }
   ImGui::Text("%s %zu   %s %zu", three ? "triangles" : "edges", s.facets,
               three ? "border edges" : "end points", s.boundary_ridges);
   ImGui::Text("non-manifold %zu   unused %zu   pieces %zu", s.non_manifold_ridges, s.unused_samples,

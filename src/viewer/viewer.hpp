@@ -24,6 +24,7 @@ class Viewer {
   void open_file(const std::string& path);
   void rerun();  // same input, current options
   void set_bordered(bool bordered) { bordered_ = bordered; }
+  void set_method(Method method) { method_ = method == Method::robust ? 0 : 1; }
 
   void set_stage(scene::Stage stage);
   void step_stage(int delta);
@@ -85,8 +86,9 @@ class Viewer {
 
   // Options for the next run.
   bool bordered_ = false;
-  float box_factor_ = 5.0f;
-  int rule_ = 0;  // auto, skin, extraction
+  float box_factor_ = static_cast<float>(Options{}.box_factor);
+  int rule_ = 0;    // auto, skin, extraction
+  int method_ = 0;  // robust, paper
 
   // Propagation playback.
   bool playing_ = false;

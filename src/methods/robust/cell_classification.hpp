@@ -12,6 +12,7 @@
 // The cells themselves are not changed here; manifold_carving.hpp removes them.
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <sculpt/sculpt.hpp>
 #include <vector>
@@ -63,10 +64,13 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
   Cell_judgement judgement;
   judgement.outer.assign(result.delaunay.cell_count, 0);
   judgement.radius2.assign(result.delaunay.cell_count, 0.0f);
-  judgement.outer_pole.assign(result.delaunay.cell_count, 0);
-  for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
-    if (result.propagation.labels[p] == Label::outer) {
-      judgement.outer_pole[result.poles.poles[p].cell] = 1;
+  // Per cell, the samples that have it as an outer pole.
+  judgement.outer_pole_of.assign(result.delaunay.cell_count, 0);
+  for (std::size_t s = 0; s < result.sample_count(); ++s) {
+    for (int q : {result.poles.positive_pole[s], result.poles.negative_pole[s]}) {
+      if (q < 0 || result.propagation.labels[q] != Label::outer) continue;
+      auto& count = judgement.outer_pole_of[result.poles.poles[q].cell];
+      if (count < UINT16_MAX) ++count;
     }
   }
   std::size_t done = 0;

@@ -16,8 +16,9 @@
 //
 // Every pole keeps the strongest evidence for each side it was offered. The queue pops the pole
 // whose evidence disagrees least, |outer - inner|; it is labelled by the stronger side and
-// offers its label to its neighbours. Evidence that arrives after a pole was labelled and is at
-// least as strong as what labelled it is recorded as a conflict: the pole is "contradicted".
+// offers its label to its neighbours. A pole is "contradicted" (recorded as a conflict) when it
+// was labelled despite strong evidence for the other side (at least strong_evidence), or when
+// such evidence, at least as strong as its own, arrives after it was labelled.
 #pragma once
 
 #include <algorithm>
@@ -34,6 +35,9 @@ namespace sculpt {
 // Below this cosine the two poles of a sample count as antipodal (robust.md: -0.5 ... -0.9
 // behave alike).
 constexpr double antipodal_pair_cosine = -0.7;
+
+// Evidence this strong for the side a pole did not get makes the pole "contradicted".
+constexpr float strong_evidence = 0.5f;
 
 // The evidence between poles: for each pole, its neighbours with a weight and whether the
 // evidence says "same side" or "opposite sides". Compressed rows.
@@ -176,6 +180,11 @@ class Confidence_labelling {
     const Offer& why = offers.side[winner];
     stage_.labels[pole] = label;
     stage_.events.push_back({pole, label, why.source, why.reason, why.weight});
+    const Offer& against = offers.side[1 - winner];
+    if (against.weight >= strong_evidence) {
+      stage_.conflicts.push_back(
+          {pole, label_of_side(1 - winner), against.source, against.reason, against.weight});
+    }
 
     for (int i = evidence_.offsets[pole]; i < evidence_.offsets[pole + 1]; ++i) {
       const auto& link = evidence_.links[i];
@@ -189,7 +198,7 @@ class Confidence_labelling {
           offer = {link.weight, pole, reason};
           queue_.push({confidence(link.pole), link.pole});
         }
-      } else if (current != offered &&
+      } else if (current != offered && link.weight >= strong_evidence &&
                  link.weight >= offers_[link.pole].side[side(current)].weight) {
         stage_.conflicts.push_back({link.pole, offered, pole, reason, link.weight});
       }

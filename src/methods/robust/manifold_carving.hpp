@@ -35,7 +35,7 @@ namespace sculpt {
 struct Cell_judgement {
   std::vector<std::uint8_t> outer;  // 0: inner; else 1 + Carve_reason
   std::vector<float> radius2;       // squared circumradius (all-sample cells)
-  std::vector<std::uint8_t> outer_pole;  // the cell is an outer pole (its circumcentre is one)
+  std::vector<std::uint16_t> outer_pole_of;  // samples whose outer pole is this cell
 };
 
 template <class Traits>
@@ -252,21 +252,53 @@ class Manifold_carving {
   }
 
   // Carving from the outside never reaches a cavity: the hole of an annulus (2D), the inside of a
-  // hollow part. A group of outer cells enclosed by the solid is a cavity when it holds the cell
-  // of an outer pole (the labelling saw an outer medial ball there; a few misjudged cells hold
-  // none). Removing that one cell makes a new boundary, a sphere (circle) around it, which is a
-  // manifold when none of its vertices is on the surface yet; carving goes on from there.
+  // hollow part. A group of outer cells enclosed by the solid is a cavity when most samples on it
+  // (at least half) have their outer pole inside it: the labelling saw the medial balls of a
+  // hollow there. A pocket left by a few mislabelled poles has few (femur: 5 of its samples, the
+  // annulus: all 60). The cavity is opened at the cell that is the outer pole of most samples;
+  // removing it makes a new boundary, a sphere (circle) around it, which is a manifold when none
+  // of its vertices is on the surface yet. Carving goes on from there.
   void open_cavities() {
-    for (auto cell : Traits::finite_cells(triangulation_)) {
-      if (is_outside(cell) || !judgement_.outer_pole[cell->info()]) continue;
+    std::vector<std::uint8_t> seen(outside_.size(), 0);
+    std::vector<Cell_handle> group, stack;
+    std::vector<int> samples;
+    for (auto start : Traits::finite_cells(triangulation_)) {
+      if (is_outside(start) || !judged_outer(start) || seen[start->info()]) continue;
+      group.clear();
+      samples.clear();
+      stack.assign(1, start);
+      seen[start->info()] = 1;
+      bool enclosed = true;
+      int pointing = 0;
+      Cell_handle opening = start;
+      while (!stack.empty()) {
+        const Cell_handle cell = stack.back();
+        stack.pop_back();
+        group.push_back(cell);
+        pointing += judgement_.outer_pole_of[cell->info()];
+        if (judgement_.outer_pole_of[cell->info()] > judgement_.outer_pole_of[opening->info()]) {
+          opening = cell;
+        }
+        for (int i = 0; i <= D; ++i) {
+          samples.push_back(cell->vertex(i)->info());
+          const Cell_handle next = cell->neighbor(i);
+          if (is_outside(next)) enclosed = false;
+          if (is_outside(next) || !judged_outer(next) || seen[next->info()]) continue;
+          seen[next->info()] = 1;
+          stack.push_back(next);
+        }
+      }
+      std::sort(samples.begin(), samples.end());
+      samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
+      if (!enclosed || 2 * pointing < static_cast<int>(samples.size())) continue;
       bool clear = true;
       for (int i = 0; i <= D && clear; ++i) {
-        const int s = cell->vertex(i)->info();
+        const int s = opening->vertex(i)->info();
         clear = outside_cells_at_[s] == 0 && solid_cells_at_[s] > 1;
       }
       if (!clear) continue;
-      remove(cell, Carve_reason::outer_pole_inside);
-      for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
+      remove(opening, Carve_reason::outer_pole_inside);
+      for (int i = 0; i <= D; ++i) push_if_outer(opening->neighbor(i));
       carve_queue();
     }
   }
@@ -337,6 +369,29 @@ class Manifold_carving {
     }
   }
 
+  // Whether the solid cell `from` is now in a piece of fewer than small_piece cells: a bubble cut
+  // off the solid (a collapse never disconnects; removing a group can). A search through the
+  // solid from `from`, stopped as soon as the piece is known to be large.
+  bool cuts_off_small_piece(Cell_handle from) {
+    static constexpr std::size_t small_piece = 256;
+    if (is_outside(from)) return false;
+    piece_.assign(1, from);
+    visited_.assign(1, from->info());
+    for (std::size_t next = 0; next < piece_.size(); ++next) {
+      if (piece_.size() >= small_piece) return false;
+      for (int i = 0; i <= D; ++i) {
+        const Cell_handle neighbor = piece_[next]->neighbor(i);
+        if (is_outside(neighbor)) continue;
+        if (std::find(visited_.begin(), visited_.end(), neighbor->info()) != visited_.end()) {
+          continue;
+        }
+        visited_.push_back(neighbor->info());
+        piece_.push_back(neighbor);
+      }
+    }
+    return true;
+  }
+
   bool try_remove_group(const std::vector<Cell_handle>& group) {
     bool touches_outside = false;
     for (Cell_handle cell : group) {
@@ -351,6 +406,12 @@ class Manifold_carving {
         fine = solid_cells_at_[v->info()] > 0 && manifold_at(v);
       }
       if (!fine) break;
+    }
+    if (fine) {
+      for (Cell_handle cell : group) {
+        for (int i = 0; i <= D && fine; ++i) fine = !cuts_off_small_piece(cell->neighbor(i));
+        if (!fine) break;
+      }
     }
     if (!fine) {
       for (Cell_handle cell : group) set_outside(cell, false);
@@ -424,7 +485,8 @@ class Manifold_carving {
   std::vector<int> solid_cells_at_;    // per sample: incident cells still in the solid
   std::vector<int> outside_cells_at_;  // per sample: incident cells outside
   std::priority_queue<Entry> queue_;
-  std::vector<Cell_handle> star_;
+  std::vector<Cell_handle> star_, piece_;
+  std::vector<int> visited_;
   std::vector<std::array<int, 2>> link_;
 };
 
