@@ -67,8 +67,8 @@ TEST_P(Robust_closed, IsTheMeshsTopology) {
 
 INSTANTIATE_TEST_SUITE_P(Meshes, Robust_closed,
                          ::testing::Values("knot1.off", "fandisk.off", "bunny00.off",
-                                           "elephant.off", "refined_elephant.off",
-                                           "armadillo.off", "hand.off"));
+                                           "elephant.off", "refined_elephant.off", "armadillo.off",
+                                           "hand.off"));
 
 TEST(Cgal_meshes, RobustMethodReproducesTheMeshOnDenseModels) {
   for (const char* name : {"bunny00.off", "refined_elephant.off"}) {

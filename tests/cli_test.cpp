@@ -1,7 +1,6 @@
 // The `sculpt` command as a user runs it: outputs, statistics, and one clear line and a
 // non-zero exit on bad input, with no output file left behind.
 #include <fmt/format.h>
-#include "shapes/shapes.hpp"
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "file_support.hpp"
+#include "shapes/shapes.hpp"
 
 namespace sculpt {
 namespace {
@@ -38,8 +38,8 @@ Command_result run_sculpt(const std::string& arguments) {
 TEST(Cli, ReconstructsAnExampleWithSolidAndStatistics) {
   const auto surface = output_path("torus.stl"), solid = output_path("torus.vtu"),
              stats = output_path("torus.json");
-  const Command_result run = run_sculpt("reconstruct --method paper --example torus -o " +
-                                        surface + " --solid " + solid + " --stats " + stats);
+  const Command_result run = run_sculpt("reconstruct --method paper --example torus -o " + surface +
+                                        " --solid " + solid + " --stats " + stats);
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("verdict: closed 2-manifold of genus 1"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("conflicts"), std::string::npos);
@@ -121,7 +121,8 @@ TEST(Cli, VerdictAndRequireManifold) {
   EXPECT_EQ(strict.exit_code, 3);
   EXPECT_TRUE(std::filesystem::exists(output));
   // The robust method brings the sample onto the surface.
-  const Command_result robust = run_sculpt("reconstruct --require-manifold " + input + " -o " + output);
+  const Command_result robust =
+      run_sculpt("reconstruct --require-manifold " + input + " -o " + output);
   EXPECT_EQ(robust.exit_code, 0) << robust.out;
   EXPECT_NE(robust.out.find("method robust"), std::string::npos);
   EXPECT_NE(robust.out.find("verdict: closed 2-manifold"), std::string::npos) << robust.out;

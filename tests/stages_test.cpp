@@ -1,8 +1,8 @@
 // The intermediate stages are what the viewer shows and a student reads: check that each one
 // means what the API says it means.
+#include <cmath>
 #include <map>
 #include <set>
-#include <cmath>
 
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"

@@ -34,18 +34,19 @@ TEST(Surfaces_3d, NonConvexBumpySphere) {
     const auto result = reconstruct(shapes::bumpy_sphere(6000), with_method(method));
     testing::expect_closed_manifold(result, 2);
     EXPECT_EQ(result.stats.conflicts, 0u);
-    EXPECT_GT(method == Method::paper ? result.stats.inserted_poles : result.stats.carved_cells, 0u);
+    EXPECT_GT(method == Method::paper ? result.stats.inserted_poles : result.stats.carved_cells,
+              0u);
   }
 }
 
 TEST(Surfaces_3d, RobustMethodGivesTheRightGenusOnEveryClosedExample) {
-  for (const char* name : {"sphere", "torus", "bumpy", "torso", "torus-knot", "three-holes",
-                           "bumpy-nonuniform"}) {
+  for (const char* name :
+       {"sphere", "torus", "bumpy", "torso", "torus-knot", "three-holes", "bumpy-nonuniform"}) {
     SCOPED_TRACE(name);
     const auto result = reconstruct(shapes::example_points_3(name));
-    const long euler = std::string(name) == "three-holes" ? -4
+    const long euler = std::string(name) == "three-holes"                                  ? -4
                        : std::string(name) == "torus" || std::string(name) == "torus-knot" ? 0
-                                                                                             : 2;
+                                                                                           : 2;
     testing::expect_closed_manifold(result, euler);
     EXPECT_EQ(result.stats.components, 1u);
     EXPECT_TRUE(verdict(result.stats).manifold) << verdict(result.stats).line;

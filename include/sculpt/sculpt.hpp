@@ -204,7 +204,7 @@ struct Insertion_stage {
 enum class Carve_reason : std::uint8_t {
   outer_pole_inside,  // its circumball holds an outer pole: inserting OUP would destroy it
   outer_power_cell,   // its circumcentre lies in the power cell of an outer polar ball
-  exposes_sample,     // judged inner, removed so that a buried sample reaches the surface
+  exposes_sample,     // removed so that a buried sample reaches the surface
 };
 
 struct Carve_event {
@@ -234,13 +234,13 @@ struct Statistics {
   std::size_t inner_poles = 0;
   std::size_t outer_poles = 0;
   std::size_t unlabelled_poles = 0;
-  std::size_t conflicts = 0;        // poles offered both labels
-  std::size_t conflict_offers = 0;  // offers of the other label (several per pole)
-  std::size_t carved_cells = 0;     // robust: all-sample cells removed from the hull
+  std::size_t conflicts = 0;         // poles offered both labels
+  std::size_t conflict_offers = 0;   // offers of the other label (several per pole)
+  std::size_t carved_cells = 0;      // robust: all-sample cells removed from the hull
   std::size_t kept_outer_cells = 0;  // robust: judged outer, kept so the surface stays manifold
-  std::size_t inserted_poles = 0;   // m (closed) or l (bordered), without the box corners
-  std::size_t delaunay_cells = 0;   // cells of DT(S ∪ BBV)
-  std::size_t sculpted_cells = 0;   // cells of DT(S ∪ OUP)
+  std::size_t inserted_poles = 0;    // m (closed) or l (bordered), without the box corners
+  std::size_t delaunay_cells = 0;    // cells of DT(S ∪ BBV)
+  std::size_t sculpted_cells = 0;    // cells of DT(S ∪ OUP)
   std::size_t solid_cells = 0;
   std::size_t facets = 0;  // triangles (3D) or edges (2D) of the result
   // Of the result's ridges (edges of the surface in 3D, vertices of the curve in 2D):

@@ -6,8 +6,8 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <iostream>
 #include <initializer_list>
+#include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "frontend/input.hpp"
@@ -62,8 +62,8 @@ nlohmann::json in_child_process(Work&& work) {
 // process of its own; a mesh input's own triangles are the reference the results are compared
 // with (its topology, and the share of its triangles each method reproduces).
 template <int D>
-nlohmann::json measure(const std::string& name, const std::vector<Point<D>>& points,
-                       bool bordered, const std::vector<Facet<3>>& reference) {
+nlohmann::json measure(const std::string& name, const std::vector<Point<D>>& points, bool bordered,
+                       const std::vector<Facet<3>>& reference) {
   nlohmann::json row;
   row["input"] = name;
   row["samples"] = points.size();
@@ -92,7 +92,8 @@ nlohmann::json measure(const std::string& name, const std::vector<Point<D>>& poi
       const auto result = reconstruct(points, options);
       nlohmann::json json = report_json(result.stats, run);
       if constexpr (D == 3) {
-        if (!reference.empty()) json["reproduced"] = triangles_reproduced(reference, result.surface);
+        if (!reference.empty())
+          json["reproduced"] = triangles_reproduced(reference, result.surface);
       }
       return json;
     });
@@ -149,15 +150,13 @@ void print_rows(const std::vector<nlohmann::json>& rows) {
                         : std::to_string(s["euler_characteristic"].get<long>());
       const std::string reproduced =
           s.contains("reproduced") ? fmt::format("{:.1f}%", 100 * double(s["reproduced"])) : "";
-      std::cout << fmt::format("{:<22}{:>8}{:>10}{:>10}{:>9}{:>9}{:>8}{:>8}{:>11}{:>10}  {}\n",
-                               row["input"].get<std::string>(), method,
-                               s["facets"].get<std::size_t>(),
-                               s["non_manifold_ridges"].get<std::size_t>(),
-                               s["non_manifold_vertices"].get<std::size_t>(),
-                               s["boundary_ridges"].get<std::size_t>(),
-                               s["unused_samples"].get<std::size_t>(),
-                               s["components"].get<std::size_t>(), euler, reproduced,
-                               s["manifold"].get<bool>() ? "manifold" : "DEFECTIVE");
+      std::cout << fmt::format(
+          "{:<22}{:>8}{:>10}{:>10}{:>9}{:>9}{:>8}{:>8}{:>11}{:>10}  {}\n",
+          row["input"].get<std::string>(), method, s["facets"].get<std::size_t>(),
+          s["non_manifold_ridges"].get<std::size_t>(),
+          s["non_manifold_vertices"].get<std::size_t>(), s["boundary_ridges"].get<std::size_t>(),
+          s["unused_samples"].get<std::size_t>(), s["components"].get<std::size_t>(), euler,
+          reproduced, s["manifold"].get<bool>() ? "manifold" : "DEFECTIVE");
     }
   }
 }

@@ -81,8 +81,9 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   options.progress = progress_printer(samples.size(), args.quiet);
 
   const Reconstruction<D> result = reconstruct(samples, options);
-  run.rule = to_string(resolved_rule(options));
-  run.method = to_string(options.method);
+  // The robust method's closed surfaces come from its carving, not from a surface rule.
+  const bool carved = options.method == Method::robust && options.kind == Surface_kind::closed;
+  run.rule = carved ? "manifold carve" : to_string(resolved_rule(options));
 
   const auto start = std::chrono::steady_clock::now();
   if constexpr (D == 3) {
@@ -104,7 +105,8 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
     std::cout << "  wrote " << args.output << (args.solid.empty() ? "" : " and " + args.solid)
               << '\n';
     std::cout << "verdict: " << verdict.line << '\n';
-  } else if (!verdict.manifold) {
+  }
+  if (!verdict.manifold) {
     std::cerr << "sculpt: warning: " << verdict.line << '\n';  // never silent on broken output
   }
   return verdict.manifold || !args.require_manifold ? 0 : defective_result_exit;

@@ -11,7 +11,6 @@ namespace sculpt::cli {
 
 struct Run_description {
   std::string input;
-  std::string method;
   std::string rule;
   std::string kind;
   double box_factor = Options{}.box_factor;

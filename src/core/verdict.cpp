@@ -27,10 +27,9 @@ Verdict verdict(const Statistics& s) {
   std::vector<std::string> defects;
   if (s.facets == 0) defects.push_back(surface ? "no triangles" : "no edges");
   if (s.non_manifold_ridges > 0) {
-    defects.push_back(surface ? plural(s.non_manifold_ridges, "non-manifold edge",
-                                       "non-manifold edges")
-                              : plural(s.non_manifold_ridges, "branching sample",
-                                       "branching samples"));
+    defects.push_back(surface
+                          ? plural(s.non_manifold_ridges, "non-manifold edge", "non-manifold edges")
+                          : plural(s.non_manifold_ridges, "branching sample", "branching samples"));
   }
   if (surface && s.non_manifold_vertices > 0) {
     defects.push_back(
@@ -48,23 +47,22 @@ Verdict verdict(const Statistics& s) {
 
   const std::string shape =
       surface ? fmt::format("{}, Euler characteristic {}",
-                            plural(s.components, "component", "components"),
-                            s.euler_characteristic)
+                            plural(s.components, "component", "components"), s.euler_characteristic)
               : plural(s.components, "component", "components");
   const char* wanted = surface ? (bordered ? "bordered 2-manifold" : "closed 2-manifold")
                                : (bordered ? "set of curves" : "closed curve");
+  const char* found_curves = s.components > 1 ? "closed curves" : "closed curve";
   Verdict v;
   v.manifold = defects.empty();
   if (v.manifold) {
-    std::string what = wanted;
+    std::string what = surface || bordered ? wanted : found_curves;
     if (surface && !bordered && s.components == 1 && s.euler_characteristic % 2 == 0) {
       what += fmt::format(" of genus {}", (2 - s.euler_characteristic) / 2);
     }
     if (bordered) {
-      what += fmt::format(" with {}", surface ? plural(s.boundary_loops, "border loop",
-                                                      "border loops")
-                                              : plural(s.boundary_loops, "open curve",
-                                                       "open curves"));
+      what +=
+          fmt::format(" with {}", surface ? plural(s.boundary_loops, "border loop", "border loops")
+                                          : plural(s.boundary_loops, "open curve", "open curves"));
     }
     v.line = fmt::format("{}: {}, all {} samples on it", what, shape, s.samples);
   } else {

@@ -235,7 +235,9 @@ std::string input_name(const Shot& s) {
 
 std::string model_key(const Shot& s) {
   return input_name(s) + (s.bordered ? " (bordered" : " (closed") +
-         (s.box_factor != sculpt::Options{}.box_factor ? fmt::format(", box {}", s.box_factor) : "") + ")";
+         (s.box_factor != sculpt::Options{}.box_factor ? fmt::format(", box {}", s.box_factor)
+                                                       : "") +
+         ")";
 }
 
 // Unpacks the CGAL meshes the figures use into a folder of their own.
@@ -305,17 +307,18 @@ std::string table_2(
           constexpr int D = std::decay_t<decltype(r)>::dimension;
           const auto& s = r.stats;
           if constexpr (D == 3) {
-          if (r.options.kind != Surface_kind::closed) return;
-          const std::vector<Point<D>> samples(r.sites.begin(), r.sites.begin() + r.sample_count());
-          const double dt = delaunay_seconds(samples);
-          sculpt::Options robust = r.options;
-          robust.method = Method::robust;
-          robust.keep_triangulations = false;
-          const Statistics beyond = reconstruct(samples, robust).stats;
-          out << fmt::format("| {} | {} | {} | {} | {:.3f} | {:.3f} | {:.2f} | {} | {:.2f} |\n",
-                             name, s.samples, s.facets, verdict(s).line, s.total_seconds, dt,
-                             s.total_seconds / dt, verdict(beyond).line,
-                             beyond.total_seconds / dt);
+            if (r.options.kind != Surface_kind::closed) return;
+            const std::vector<Point<D>> samples(r.sites.begin(),
+                                                r.sites.begin() + r.sample_count());
+            const double dt = delaunay_seconds(samples);
+            sculpt::Options robust = r.options;
+            robust.method = Method::robust;
+            robust.keep_triangulations = false;
+            const Statistics beyond = reconstruct(samples, robust).stats;
+            out << fmt::format("| {} | {} | {} | {} | {:.3f} | {:.3f} | {:.2f} | {} | {:.2f} |\n",
+                               name, s.samples, s.facets, verdict(s).line, s.total_seconds, dt,
+                               s.total_seconds / dt, verdict(beyond).line,
+                               beyond.total_seconds / dt);
           }
         },
         *any);

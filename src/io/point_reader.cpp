@@ -136,8 +136,7 @@ Point_set read_mesh(const std::string& path, const std::string& format, bool bin
   set.dimension = 3;
   for (const auto& polygon : polygons) {
     for (std::size_t j = 2; j < polygon.size(); ++j) {
-      set.triangles.push_back(
-          {int(polygon[0]), int(polygon[j - 1]), int(polygon[j])});
+      set.triangles.push_back({int(polygon[0]), int(polygon[j - 1]), int(polygon[j])});
     }
   }
   for (std::size_t i = 0; i < points.size(); ++i) {

@@ -257,10 +257,10 @@ class Scene_builder {
     }
     if (std::find(contradicted.begin(), contradicted.end(), true) == contradicted.end()) return;
     const bool paper = r_.options.method == Method::paper;
-    poles_where("contradicted-poles",
-                paper ? "poles offered both labels (conflicts)"
-                      : "poles contradicted by strong evidence",
-                palette::contradicted_pole, [&](int p) { return bool(contradicted[p]); });
+    poles_where(
+        "contradicted-poles",
+        paper ? "poles offered both labels (conflicts)" : "poles contradicted by strong evidence",
+        palette::contradicted_pole, [&](int p) { return bool(contradicted[p]); });
   }
 
   void inscribed_cube(const Pole<D>& pole, Layer& layer) {

@@ -543,7 +543,8 @@ void Viewer::draw_statistics() {
   const bool three = s.dimension == 3;
   ImGui::Text("%s", description_.c_str());
   const Verdict v = verdict(s);
-  ImGui::PushStyleColor(ImGuiCol_Text, v.manifold ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1));
+  ImGui::PushStyleColor(ImGuiCol_Text,
+                        v.manifold ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1));
   ImGui::TextWrapped("method %s: %s", to_string(s.method), v.line.c_str());
   ImGui::PopStyleColor();
   ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);

@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
-#include "../../core/stage_clock.hpp"
 #include "../../core/seeds.hpp"
+#include "../../core/stage_clock.hpp"
 #include "pole_tree.hpp"
 
 namespace sculpt {

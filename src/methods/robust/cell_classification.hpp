@@ -27,7 +27,8 @@ template <int D>
 Point_tree<D> outer_pole_tree(const Reconstruction<D>& result) {
   std::vector<Point<D>> centers;
   for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
-    if (result.propagation.labels[p] == Label::outer) centers.push_back(result.poles.poles[p].center);
+    if (result.propagation.labels[p] == Label::outer)
+      centers.push_back(result.poles.poles[p].center);
   }
   return Point_tree<D>(std::move(centers));
 }

@@ -15,10 +15,10 @@
 //   seeds:      the convex poles (their cells touch the box) are outer, with weight 1.
 //
 // Every pole keeps the strongest evidence for each side it was offered. The queue pops the pole
-// whose evidence disagrees least, |outer - inner|; it is labelled by the stronger side and
-// offers its label to its neighbours. A pole is "contradicted" (recorded as a conflict) when it
-// was labelled despite strong evidence for the other side (at least strong_evidence), or when
-// such evidence, at least as strong as its own, arrives after it was labelled.
+// whose evidence is most one-sided, the largest |outer - inner|; it is labelled by the stronger
+// side and offers its label to its neighbours. A pole is "contradicted" (recorded as a conflict)
+// when it was labelled despite strong evidence for the other side (at least strong_evidence), or
+// when such evidence, at least as strong as its own, arrives after it was labelled.
 #pragma once
 
 #include <algorithm>
@@ -190,7 +190,8 @@ class Confidence_labelling {
       const auto& link = evidence_.links[i];
       const Label offered =
           link.opposite ? (label == Label::inner ? Label::outer : Label::inner) : label;
-      const Label_reason reason = link.opposite ? Label_reason::pairing : Label_reason::ball_overlap;
+      const Label_reason reason =
+          link.opposite ? Label_reason::pairing : Label_reason::ball_overlap;
       const Label current = stage_.labels[link.pole];
       if (current == Label::unlabelled) {
         Offer& offer = offers_[link.pole].side[side(offered)];

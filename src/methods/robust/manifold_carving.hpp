@@ -24,17 +24,17 @@
 #include <array>
 #include <climits>
 #include <cstdint>
-#include <utility>
 #include <queue>
 #include <sculpt/sculpt.hpp>
+#include <utility>
 #include <vector>
 
 namespace sculpt {
 
 // What cell_classification.hpp says of every finite cell of DT(S ∪ BBV), by cell index.
 struct Cell_judgement {
-  std::vector<std::uint8_t> outer;  // 0: inner; else 1 + Carve_reason
-  std::vector<float> radius2;       // squared circumradius (all-sample cells)
+  std::vector<std::uint8_t> outer;           // 0: inner; else 1 + Carve_reason
+  std::vector<float> radius2;                // squared circumradius (all-sample cells)
   std::vector<std::uint16_t> outer_pole_of;  // samples whose outer pole is this cell
 };
 
@@ -259,23 +259,23 @@ class Manifold_carving {
   // removing it makes a new boundary, a sphere (circle) around it, which is a manifold when none
   // of its vertices is on the surface yet. Carving goes on from there.
   void open_cavities() {
-    std::vector<std::uint8_t> seen(outside_.size(), 0);
+    std::vector<int> group_of(outside_.size(), 0);  // per cell: its group, numbered from 1
+    int groups = 0;
     std::vector<Cell_handle> group, stack;
     std::vector<int> samples;
     for (auto start : Traits::finite_cells(triangulation_)) {
-      if (is_outside(start) || !judged_outer(start) || seen[start->info()]) continue;
+      if (is_outside(start) || !judged_outer(start) || group_of[start->info()]) continue;
+      const int id = ++groups;
       group.clear();
       samples.clear();
       stack.assign(1, start);
-      seen[start->info()] = 1;
+      group_of[start->info()] = id;
       bool enclosed = true;
-      int pointing = 0;
       Cell_handle opening = start;
       while (!stack.empty()) {
         const Cell_handle cell = stack.back();
         stack.pop_back();
         group.push_back(cell);
-        pointing += judgement_.outer_pole_of[cell->info()];
         if (judgement_.outer_pole_of[cell->info()] > judgement_.outer_pole_of[opening->info()]) {
           opening = cell;
         }
@@ -283,21 +283,32 @@ class Manifold_carving {
           samples.push_back(cell->vertex(i)->info());
           const Cell_handle next = cell->neighbor(i);
           if (is_outside(next)) enclosed = false;
-          if (is_outside(next) || !judged_outer(next) || seen[next->info()]) continue;
-          seen[next->info()] = 1;
+          if (is_outside(next) || !judged_outer(next) || group_of[next->info()]) continue;
+          group_of[next->info()] = id;
           stack.push_back(next);
         }
       }
+      if (!enclosed) continue;
       std::sort(samples.begin(), samples.end());
       samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
-      if (!enclosed || 2 * pointing < static_cast<int>(samples.size())) continue;
+      std::size_t pointing = 0;
+      for (int s : samples) {
+        bool points_in = false;
+        for (int q : {result_.poles.positive_pole[s], result_.poles.negative_pole[s]}) {
+          if (q < 0 || result_.propagation.labels[q] != Label::outer) continue;
+          const std::size_t cell = result_.poles.poles[q].cell;
+          points_in = points_in || group_of[cell] == id;
+        }
+        pointing += points_in;
+      }
+      if (2 * pointing < samples.size()) continue;
       bool clear = true;
       for (int i = 0; i <= D && clear; ++i) {
         const int s = opening->vertex(i)->info();
         clear = outside_cells_at_[s] == 0 && solid_cells_at_[s] > 1;
       }
       if (!clear) continue;
-      remove(opening, Carve_reason::outer_pole_inside);
+      remove(opening, static_cast<Carve_reason>(judgement_.outer[opening->info()] - 1));
       for (int i = 0; i <= D; ++i) push_if_outer(opening->neighbor(i));
       carve_queue();
     }
@@ -369,33 +380,47 @@ class Manifold_carving {
     }
   }
 
-  // Whether the solid cell `from` is now in a piece of fewer than small_piece cells: a bubble cut
-  // off the solid (a collapse never disconnects; removing a group can). A search through the
-  // solid from `from`, stopped as soon as the piece is known to be large.
-  bool cuts_off_small_piece(Cell_handle from) {
+  // Whether removing `group` (already set outside) cut a small piece off the solid: a collapse
+  // never disconnects, a group removal can. From each solid neighbour of the group a search
+  // through the solid either reaches every other solid neighbour (nothing was cut off), or grows
+  // past small_piece cells (whatever was cut off is large: a real part), or stops short: a
+  // bubble, refused.
+  bool cuts_off_small_piece(const std::vector<Cell_handle>& group) {
     static constexpr std::size_t small_piece = 256;
-    if (is_outside(from)) return false;
-    piece_.assign(1, from);
-    visited_.assign(1, from->info());
-    for (std::size_t next = 0; next < piece_.size(); ++next) {
-      if (piece_.size() >= small_piece) return false;
+    std::vector<Cell_handle> neighbours;
+    for (Cell_handle cell : group) {
       for (int i = 0; i <= D; ++i) {
-        const Cell_handle neighbor = piece_[next]->neighbor(i);
-        if (is_outside(neighbor)) continue;
-        if (std::find(visited_.begin(), visited_.end(), neighbor->info()) != visited_.end()) {
-          continue;
-        }
-        visited_.push_back(neighbor->info());
-        piece_.push_back(neighbor);
+        if (!is_outside(cell->neighbor(i))) neighbours.push_back(cell->neighbor(i));
       }
     }
-    return true;
+    if (stamp_.size() != outside_.size()) stamp_.assign(outside_.size(), 0);
+    for (Cell_handle from : neighbours) {
+      const int mark = ++stamp_counter_;
+      piece_.assign(1, from);
+      stamp_[from->info()] = mark;
+      bool large = false;
+      for (std::size_t next = 0; next < piece_.size() && !large; ++next) {
+        large = piece_.size() >= small_piece;
+        for (int i = 0; i <= D && !large; ++i) {
+          const Cell_handle neighbour = piece_[next]->neighbor(i);
+          if (is_outside(neighbour) || stamp_[neighbour->info()] == mark) continue;
+          stamp_[neighbour->info()] = mark;
+          piece_.push_back(neighbour);
+        }
+      }
+      if (large) continue;
+      for (Cell_handle other : neighbours) {
+        if (stamp_[other->info()] != mark) return true;  // `from` is in a small piece alone
+      }
+    }
+    return false;
   }
 
   bool try_remove_group(const std::vector<Cell_handle>& group) {
     bool touches_outside = false;
     for (Cell_handle cell : group) {
-      for (int i = 0; i <= D; ++i) touches_outside = touches_outside || is_outside(cell->neighbor(i));
+      for (int i = 0; i <= D; ++i)
+        touches_outside = touches_outside || is_outside(cell->neighbor(i));
     }
     if (!touches_outside) return false;  // a pocket inside the solid: leave it filled
     for (Cell_handle cell : group) set_outside(cell, true);
@@ -407,12 +432,7 @@ class Manifold_carving {
       }
       if (!fine) break;
     }
-    if (fine) {
-      for (Cell_handle cell : group) {
-        for (int i = 0; i <= D && fine; ++i) fine = !cuts_off_small_piece(cell->neighbor(i));
-        if (!fine) break;
-      }
-    }
+    if (fine) fine = !cuts_off_small_piece(group);
     if (!fine) {
       for (Cell_handle cell : group) set_outside(cell, false);
       return false;
@@ -486,7 +506,8 @@ class Manifold_carving {
   std::vector<int> outside_cells_at_;  // per sample: incident cells outside
   std::priority_queue<Entry> queue_;
   std::vector<Cell_handle> star_, piece_;
-  std::vector<int> visited_;
+  std::vector<int> stamp_;  // per cell: the search that last reached it
+  int stamp_counter_ = 0;
   std::vector<std::array<int, 2>> link_;
 };
 
