@@ -311,8 +311,9 @@ Statistics facet_topology(std::size_t sample_count, const std::vector<Facet<3>>&
 double triangles_reproduced(const std::vector<Facet<3>>& reference,
                             const std::vector<Facet<3>>& result);
 
-// Names of the methods and rules, and the reverse (false for an unknown name).
+// Names of the methods (the default first) and rules, and the reverse (false for an unknown name).
 const std::vector<const char*>& method_names();
+const char* describe(Method method);  // a few words for menus and help
 bool parse_method(const std::string& name, Method& method);
 bool parse_rule(const std::string& name, Surface_rule& rule);  // auto, skin, extraction
 

@@ -44,8 +44,19 @@ const char* to_string(Method method) {
 }
 
 const std::vector<const char*>& method_names() {
-  static const std::vector<const char*> names = {"robust", "paper"};
+  static const std::vector<const char*> names = {to_string(Options{}.method),
+                                                 to_string(Method::paper)};
   return names;
+}
+
+const char* describe(Method method) {
+  switch (method) {
+    case Method::paper:
+      return "Kuo & Yau's algorithm, as published";
+    case Method::robust:
+      return "confidence labelling and manifold carving";
+  }
+  return "?";
 }
 
 bool parse_method(const std::string& name, Method& method) {

@@ -123,7 +123,9 @@ const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   const frontend::Input input = frontend::load_input(shot.input, shot.example, shot.dimension);
   Options options;
   if (!parse_method(shot.method, options.method)) {
-    throw io::Error("no method '" + shot.method + "' (methods: robust, paper)");
+    std::string names;
+    for (const char* name : method_names()) names += std::string(names.empty() ? "" : ", ") + name;
+    throw io::Error("no method '" + shot.method + "' (methods: " + names + ")");
   }
   if (!parse_rule(shot.rule, options.rule)) {
     throw io::Error("no surface rule '" + shot.rule + "' (rules: auto, skin, extraction)");

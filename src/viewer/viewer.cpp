@@ -26,8 +26,12 @@ namespace {
 constexpr float panel_width = 360.0f;
 
 const char* rule_names[] = {"auto", "skin", "extraction"};
-const char* method_labels[] = {"robust (default)", "paper (Kuo & Yau)"};
-const Method methods[] = {Method::robust, Method::paper};
+// The methods in the order of method_names() (the default first).
+Method method_at(int index) {
+  Method method = Options{}.method;
+  parse_method(method_names()[index], method);
+  return method;
+}
 
 ImVec4 imgui_color(const scene::Color& c) {
   return ImVec4(c.r, c.g, c.b, 1.0f);
@@ -63,7 +67,7 @@ void Viewer::rerun() {
 }
 
 void Viewer::start_job(Job_request request) {
-  request.options.method = methods[method_];
+  request.options.method = method_at(method_);
   request.options.kind = bordered_ ? Surface_kind::bordered : Surface_kind::closed;
   request.options.box_factor = box_factor_;
   request.options.rule = rule_ == 1   ? Surface_rule::skin
@@ -291,7 +295,7 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
                          {"bordered", bordered_},
                          {"box_factor", last_request_.options.box_factor},
                          {"rule", rule_names[rule_]},
-                         {"method", to_string(methods[method_])},
+                         {"method", method_names()[method_]},
                          {"camera", render::to_json(camera_)},
                          {"size", std::to_string(width) + "x" + std::to_string(height)},
                          {"output", std::filesystem::absolute(path).string()}};
@@ -400,7 +404,9 @@ void Viewer::draw_panel(int height) {
     if (ImGui::Button("Cancel")) cancel();
   }
   if (ImGui::CollapsingHeader("Reconstruction options")) {
-    ImGui::Combo("method", &method_, method_labels, 2);
+    ImGui::Combo("method", &method_, method_names().data(),
+                 static_cast<int>(method_names().size()));
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(method_at(method_)));
     ImGui::Checkbox("bordered surface", &bordered_);
     ImGui::SliderFloat("box factor", &box_factor_, 1.1f, 10.0f, "%.1f");
     ImGui::Combo("surface rule", &rule_, rule_names, 3);

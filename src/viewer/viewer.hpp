@@ -3,6 +3,7 @@
 // Scripted runs (tests) drive the same object through Script.
 #pragma once
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <string>
@@ -24,7 +25,13 @@ class Viewer {
   void open_file(const std::string& path);
   void rerun();  // same input, current options
   void set_bordered(bool bordered) { bordered_ = bordered; }
-  void set_method(Method method) { method_ = method == Method::robust ? 0 : 1; }
+  void set_method(Method method) {
+    const auto& names = method_names();
+    method_ = static_cast<int>(
+        std::find_if(names.begin(), names.end(),
+                     [&](const char* name) { return std::string(name) == to_string(method); }) -
+        names.begin());
+  }
 
   void set_stage(scene::Stage stage);
   void step_stage(int delta);
@@ -88,7 +95,7 @@ class Viewer {
   bool bordered_ = false;
   float box_factor_ = static_cast<float>(Options{}.box_factor);
   int rule_ = 0;    // auto, skin, extraction
-  int method_ = 0;  // robust, paper
+  int method_ = 0;  // index in method_names()
 
   // Propagation playback.
   bool playing_ = false;
