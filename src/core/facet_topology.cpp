@@ -143,20 +143,22 @@ void measure_topology(std::size_t sample_count, const std::vector<Facet<D>>& fac
   }
 }
 
-Statistics facet_topology(std::size_t sample_count, const std::vector<Facet<2>>& facets) {
+namespace {
+template <int D>
+Statistics topology_alone(std::size_t sample_count, const std::vector<Facet<D>>& facets) {
   Statistics stats;
-  stats.dimension = 2;
+  stats.dimension = D;
   stats.samples = sample_count;
-  measure_topology<2>(sample_count, facets, stats);
+  measure_topology<D>(sample_count, facets, stats);
   return stats;
 }
+}  // namespace
 
+Statistics facet_topology(std::size_t sample_count, const std::vector<Facet<2>>& facets) {
+  return topology_alone<2>(sample_count, facets);
+}
 Statistics facet_topology(std::size_t sample_count, const std::vector<Facet<3>>& facets) {
-  Statistics stats;
-  stats.dimension = 3;
-  stats.samples = sample_count;
-  measure_topology<3>(sample_count, facets, stats);
-  return stats;
+  return topology_alone<3>(sample_count, facets);
 }
 
 double triangles_reproduced(const std::vector<Facet<3>>& reference,

@@ -17,13 +17,10 @@
 
 namespace sculpt {
 
+// Stages 5-8, from labelled poles: insert OUP (UP), then the solid and the surface.
 template <class Traits>
-void run_paper_method(typename Traits::Triangulation& triangulation,
-                      Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
-  clock.start("propagation");
-  propagate_labels(result, clock);
-  count_labels(result);
-
+void sculpt_by_insertion(typename Traits::Triangulation& triangulation,
+                         Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
   clock.start("insertion");
   choose_inserted_poles(result);
   insert_poles<Traits>(triangulation, result);
@@ -35,6 +32,15 @@ void run_paper_method(typename Traits::Triangulation& triangulation,
 
   clock.start("surface");
   extract_surface<Traits>(triangulation, result);
+}
+
+template <class Traits>
+void run_paper_method(typename Traits::Triangulation& triangulation,
+                      Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
+  clock.start("propagation");
+  propagate_labels(result, clock);
+  count_labels(result);
+  sculpt_by_insertion<Traits>(triangulation, result, clock);
 }
 
 }  // namespace sculpt

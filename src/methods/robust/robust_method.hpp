@@ -14,8 +14,7 @@
 
 #include "../../core/label_statistics.hpp"
 #include "../../core/stage_clock.hpp"
-#include "../paper/pole_insertion.hpp"
-#include "../paper/surface_extraction.hpp"
+#include "../paper/paper_method.hpp"
 #include "cell_classification.hpp"
 #include "confidence_labelling.hpp"
 #include "manifold_carving.hpp"
@@ -50,15 +49,7 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
   count_labels(result);
 
   if (result.options.kind == Surface_kind::bordered) {
-    clock.start("insertion");
-    choose_inserted_poles(result);
-    insert_poles<Traits>(triangulation, result);
-    result.stats.inserted_poles = result.insertion.inserted_poles.size();
-    result.stats.sculpted_cells = result.sculpted_delaunay.cell_count;
-    clock.start("solid");
-    sculpt_solid<Traits>(triangulation, result);
-    clock.start("surface");
-    extract_surface<Traits>(triangulation, result);
+    sculpt_by_insertion<Traits>(triangulation, result, clock);
     return;
   }
 
