@@ -338,7 +338,7 @@ std::string pseudo_code_with_counts(const frontend::Any_reconstruction& any) {
           pairing += e.reason == Label_reason::pairing;
         }
         out << "```\n";
-        for (const char* line : frontend::pseudo_code()) out << line << '\n';
+        for (const char* line : frontend::pseudo_code(Method::paper).lines) out << line << '\n';
         out << "```\n\nOne run on `star`: " << r.stats.poles << " poles, " << seeds
             << " outer seeds (convex poles), " << r.propagation.events.size()
             << " labelling events (" << cube << " by an inscribed square, " << pairing

@@ -473,10 +473,9 @@ void Viewer::draw_pseudo_code() {
   if (!ImGui::CollapsingHeader("Algorithm", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const Method method =
       std::visit([](const auto& r) { return r.options.method; }, *reconstruction_);
-  const bool paper = method == Method::paper;
-  const int current = paper ? frontend::current_line(request_.stage, latest_event())
-                            : frontend::robust_current_line(request_.stage, latest_event());
-  const auto& lines = paper ? frontend::pseudo_code() : frontend::robust_pseudo_code();
+  const frontend::Pseudo_code& code = frontend::pseudo_code(method);
+  const int current = frontend::current_line(code, request_.stage, latest_event());
+  const auto& lines = code.lines;
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "> %s", lines[i]);
