@@ -128,6 +128,26 @@ TEST(Cli, VerdictAndRequireManifold) {
   EXPECT_NE(robust.out.find("verdict: closed 2-manifold"), std::string::npos) << robust.out;
 }
 
+TEST(Cli, AllOutputsOrNone) {
+  // The solid's folder is missing: nothing is written, not even the surface, and one line says why.
+  const auto surface = output_path("all-or-none.stl");
+  const Command_result run = run_sculpt("reconstruct --example sphere -o " + surface + " --solid " +
+                                        output_path("no-such-folder") + "/s.vtu");
+  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_FALSE(std::filesystem::exists(surface));
+  EXPECT_NE(run.err.find("no folder"), std::string::npos) << run.err;
+  EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1);
+  // A TetGen solid is two files, written with the others.
+  const auto node = output_path("all-or-none.node");
+  const Command_result ok =
+      run_sculpt("reconstruct -q --example sphere -o " + surface + " --solid " + node +
+                 " --stats " + output_path("all-or-none.json"));
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(surface));
+  EXPECT_TRUE(std::filesystem::exists(std::string(SCULPT_TEST_OUTPUT) + "/all-or-none.ele"));
+  EXPECT_TRUE(std::filesystem::exists(std::string(SCULPT_TEST_OUTPUT) + "/all-or-none.json"));
+}
+
 TEST(Cli, UnknownMethodIsRefused) {
   const Command_result run =
       run_sculpt("reconstruct --method crust --example star -o " + output_path("x.svg"));

@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "file_support.hpp"
+#include "io/output_set.hpp"
 #include "io/point_reader.hpp"
 #include "io/writers.hpp"
 #include "shapes/shapes.hpp"
@@ -217,6 +218,43 @@ TEST(Writers, AFailedWriteLeavesNoFile) {
   }
   EXPECT_EQ(left, std::vector<std::string>{"fine.off"})
       << "only the file written completely remains";
+}
+
+// A run's outputs appear together or not at all.
+std::vector<std::string> files_in(const std::filesystem::path& folder) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    names.push_back(entry.path().filename().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+TEST(Output_set, CommitsAllOrLeavesNothing) {
+  const auto folder = std::filesystem::path(SCULPT_TEST_OUTPUT) / "output-set";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  {
+    io::Output_set outputs;
+    std::ofstream(outputs.stage((folder / "a.stl").string())) << "a";
+    const auto node = outputs.stage((folder / "b.node").string());
+    std::ofstream(node) << "n";
+    std::ofstream(node.substr(0, node.size() - 5) + ".ele") << "e";  // its companion
+    EXPECT_EQ(files_in(folder).size(), 3u);
+    for (const auto& name : files_in(folder))
+      EXPECT_EQ(name[0], '.') << "staged under a temporary name";
+    // Leaving without commit (as an error would) removes everything staged.
+  }
+  EXPECT_TRUE(files_in(folder).empty());
+  {
+    io::Output_set outputs;
+    std::ofstream(outputs.stage((folder / "a.stl").string())) << "a";
+    const auto node = outputs.stage((folder / "b.node").string());
+    std::ofstream(node) << "n";
+    std::ofstream(node.substr(0, node.size() - 5) + ".ele") << "e";
+    outputs.commit();
+  }
+  EXPECT_EQ(files_in(folder), (std::vector<std::string>{"a.stl", "b.ele", "b.node"}));
 }
 
 }  // namespace

@@ -5,13 +5,16 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 
 #include "bench.hpp"
 #include "figures/figures.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
+#include "io/output_set.hpp"
 #include "io/point_reader.hpp"
+#include "io/temporary_files.hpp"
 #include "io/writers.hpp"
 #include "render_command.hpp"
 #include "report.hpp"
@@ -66,6 +69,14 @@ void check_output_formats(const Reconstruct_arguments& args, int dimension) {
   if (!args.stats.empty() && io::extension_of(args.stats) != ".json") {
     throw io::Error("the statistics file must end in .json: '" + args.stats + "'");
   }
+  // Every output's folder must exist before any work is done.
+  for (const std::string* path : {&args.output, &args.solid, &args.stats}) {
+    if (path->empty()) continue;
+    const auto folder = std::filesystem::path(*path).parent_path();
+    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+      throw io::Error("cannot write '" + *path + "': there is no folder '" + folder.string() + "'");
+    }
+  }
 }
 
 template <int D>
@@ -85,20 +96,22 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   const bool carved = options.method == Method::robust && options.kind == Surface_kind::closed;
   run.rule = carved ? "manifold carve" : to_string(resolved_rule(options));
 
+  // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();
+  io::Output_set outputs;
   if constexpr (D == 3) {
-    io::write_surface(args.output, samples, result.surface, args.ascii);
+    io::write_surface(outputs.stage(args.output), samples, result.surface, args.ascii);
   } else {
-    io::write_curve(args.output, samples, result.surface);
+    io::write_curve(outputs.stage(args.output), samples, result.surface);
   }
-  if (!args.solid.empty()) io::write_solid<D>(args.solid, samples, result.solid);
+  if (!args.solid.empty()) io::write_solid<D>(outputs.stage(args.solid), samples, result.solid);
   run.write_seconds = seconds_since(start);
-
   if (!args.stats.empty()) {
-    io::Atomic_file file(args.stats, false);
+    io::Atomic_file file(outputs.stage(args.stats), false);
     file.stream() << report_json(result.stats, run).dump(2) << '\n';
     file.commit();
   }
+  outputs.commit();
   const Verdict verdict = sculpt::verdict(result.stats);
   if (!args.quiet) {
     print_report(std::cout, result.stats, run);
@@ -227,6 +240,7 @@ int main(int argc, char** argv) {
   bench->add_option("--json", bench_args.json, "Also write the measurements as JSON");
 
   CLI11_PARSE(app, argc, argv);
+  sculpt::io::remove_temporaries_on_signals();
   try {
     if (examples->parsed()) return run_examples();
     if (bench->parsed()) return run_bench(bench_args);

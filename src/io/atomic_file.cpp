@@ -7,11 +7,13 @@
 #include <cstring>
 
 #include "io_error.hpp"
+#include "temporary_files.hpp"
 
 namespace sculpt::io {
 
 Atomic_file::Atomic_file(const std::string& path, bool binary)
     : path_(path), temporary_(path + ".partial-" + std::to_string(::getpid())) {
+  register_temporary(temporary_);
   out_.open(temporary_, binary ? std::ios::out | std::ios::binary : std::ios::out);
   if (!out_) throw Error("cannot write '" + path + "': " + std::strerror(errno));
 }
@@ -21,6 +23,7 @@ Atomic_file::~Atomic_file() {
     out_.close();
     std::remove(temporary_.c_str());
   }
+  forget_temporary(temporary_);
 }
 
 void Atomic_file::commit() {

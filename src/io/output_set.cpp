@@ -1,0 +1,54 @@
+#include "output_set.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "io_error.hpp"
+#include "point_reader.hpp"
+#include "temporary_files.hpp"
+
+namespace sculpt::io {
+
+std::string Output_set::stage(const std::string& destination) {
+  const std::filesystem::path path(destination);
+  const std::string extension = extension_of(destination);
+  const std::string stem = path.stem().string();
+  const auto temporary_for = [&](const std::string& ext) {
+    return (path.parent_path() / ("." + stem + ".sculpt-" + std::to_string(::getpid()) + ext))
+        .string();
+  };
+  const auto add = [&](const std::string& ext) {
+    const std::string temporary = temporary_for(ext);
+    register_temporary(temporary);
+    staged_.emplace_back(temporary, (path.parent_path() / (stem + ext)).string());
+    return temporary;
+  };
+  if (extension == ".node" || extension == ".ele") {
+    add(extension == ".node" ? ".ele" : ".node");
+  }
+  return add(path.extension().string());
+}
+
+void Output_set::commit() {
+  for (const auto& [temporary, destination] : staged_) {
+    if (std::rename(temporary.c_str(), destination.c_str()) != 0) {
+      throw Error("cannot write '" + destination + "': " + std::strerror(errno));
+    }
+    forget_temporary(temporary);
+  }
+  committed_ = true;
+}
+
+Output_set::~Output_set() {
+  if (committed_) return;
+  for (const auto& staged : staged_) {
+    std::remove(staged.first.c_str());
+    forget_temporary(staged.first);
+  }
+}
+
+}  // namespace sculpt::io
