@@ -1,5 +1,7 @@
 // 3D: closed samples give closed, outward-oriented 2-manifolds of the right genus whose
 // vertices are the samples; bordered samples give a manifold sheet with its border.
+#include <cmath>
+
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -106,6 +108,47 @@ TEST(Surfaces_3d, ClosedModeOnASheetGivesNoBorder) {
   // The same saddle without --bordered is sculpted as a solid: its border disappears.
   const auto result = reconstruct(shapes::saddle(20));
   EXPECT_EQ(result.stats.boundary_ridges, 0u);
+}
+
+// Extreme but finite scales: every stage is computed on samples scaled by a power of two, which
+// is exact, and scaled back; no overflow of squared distances at 1e80, no underflow at 1e-105.
+std::vector<Point<3>> times(std::vector<Point<3>> points, double factor) {
+  for (auto& p : points) {
+    for (double& x : p) x *= factor;
+  }
+  return points;
+}
+
+TEST(Surfaces_3d, PowersOfTwoChangeNothingButTheScale) {
+  const auto samples = shapes::bumpy_sphere(1500);
+  for (Method method : {Method::paper, Method::robust}) {
+    SCOPED_TRACE(to_string(method));
+    const auto plain = reconstruct(samples, with_method(method));
+    for (double factor : {std::ldexp(1.0, 300), std::ldexp(1.0, -1000)}) {
+      const auto big = reconstruct(times(samples, factor), with_method(method));
+      EXPECT_EQ(big.surface, plain.surface);
+      ASSERT_EQ(big.poles.poles.size(), plain.poles.poles.size());
+      for (std::size_t p = 0; p < plain.poles.poles.size(); p += 97) {
+        EXPECT_EQ(big.poles.poles[p].radius, plain.poles.poles[p].radius * factor);
+        EXPECT_EQ(big.poles.poles[p].center[0], plain.poles.poles[p].center[0] * factor);
+      }
+    }
+  }
+}
+
+TEST(Surfaces_3d, ExtremeScalesAreReconstructed) {
+  for (double factor : {1e80, 1e-105, 1e-310, 1e300}) {
+    SCOPED_TRACE(factor);
+    for (Method method : {Method::paper, Method::robust}) {
+      const auto unit = shapes::sphere(500);
+      const auto result = reconstruct(times(unit, factor), with_method(method));
+      EXPECT_TRUE(verdict(result.stats).manifold) << verdict(result.stats).line;
+      EXPECT_EQ(result.stats.euler_characteristic, 2);
+      EXPECT_TRUE(testing::consistently_oriented_closed(result.surface));
+      // Volumes at 1e300 overflow (at 1e-310, underflow): orientation on the unit sphere.
+      EXPECT_GT(testing::signed_volume(unit, result.surface), 0.0);
+    }
+  }
 }
 
 }  // namespace

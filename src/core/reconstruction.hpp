@@ -11,6 +11,7 @@
 #include "../methods/paper/paper_method.hpp"
 #include "../methods/robust/robust_method.hpp"
 #include "delaunay.hpp"
+#include "exact_scaling.hpp"
 #include "facet_topology.hpp"
 #include "input_checks.hpp"
 #include "poles.hpp"
@@ -45,10 +46,15 @@ Reconstruction<Traits::dimension> reconstruct_with(
 
   clock.start("checks");
   check_input<Traits>(samples, options);
+  const int exponent = normalising_exponent<Traits::dimension>(samples);
+  const std::vector<Point<Traits::dimension>> normalised =
+      exponent == 0 ? std::vector<Point<Traits::dimension>>()
+                    : scaled<Traits::dimension>(samples, exponent);
+  const auto& work = exponent == 0 ? samples : normalised;
 
   typename Traits::Triangulation triangulation;
   clock.start("delaunay");
-  build_delaunay<Traits>(samples, options, triangulation, result);
+  build_delaunay<Traits>(work, options, triangulation, result);
   result.stats.delaunay_cells = result.delaunay.cell_count;
 
   clock.start("poles");
@@ -69,6 +75,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
 
   clock.start("topology");
   measure_topology<Traits::dimension>(samples.size(), result.surface, result.stats);
+  scale_back(result, exponent);
   clock.stop();
   return result;
 }
