@@ -140,6 +140,7 @@ struct Pole {
   Point<D> center{};
   double radius = 0;
   std::size_t cell = 0;  // index of the cell among the finite cells of stage 1
+  Cell<D> sites{};       // that cell's sites: the samples (and box corners) on the polar ball
   bool convex = false;   // the cell is incident to a box corner
 };
 
@@ -292,6 +293,10 @@ struct Reconstruction {
 
 // The rule `automatic` stands for with this kind of surface.
 Surface_rule resolved_rule(const Options& options);
+
+// Whether the surface comes from inserting poles (stages 5-6, then a surface rule): the paper
+// method, and every bordered surface. Otherwise (robust, closed) it comes from carving (stage 6b).
+bool inserts_poles(Method method, Surface_kind kind);
 
 // The verdict on a result, from its statistics: a closed 2-manifold (closed curve in 2D), a
 // bordered one (open curves), or what is wrong with it.

@@ -92,9 +92,9 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   options.progress = progress_printer(samples.size(), args.quiet);
 
   const Reconstruction<D> result = reconstruct(samples, options);
-  // The robust method's closed surfaces come from its carving, not from a surface rule.
-  const bool carved = options.method == Method::robust && options.kind == Surface_kind::closed;
-  run.rule = carved ? "manifold carve" : to_string(resolved_rule(options));
+  // A carved surface comes from no surface rule.
+  run.rule = inserts_poles(options.method, options.kind) ? to_string(resolved_rule(options))
+                                                         : "manifold carve";
 
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();

@@ -7,10 +7,10 @@ namespace sculpt::cli {
 void print_report(std::ostream& out, const Statistics& stats, const Run_description& run) {
   const bool three = stats.dimension == 3;
   const bool paper = stats.method == Method::paper;
+  const bool inserted = inserts_poles(stats.method, stats.kind);
   out << fmt::format("sculpt {} ({}D, {}, method {}, {}box factor {})\n", run.input,
                      stats.dimension, run.kind, to_string(stats.method),
-                     paper || stats.kind == Surface_kind::bordered ? "rule " + run.rule + ", " : "",
-                     run.box_factor);
+                     inserted ? "rule " + run.rule + ", " : "", run.box_factor);
   out << fmt::format("  {:<14}{:>10}{:>12}\n", "stage", "seconds", "peak MiB");
   out << fmt::format("  {:<14}{:>10.3f}\n", "read", run.read_seconds);
   for (const auto& stage : stats.stages) {
@@ -29,7 +29,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   row(paper ? "conflicts (poles / offers)" : "contradicted poles (poles / offers)",
       fmt::format("{} / {}", stats.conflicts, stats.conflict_offers));
   row("cells of DT(S+BBV)", stats.delaunay_cells);
-  if (paper || stats.kind == Surface_kind::bordered) {
+  if (inserted) {
     row(run.kind == "closed" ? "inserted poles (m - 2^D)" : "inserted poles (l - 2^D)",
         stats.inserted_poles);
     row("cells of DT(S+OUP)", stats.sculpted_cells);

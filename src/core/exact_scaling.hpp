@@ -45,7 +45,7 @@ std::vector<Point<D>> scaled(const std::vector<Point<D>>& points, int exponent) 
   return result;
 }
 
-// Returns a reconstruction made from scaled samples to the scale of the input.
+// Brings a reconstruction made from scaled samples back to the scale of the input.
 template <int D>
 void scale_back(Reconstruction<D>& result, int exponent) {
   if (exponent == 0) return;

@@ -111,6 +111,10 @@ Surface_rule resolved_rule(const Options& options) {
   return options.kind == Surface_kind::closed ? Surface_rule::skin : Surface_rule::extraction;
 }
 
+bool inserts_poles(Method method, Surface_kind kind) {
+  return method == Method::paper || kind == Surface_kind::bordered;
+}
+
 const char* to_string(Surface_kind kind) {
   return kind == Surface_kind::closed ? "closed" : "bordered";
 }

@@ -76,7 +76,10 @@ void find_poles(const typename Traits::Triangulation& triangulation,
       p.center = Traits::from_cgal(center);
       p.radius = std::sqrt(squared_radius(cell, center));
       p.cell = static_cast<std::size_t>(cell->info());
-      for (int i = 0; i <= D; ++i) p.convex = p.convex || cell->vertex(i)->info() >= n;
+      for (int i = 0; i <= D; ++i) {
+        p.sites[i] = cell->vertex(i)->info();
+        p.convex = p.convex || p.sites[i] >= n;
+      }
       stage.poles.push_back(p);
     }
     return pole;

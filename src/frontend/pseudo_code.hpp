@@ -16,75 +16,89 @@ struct Pseudo_code {
   int before_any_event = 0;                    // in the propagation, before the first event
 };
 
-inline const Pseudo_code& pseudo_code(Method method) {
+// The stages before the labelling show the first line or the poles' lines in every method.
+inline std::map<scene::Stage, int> common_stage_lines(int poles_line) {
   using scene::Stage;
-  static const Pseudo_code paper{{
-                                     "DT <- Delaunay(S + BBV)   # BB: 5x box",
-                                     "for each sample s:",
-                                     "    p+(s) <- farthest vertex of Vor(s)",
-                                     "    p-(s) <- farthest v, (v-s).(p+ -s) < 0",
-                                     "OSP <- convex poles: outer",
-                                     "ISP <- poles paired with OSP: inner",
-                                     "queue <- OSP, ISP",
-                                     "while queue not empty:",
-                                     "    p <- pop(queue)",
-                                     "    for q in kd-range(cube in B(p)):",
-                                     "        label q like p",
-                                     "    for q paired with p:",
-                                     "        label q opposite p",
-                                     "OUP <- outer poles that are not convex",
-                                     "DT <- insert(DT, OUP)",
-                                     "solid <- cells whose vertices are all in S",
-                                     "surface <- facets solid | rest",
-                                 },
-                                 {{Stage::samples, 0},
-                                  {Stage::delaunay, 0},
-                                  {Stage::hull, 0},
-                                  {Stage::voronoi, 0},
-                                  {Stage::poles, 2},
-                                  {Stage::seeds, 4},
-                                  {Stage::outer_concave, 13},
-                                  {Stage::sculpted_delaunay, 14},
-                                  {Stage::solid, 15},
-                                  {Stage::surface, 16}},
-                                 {{Label_reason::convex_seed, 4},
-                                  {Label_reason::inscribed_cube, 10},
-                                  {Label_reason::pairing, 12},
-                                  {Label_reason::ball_overlap, 10}},
-                                 6};
-  static const Pseudo_code robust{{
-                                      "DT <- Delaunay(S + BBV)   # BB: 5x box",
-                                      "for each sample s:",
-                                      "    p+(s), p-(s) <- poles of Vor(s)",
-                                      "OSP <- convex poles: outer, weight 1",
-                                      "heap <- OSP   # largest |outer - inner| first",
-                                      "while heap not empty:",
-                                      "    p <- most confident pole; label it",
-                                      "    for q whose ball meets B(p) at s:",
-                                      "        ev(q, label p) max= cos(p s q)",
-                                      "    for q paired with p (antipodal):",
-                                      "        ev(q, other side) max= -cos(p s q)",
-                                      "outer(c) <- OUP in ball(c) or power(c) outer",
-                                      "carve outer c from outside, if manifold",
-                                      "open cavities, handles; expose samples",
-                                      "solid <- cells left",
-                                      "surface <- facets solid | outside",
-                                  },
-                                  {{Stage::samples, 0},
-                                   {Stage::delaunay, 0},
-                                   {Stage::hull, 0},
-                                   {Stage::voronoi, 0},
-                                   {Stage::poles, 2},
-                                   {Stage::seeds, 3},
-                                   {Stage::outer_concave, 11},
-                                   {Stage::sculpted_delaunay, 12},
-                                   {Stage::solid, 14},
-                                   {Stage::surface, 15}},
-                                  {{Label_reason::convex_seed, 3},
-                                   {Label_reason::ball_overlap, 8},
-                                   {Label_reason::pairing, 10},
-                                   {Label_reason::inscribed_cube, 8}},
-                                  4};
+  return {{Stage::samples, 0},
+          {Stage::delaunay, 0},
+          {Stage::hull, 0},
+          {Stage::voronoi, 0},
+          {Stage::poles, poles_line}};
+}
+
+inline Pseudo_code paper_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    p+(s) <- farthest vertex of Vor(s)",
+      "    p-(s) <- farthest v, (v-s).(p+ -s) < 0",
+      "OSP <- convex poles: outer",
+      "ISP <- poles paired with OSP: inner",
+      "queue <- OSP, ISP",
+      "while queue not empty:",
+      "    p <- pop(queue)",
+      "    for q in kd-range(cube in B(p)):",
+      "        label q like p",
+      "    for q paired with p:",
+      "        label q opposite p",
+      "OUP <- outer poles that are not convex",
+      "DT <- insert(DT, OUP)",
+      "solid <- cells whose vertices are all in S",
+      "surface <- facets solid | rest",
+  };
+  code.line_of_stage = common_stage_lines(2);
+  code.line_of_stage.insert({{Stage::seeds, 4},
+                             {Stage::outer_concave, 13},
+                             {Stage::sculpted_delaunay, 14},
+                             {Stage::solid, 15},
+                             {Stage::surface, 16}});
+  code.line_of_reason = {{Label_reason::convex_seed, 4},
+                         {Label_reason::inscribed_cube, 10},
+                         {Label_reason::pairing, 12},
+                         {Label_reason::ball_overlap, 10}};
+  code.before_any_event = 6;
+  return code;
+}
+
+inline Pseudo_code robust_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",
+      "OSP <- convex poles: outer, weight 1",
+      "heap <- OSP   # largest |outer - inner| first",
+      "while heap not empty:",
+      "    p <- most confident pole; label it",
+      "    for q whose ball meets B(p) at s:",
+      "        ev(q, label p) max= cos(p s q)",
+      "    for q paired with p (antipodal):",
+      "        ev(q, other side) max= -cos(p s q)",
+      "outer(c) <- OUP in ball(c) or power(c) outer",
+      "carve outer c from outside, if manifold",
+      "open cavities, handles; expose samples",
+      "solid <- cells left",
+      "surface <- facets solid | outside",
+  };
+  code.line_of_stage = common_stage_lines(2);
+  code.line_of_stage.insert({{Stage::seeds, 3},
+                             {Stage::outer_concave, 11},
+                             {Stage::sculpted_delaunay, 12},
+                             {Stage::solid, 14},
+                             {Stage::surface, 15}});
+  code.line_of_reason = {{Label_reason::convex_seed, 3},
+                         {Label_reason::ball_overlap, 8},
+                         {Label_reason::pairing, 10},
+                         {Label_reason::inscribed_cube, 8}};
+  code.before_any_event = 4;
+  return code;
+}
+
+inline const Pseudo_code& pseudo_code(Method method) {
+  static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code();
   return method == Method::paper ? paper : robust;
 }
 

@@ -54,7 +54,7 @@ class Scene_builder {
         contradicted_poles(r_.propagation.labels);
         break;
       case Stage::sculpted_delaunay:
-        if (r_.options.method == Method::robust && r_.options.kind == Surface_kind::closed) {
+        if (!inserts_poles(r_.options.method, r_.options.kind)) {
           // The robust method inserts no pole: it carves the hull's cells directly.
           scene_.title = "Carved hull: the cells left after carving (robust method)";
           edges_of(r_.solid, "carved-hull", "edges of the cells left", palette::delaunay_edge);

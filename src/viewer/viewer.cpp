@@ -555,7 +555,7 @@ void Viewer::draw_statistics() {
   ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
   ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",
               s.conflicts, s.unlabelled_poles);
-  if (s.method == Method::paper || s.kind == Surface_kind::bordered) {
+  if (inserts_poles(s.method, s.kind)) {
     ImGui::Text("cells %zu -> %zu   solid %zu", s.delaunay_cells, s.sculpted_cells, s.solid_cells);
   } else {
     ImGui::Text("cells %zu, carved %zu, outer kept %zu", s.delaunay_cells, s.carved_cells,

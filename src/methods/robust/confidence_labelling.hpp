@@ -28,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/seeds.hpp"
 #include "../../core/stage_clock.hpp"
 
 namespace sculpt {
@@ -53,10 +54,8 @@ struct Pole_evidence {
 
 // Links pole p to the poles of the samples on its ball (the vertices of its Delaunay cell): both
 // balls pass through that sample, so the angle between them there is the evidence.
-// `pole_cells[p]` are the sites of pole p's cell.
 template <int D>
-Pole_evidence pole_evidence(const Reconstruction<D>& result,
-                            const std::vector<Cell<D>>& pole_cells) {
+Pole_evidence pole_evidence(const Reconstruction<D>& result) {
   const auto& stage = result.poles;
   const int n = static_cast<int>(stage.positive_pole.size());
   const int pole_count = static_cast<int>(stage.poles.size());
@@ -68,7 +67,7 @@ Pole_evidence pole_evidence(const Reconstruction<D>& result,
   std::vector<Directed> directed;
   directed.reserve(static_cast<std::size_t>(pole_count) * 2 * (D + 1) * 2);
   for (int p = 0; p < pole_count; ++p) {
-    for (int s : pole_cells[p]) {
+    for (int s : stage.poles[p].sites) {
       if (s >= n) continue;  // a box corner
       for (int q : {stage.positive_pole[s], stage.negative_pole[s]}) {
         if (q < 0 || q == p) continue;
@@ -188,8 +187,7 @@ class Confidence_labelling {
 
     for (int i = evidence_.offsets[pole]; i < evidence_.offsets[pole + 1]; ++i) {
       const auto& link = evidence_.links[i];
-      const Label offered =
-          link.opposite ? (label == Label::inner ? Label::outer : Label::inner) : label;
+      const Label offered = link.opposite ? opposite(label) : label;
       const Label_reason reason =
           link.opposite ? Label_reason::pairing : Label_reason::ball_overlap;
       const Label current = stage_.labels[link.pole];

@@ -59,6 +59,9 @@ class Manifold_carving {
   void run() {
     start_from_hull();
     carve_outer_cells();
+    for (auto cell : Traits::finite_cells(triangulation_)) {
+      if (!is_outside(cell) && judged_outer(cell)) outer_left_.push_back(cell);
+    }
     open_cavities();
     // Punching leaves fragments of webs (bridges between strands) that are whole groups again.
     for (int round = 0; round < 4; ++round) {
@@ -109,6 +112,9 @@ class Manifold_carving {
     return !triangulation_.is_infinite(v) && v->info() < sample_count_;
   }
   bool judged_outer(Cell_handle cell) const { return judgement_.outer[cell->info()] != 0; }
+  Carve_reason judged_reason(Cell_handle cell) const {
+    return static_cast<Carve_reason>(judgement_.outer[cell->info()] - 1);
+  }
 
   void start_from_hull() {
     for (auto cell : Traits::finite_cells(triangulation_)) {
@@ -195,7 +201,7 @@ class Manifold_carving {
       const Cell_handle cell = queue_.top().cell;
       queue_.pop();
       if (is_outside(cell) || !can_remove(cell)) continue;
-      remove(cell, static_cast<Carve_reason>(judgement_.outer[cell->info()] - 1));
+      remove(cell, judged_reason(cell));
       for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
     }
   }
@@ -224,7 +230,8 @@ class Manifold_carving {
       return link_.size() == 2;
     } else {
       // One cycle: every link vertex has degree 2, and walking from one edge visits them all.
-      std::vector<std::pair<int, int>> ends;
+      auto& ends = link_ends_;
+      ends.clear();
       for (const auto& e : link_) {
         ends.push_back({e[0], e[1]});
         ends.push_back({e[1], e[0]});
@@ -251,6 +258,41 @@ class Manifold_carving {
     }
   }
 
+  // The judged-outer cells still in the solid (fewer with every removal).
+  const std::vector<Cell_handle>& outer_cells_left() {
+    outer_left_.erase(std::remove_if(outer_left_.begin(), outer_left_.end(),
+                                     [&](Cell_handle cell) { return is_outside(cell); }),
+                      outer_left_.end());
+    return outer_left_;
+  }
+
+  // The connected group of outer cells still in the solid that `start` belongs to, each marked
+  // with a new mark (returned); `enclosed` says whether none of them touches the outside.
+  int outer_group(Cell_handle start, std::vector<Cell_handle>& group, bool& enclosed) {
+    if (group_mark_.size() != outside_.size()) group_mark_.assign(outside_.size(), 0);
+    const int mark = ++group_counter_;
+    group.clear();
+    stack_.assign(1, start);
+    group_mark_[start->info()] = mark;
+    enclosed = true;
+    while (!stack_.empty()) {  // depth first: the order cells are tried and carved around
+      const Cell_handle cell = stack_.back();
+      stack_.pop_back();
+      group.push_back(cell);
+      for (int i = 0; i <= D; ++i) {
+        const Cell_handle neighbour = cell->neighbor(i);
+        if (is_outside(neighbour)) {
+          enclosed = false;
+          continue;
+        }
+        if (!judged_outer(neighbour) || group_mark_[neighbour->info()] == mark) continue;
+        group_mark_[neighbour->info()] = mark;
+        stack_.push_back(neighbour);
+      }
+    }
+    return mark;
+  }
+
   // Carving from the outside never reaches a cavity: the hole of an annulus (2D), the inside of a
   // hollow part. A group of outer cells enclosed by the solid is a cavity when most samples on it
   // (at least half) have their outer pole inside it: the labelling saw the medial balls of a
@@ -259,36 +301,24 @@ class Manifold_carving {
   // removing it makes a new boundary, a sphere (circle) around it, which is a manifold when none
   // of its vertices is on the surface yet. Carving goes on from there.
   void open_cavities() {
-    std::vector<int> group_of(outside_.size(), 0);  // per cell: its group, numbered from 1
-    int groups = 0;
-    std::vector<Cell_handle> group, stack;
+    const int first_mark = group_counter_ + 1;
+    std::vector<Cell_handle> group;
     std::vector<int> samples;
-    for (auto start : Traits::finite_cells(triangulation_)) {
-      if (is_outside(start) || !judged_outer(start) || group_of[start->info()]) continue;
-      const int id = ++groups;
-      group.clear();
+    for (Cell_handle start : std::vector<Cell_handle>(outer_cells_left())) {
+      if (is_outside(start) || (!group_mark_.empty() && group_mark_[start->info()] >= first_mark)) {
+        continue;  // carved since, or in a group already seen
+      }
+      bool enclosed = false;
+      const int mark = outer_group(start, group, enclosed);
+      if (!enclosed) continue;
       samples.clear();
-      stack.assign(1, start);
-      group_of[start->info()] = id;
-      bool enclosed = true;
       Cell_handle opening = start;
-      while (!stack.empty()) {
-        const Cell_handle cell = stack.back();
-        stack.pop_back();
-        group.push_back(cell);
+      for (Cell_handle cell : group) {
         if (judgement_.outer_pole_of[cell->info()] > judgement_.outer_pole_of[opening->info()]) {
           opening = cell;
         }
-        for (int i = 0; i <= D; ++i) {
-          samples.push_back(cell->vertex(i)->info());
-          const Cell_handle next = cell->neighbor(i);
-          if (is_outside(next)) enclosed = false;
-          if (is_outside(next) || !judged_outer(next) || group_of[next->info()]) continue;
-          group_of[next->info()] = id;
-          stack.push_back(next);
-        }
+        for (int i = 0; i <= D; ++i) samples.push_back(cell->vertex(i)->info());
       }
-      if (!enclosed) continue;
       std::sort(samples.begin(), samples.end());
       samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
       std::size_t pointing = 0;
@@ -296,8 +326,7 @@ class Manifold_carving {
         bool points_in = false;
         for (int q : {result_.poles.positive_pole[s], result_.poles.negative_pole[s]}) {
           if (q < 0 || result_.propagation.labels[q] != Label::outer) continue;
-          const std::size_t cell = result_.poles.poles[q].cell;
-          points_in = points_in || group_of[cell] == id;
+          points_in = points_in || group_mark_[result_.poles.poles[q].cell] == mark;
         }
         pointing += points_in;
       }
@@ -308,7 +337,7 @@ class Manifold_carving {
         clear = outside_cells_at_[s] == 0 && solid_cells_at_[s] > 1;
       }
       if (!clear) continue;
-      remove(opening, static_cast<Carve_reason>(judgement_.outer[opening->info()] - 1));
+      remove(opening, judged_reason(opening));
       for (int i = 0; i <= D; ++i) push_if_outer(opening->neighbor(i));
       carve_queue();
     }
@@ -319,28 +348,18 @@ class Manifold_carving {
   // group of outer cells still in the solid is tried as a whole: it goes if the surface stays a
   // manifold at every vertex of the group and no sample leaves the solid.
   void open_handles() {
-    std::vector<std::uint8_t> seen(outside_.size(), 0);
-    std::vector<Cell_handle> group, stack;
+    std::vector<Cell_handle> group;
     for (int round = 0; round < 4; ++round) {
       bool opened = false;
-      std::fill(seen.begin(), seen.end(), 0);
-      for (auto start : Traits::finite_cells(triangulation_)) {
-        if (is_outside(start) || !judged_outer(start) || seen[start->info()]) continue;
-        group.clear();
-        stack.assign(1, start);
-        seen[start->info()] = 1;
-        while (!stack.empty()) {
-          const Cell_handle cell = stack.back();
-          stack.pop_back();
-          group.push_back(cell);
-          for (int i = 0; i <= D; ++i) {
-            const Cell_handle next = cell->neighbor(i);
-            if (is_outside(next) || !judged_outer(next) || seen[next->info()]) continue;
-            seen[next->info()] = 1;
-            stack.push_back(next);
-          }
+      const int first_mark = group_counter_ + 1;
+      for (Cell_handle start : std::vector<Cell_handle>(outer_cells_left())) {
+        if (is_outside(start) ||
+            (!group_mark_.empty() && group_mark_[start->info()] >= first_mark)) {
+          continue;
         }
-        opened = try_remove_group(group) || opened;
+        bool enclosed = false;
+        outer_group(start, group, enclosed);
+        opened = (!enclosed && try_remove_group(group)) || opened;
       }
       if (!opened) break;
     }
@@ -355,8 +374,8 @@ class Manifold_carving {
     std::vector<Cell_handle> group;
     for (int round = 0; round < 4; ++round) {
       bool punched = false;
-      for (Cell_handle cell : Traits::finite_cells(triangulation_)) {
-        if (is_outside(cell) || !judged_outer(cell)) continue;
+      for (Cell_handle cell : std::vector<Cell_handle>(outer_cells_left())) {
+        if (is_outside(cell)) continue;
         int opposite[D + 1];
         const int k = outside_facets(cell, opposite);
         if (k == 0 || k >= D) continue;
@@ -417,12 +436,7 @@ class Manifold_carving {
   }
 
   bool try_remove_group(const std::vector<Cell_handle>& group) {
-    bool touches_outside = false;
-    for (Cell_handle cell : group) {
-      for (int i = 0; i <= D; ++i)
-        touches_outside = touches_outside || is_outside(cell->neighbor(i));
-    }
-    if (!touches_outside) return false;  // a pocket inside the solid: leave it filled
+    // Callers pass groups that touch the outside (pockets inside the solid are cavities' business).
     for (Cell_handle cell : group) set_outside(cell, true);
     bool fine = true;
     for (Cell_handle cell : group) {
@@ -437,10 +451,8 @@ class Manifold_carving {
       for (Cell_handle cell : group) set_outside(cell, false);
       return false;
     }
-    for (Cell_handle cell : group) {
-      result_.carving.events.push_back(
-          {cell->info(), static_cast<Carve_reason>(judgement_.outer[cell->info()] - 1)});
-    }
+    for (Cell_handle cell : group)
+      result_.carving.events.push_back({cell->info(), judged_reason(cell)});
     // Removing the group can make Boissonnat's condition hold for outer cells next to it.
     for (Cell_handle cell : group) {
       for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
@@ -463,11 +475,11 @@ class Manifold_carving {
       std::vector<Vertex_handle> still;
       for (Vertex_handle v : waiting) {
         if (!buried(v->info())) continue;
-        std::vector<Cell_handle> star;
-        Traits::incident_cells(triangulation_, v, star);
+        star_.clear();
+        Traits::incident_cells(triangulation_, v, star_);
         Cell_handle best{};
         float best_radius2 = -1;
-        for (Cell_handle cell : star) {
+        for (Cell_handle cell : star_) {
           if (triangulation_.is_infinite(cell) || is_outside(cell) || !can_remove(cell)) continue;
           const float r2 = judgement_.radius2[cell->info()];
           if (r2 > best_radius2) {
@@ -487,11 +499,8 @@ class Manifold_carving {
   }
 
   void record_what_stayed() {
-    for (auto cell : Traits::finite_cells(triangulation_)) {
-      if (!is_outside(cell) && judged_outer(cell)) {
-        result_.carving.kept_outer_cells.push_back(cell->info());
-      }
-    }
+    for (Cell_handle cell : outer_cells_left())
+      result_.carving.kept_outer_cells.push_back(cell->info());
     for (int s = 0; s < sample_count_; ++s) {
       if (buried(s)) result_.carving.buried_samples.push_back(s);
     }
@@ -509,6 +518,11 @@ class Manifold_carving {
   std::vector<int> stamp_;  // per cell: the search that last reached it
   int stamp_counter_ = 0;
   std::vector<std::array<int, 2>> link_;
+  std::vector<std::pair<int, int>> link_ends_;
+  std::vector<Cell_handle> outer_left_;  // judged outer and in the solid after the first carve
+  std::vector<Cell_handle> stack_;
+  std::vector<int> group_mark_;  // per cell: the outer group that last reached it
+  int group_counter_ = 0;
 };
 
 }  // namespace sculpt

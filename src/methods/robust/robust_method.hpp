@@ -21,34 +21,17 @@
 
 namespace sculpt {
 
-// The sites of each pole's Delaunay cell.
-template <class Traits>
-std::vector<Cell<Traits::dimension>> pole_cells(const typename Traits::Triangulation& triangulation,
-                                                const Reconstruction<Traits::dimension>& result) {
-  constexpr int D = Traits::dimension;
-  const auto& poles = result.poles.poles;
-  std::vector<int> pole_of_cell(result.delaunay.cell_count, -1);
-  for (std::size_t p = 0; p < poles.size(); ++p) pole_of_cell[poles[p].cell] = static_cast<int>(p);
-  std::vector<Cell<D>> cells(poles.size());
-  for (auto cell : Traits::finite_cells(triangulation)) {
-    const int pole = pole_of_cell[cell->info()];
-    if (pole < 0) continue;
-    for (int i = 0; i <= D; ++i) cells[pole][i] = cell->vertex(i)->info();
-  }
-  return cells;
-}
-
 template <class Traits>
 void run_robust_method(typename Traits::Triangulation& triangulation,
                        Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
   clock.start("labelling");
   {
-    const Pole_evidence evidence = pole_evidence(result, pole_cells<Traits>(triangulation, result));
+    const Pole_evidence evidence = pole_evidence(result);
     Confidence_labelling<Traits::dimension>(result, evidence, clock).run(result.seeds);
   }
   count_labels(result);
 
-  if (result.options.kind == Surface_kind::bordered) {
+  if (inserts_poles(Method::robust, result.options.kind)) {
     sculpt_by_insertion<Traits>(triangulation, result, clock);
     return;
   }
