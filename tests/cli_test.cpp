@@ -90,7 +90,8 @@ TEST(Cli, BadInputGivesOneLineAndNoOutput) {
   };
   for (const auto& [name, content] : bad) {
     const std::string input = content.empty() ? output_path(name) : write_file(name, content);
-    const auto output = output_path(name + ".out.stl");
+    const auto output =
+        output_path(name + (name.find(".xy") == name.size() - 3 ? ".out.svg" : ".out.stl"));
     const Command_result run = run_sculpt("reconstruct " + input + " -o " + output);
     EXPECT_EQ(run.exit_code, 1) << name;
     EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << name << ": " << run.err;
@@ -172,7 +173,7 @@ TEST(Cli, MergeDuplicatesOnRequest) {
 TEST(Cli, UnknownOutputFormatFailsBeforeWork) {
   const Command_result run =
       run_sculpt("reconstruct --example sphere -o " + output_path("sphere.xyz"));
-  EXPECT_EQ(run.exit_code, 1);
+  EXPECT_EQ(run.exit_code, 2) << "an output format Sculpt cannot write is bad usage";
   EXPECT_NE(run.err.find("known: .stl"), std::string::npos) << run.err;
 }
 

@@ -1,7 +1,9 @@
 // Reading points from every input format, and writing every output format and reading it back.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <regex>
 
@@ -73,6 +75,138 @@ TEST(Point_reader, PlyPointCloudsAsciiAndBinary) {
   const auto set = io::read_points(write_file("cloud-binary.ply", binary));
   ASSERT_EQ(set.points.size(), 2u);
   EXPECT_EQ(set.points[1], (Point<3>{4.5, 5.5, 6.5}));
+}
+
+// Writes v in a PLY scalar type, in the given byte order.
+std::string ply_value(const std::string& type, double v, bool big_endian) {
+  std::string bytes;
+  auto put = [&](auto value) {
+    bytes.assign(sizeof value, '\0');
+    std::memcpy(bytes.data(), &value, sizeof value);
+    if (big_endian) std::reverse(bytes.begin(), bytes.end());
+  };
+  if (type == "char" || type == "int8") put(std::int8_t(v));
+  if (type == "uchar" || type == "uint8") put(std::uint8_t(v));
+  if (type == "short" || type == "int16") put(std::int16_t(v));
+  if (type == "ushort" || type == "uint16") put(std::uint16_t(v));
+  if (type == "int" || type == "int32") put(std::int32_t(v));
+  if (type == "uint" || type == "uint32") put(std::uint32_t(v));
+  if (type == "float" || type == "float32") put(float(v));
+  if (type == "double" || type == "float64") put(double(v));
+  return bytes;
+}
+
+TEST(Point_reader, PlyCoordinatesOfEveryScalarTypeAndByteOrder) {
+  const std::vector<Point<3>> points = {{1, 2, 3}, {4, 5, 6}, {7, 8, 9}, {10, 11, 120}};
+  for (const std::string type :
+       {"char", "uchar", "short", "ushort", "int", "uint", "float", "double", "int8", "uint8",
+        "int16", "uint16", "int32", "uint32", "float32", "float64"}) {
+    for (const std::string format : {"ascii", "binary_little_endian", "binary_big_endian"}) {
+      SCOPED_TRACE(type + " " + format);
+      std::string file = "ply\nformat " + format +
+                         " 1.0\ncomment any type\nelement vertex 4\nproperty uchar red\n"
+                         "property " +
+                         type + " x\nproperty " + type + " y\nproperty " + type +
+                         " z\nelement face 2\nproperty list uchar int vertex_indices\n"
+                         "end_header\n";
+      const bool big = format == "binary_big_endian";
+      for (const auto& p : points) {
+        if (format == "ascii") {
+          file += fmt::format("255 {} {} {}\n", p[0], p[1], p[2]);
+        } else {
+          file += ply_value("uchar", 255, big);
+          for (double x : p) file += ply_value(type, x, big);
+        }
+      }
+      for (const std::array<int, 4> face : {std::array<int, 4>{3, 0, 1, 2}, {3, 0, 2, 3}}) {
+        if (format == "ascii") {
+          file += fmt::format("{} {} {} {}\n", face[0], face[1], face[2], face[3]);
+        } else {
+          file += ply_value("uchar", face[0], big);
+          for (int k = 1; k < 4; ++k) file += ply_value("int", face[k], big);
+        }
+      }
+      const auto set = io::read_points_from_memory(file, ".ply");
+      EXPECT_EQ(set.points, points);
+      EXPECT_EQ(set.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}}));
+    }
+  }
+}
+
+TEST(Point_reader, ObjPointCloudsAndFaceCornerForms) {
+  const auto cloud = io::read_points_from_memory(
+      "# scanner export\nv 1 2 3\nv 4 5 6 0.5 0.5 0.5\nv 7 8 9\n", ".obj");
+  EXPECT_EQ(cloud.points, (std::vector<Point<3>>{{1, 2, 3}, {4, 5, 6}, {7, 8, 9}}));
+  EXPECT_TRUE(cloud.triangles.empty());
+  const auto mesh = io::read_points_from_memory(
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 1\ng part\nusemtl m\n"
+      "f 1/1/1 2/1/1 3/1/1\nf 1//1 3//1 4//1\nf -4 -2 -1\nl 1 2\n",
+      ".obj");
+  EXPECT_EQ(mesh.points.size(), 4u);
+  EXPECT_EQ(mesh.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}, {0, 2, 3}}));
+}
+
+TEST(Point_reader, OffVariants) {
+  const std::vector<Point<3>> expected = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  const std::pair<std::string, std::string> files[] = {
+      {"OFF", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n"},
+      {"counts on the keyword line", "OFF 4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2 255 0 0\n"},
+      {"COFF",
+       "COFF\n4 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n"
+       "0 0 1 9 9 9 255\n3 0 1 2\n"},
+      {"NOFF",
+       "NOFF\n# normals\n4 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n0 0 1 1 0 0\n3 0 1 2\n"},
+      {"CNOFF",
+       "CNOFF\n4 1 0\n0 0 0 0 0 1 1 1 1\n1 0 0 0 0 1 1 1 1\n0 1 0 0 0 1 1 1 1\n"
+       "0 0 1 0 0 1 1 1 1\n3 0 1 2\n"},
+      {"STOFF", "STOFF\n4 1 0\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n3 0 1 2\n"},
+      {"4OFF", "4OFF\n4 1 0\n0 0 0 2\n2 0 0 2\n0 4 0 4\n0 0 0.5 0.5\n3 0 1 2\n"},
+      {"nOFF", "nOFF\n3\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n"},
+      {"CRLF and BOM",
+       "\xEF\xBB\xBFOFF\r\n4 1 0\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 1\r\n3 0 1 2\r\n"},
+  };
+  for (const auto& [name, content] : files) {
+    SCOPED_TRACE(name);
+    const auto set = io::read_points_from_memory(content, ".off");
+    EXPECT_EQ(set.points, expected);
+    EXPECT_EQ(set.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}}));
+  }
+  const auto planar =
+      io::read_points_from_memory("nOFF 2\n3 1 0\n0 0\n1 0\n0 1\n3 0 1 2\n", ".off");
+  EXPECT_EQ(planar.dimension, 2);
+}
+
+TEST(Point_reader, StlAsciiAndBinaryWhoseHeaderSaysSolid) {
+  const auto ascii = io::read_points_from_memory(
+      "solid part\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 0\n      vertex 1 0 0\n"
+      "      vertex 0 1 0\n    endloop\n  endfacet\n  FACET NORMAL 0 0 1\n    OUTER LOOP\n"
+      "      VERTEX 0 0 0\n      VERTEX 0 1 0\n      VERTEX -0 0 1\n    ENDLOOP\n  ENDFACET\n"
+      "endsolid part\n",
+      ".stl");
+  EXPECT_EQ(ascii.points, (std::vector<Point<3>>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}));
+  EXPECT_EQ(ascii.triangles, (std::vector<std::array<int, 3>>{{0, 1, 2}, {0, 2, 3}}));
+  // Many exporters start the binary header with "solid": the size decides.
+  std::string binary = "solid exported by a CAD program";
+  binary.resize(80, ' ');
+  const std::uint32_t count = 2;
+  binary.append(reinterpret_cast<const char*>(&count), 4);
+  for (const std::array<float, 9> t : {std::array<float, 9>{0, 0, 0, 1, 0, 0, 0, 1, 0},
+                                       std::array<float, 9>{0, 0, 0, 0, 1, 0, 0, 0, 1}}) {
+    binary.append(12, '\0');
+    binary.append(reinterpret_cast<const char*>(t.data()), 36);
+    binary.append(2, '\0');
+  }
+  const auto set = io::read_points_from_memory(binary, ".stl");
+  EXPECT_EQ(set.points, ascii.points);
+  EXPECT_EQ(set.triangles, ascii.triangles);
+}
+
+TEST(Point_reader, NumbersInEverySpellingAndSeparator) {
+  const auto set = io::read_points_from_memory(
+      "x,y,z\n+1.5;2e0;-3\n4\t5\t6 # tab separated\n.5 1E+2 7E-1\n", ".csv");
+  EXPECT_EQ(set.points, (std::vector<Point<3>>{{1.5, 2, -3}, {4, 5, 6}, {0.5, 100, 0.7}}));
+  EXPECT_THROW(io::read_points_from_memory("0x1p3 0 0\n", ".xyz"), io::Error)
+      << "a word strtod would half-read is not a number";
 }
 
 TEST(Point_reader, PlanarPointsDropTheirConstantCoordinate) {

@@ -151,5 +151,40 @@ TEST(Surfaces_3d, ExtremeScalesAreReconstructed) {
   }
 }
 
+TEST(Surfaces_3d, FarFromTheOriginIsTranslatedExactly) {
+  // Samples far away (a scan in survey coordinates): the stages run on an exact translation,
+  // so the result is the one of the same points near the origin, and the samples come back
+  // as given.
+  const auto near = shapes::bumpy_sphere(1500);
+  std::vector<Point<3>> far = near;
+  const Point<3> shift{3e6, -5e7, 1e9};
+  for (auto& p : far) {
+    for (int k = 0; k < 3; ++k) p[k] += shift[k];
+  }
+  std::vector<Point<3>> back = far;  // exactly the far samples, moved back: x - shift is exact
+  for (auto& p : back) {
+    for (int k = 0; k < 3; ++k) p[k] -= shift[k];
+  }
+  for (Method method : {Method::paper, Method::robust}) {
+    SCOPED_TRACE(to_string(method));
+    const auto at_origin = reconstruct(back, with_method(method));
+    const auto far_away = reconstruct(far, with_method(method));
+    EXPECT_EQ(far_away.surface, at_origin.surface);
+    EXPECT_TRUE(verdict(far_away.stats).manifold) << verdict(far_away.stats).line;
+    EXPECT_TRUE(std::equal(far.begin(), far.end(), far_away.sites.begin()));
+  }
+}
+
+TEST(Surfaces_3d, AnUnrepresentableSpreadIsOneClearError) {
+  const std::vector<Point<3>> spread = {
+      {0, 0, 0}, {1e-300, 0, 0}, {0, 1e-300, 0}, {0, 0, 1e-300}, {1e300, 1e300, 1e300}};
+  try {
+    reconstruct(spread);
+    FAIL() << "accepted";
+  } catch (const Input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("orders of magnitude"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace sculpt

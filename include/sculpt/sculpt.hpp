@@ -230,7 +230,11 @@ struct Statistics {
   Surface_kind kind = Surface_kind::closed;
   int dimension = 0;
   std::size_t samples = 0;  // n
-  std::size_t poles = 0;    // distinct poles
+  // The stages ran on (sample - translation) * 2^scale_exponent, both exact (any finite
+  // scale, any distance from the origin); every result is in the input's coordinates.
+  std::array<double, 3> translation{};  // the unused coordinate of 2D is 0
+  int scale_exponent = 0;
+  std::size_t poles = 0;  // distinct poles
   std::size_t convex_poles = 0;
   std::size_t inner_poles = 0;
   std::size_t outer_poles = 0;

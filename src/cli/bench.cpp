@@ -207,7 +207,9 @@ void bench_rendering(int triangles) {
 int run_bench(const Bench_arguments& args) {
   std::vector<nlohmann::json> rows;
   const auto add = [&](nlohmann::json row) {
-    std::cerr << "sculpt bench: " << row["input"].get<std::string>() << " done\n";
+    if (isatty(STDERR_FILENO)) {  // progress for a person watching; never in a log
+      std::cerr << "sculpt bench: " << row["input"].get<std::string>() << " done\n";
+    }
     rows.push_back(std::move(row));
   };
   const auto measure_input = [&](const std::string& path, const std::string& example) {

@@ -10,6 +10,7 @@
 
 #include "bench.hpp"
 #include "figures/figures.hpp"
+#include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_set.hpp"
@@ -33,20 +34,36 @@ struct Reconstruct_arguments {
   bool require_manifold = false;
 };
 
-// Exit code of a run whose output was written but is not a manifold, with --require-manifold.
-constexpr int defective_result_exit = 3;
+using frontend::exit_bad_input;
+using frontend::exit_bad_usage;
+
+using frontend::Usage_error;
+
+// The stage being run, on one line of a terminal that is rewritten in place and erased before
+// anything else is printed: a failure is still one line. Nothing when stderr is not a terminal.
+bool status_shown = false;
+
+void show_status(const std::string& text) {
+  std::cerr << '\r' << text << "\033[K" << std::flush;
+  status_shown = true;
+}
+
+void clear_status() {
+  if (status_shown) std::cerr << "\r\033[K" << std::flush;
+  status_shown = false;
+}
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Stage names on standard error for runs long enough to wonder about.
+// The stage being run, on a terminal, for runs long enough to wonder about.
 std::function<bool(const Progress&)> progress_printer(std::size_t samples, bool quiet) {
-  if (quiet || (!isatty(STDERR_FILENO) && samples < 200000)) return {};
+  if (quiet || !isatty(STDERR_FILENO) || samples < 20000) return {};
   return [last = std::string()](const Progress& progress) mutable {
     if (progress.stage && last != progress.stage) {
       last = progress.stage;
-      std::cerr << "sculpt: " << last << "...\n";
+      show_status("sculpt: " + last + "...");
     }
     return true;
   };
@@ -56,18 +73,18 @@ std::function<bool(const Progress&)> progress_printer(std::size_t samples, bool 
 void check_output_formats(const Reconstruct_arguments& args, int dimension) {
   const std::string surface = io::extension_of(args.output);
   if (!(dimension == 3 ? io::writes_surface(surface) : io::writes_curve(surface))) {
-    throw io::Error(fmt::format("cannot write a {} as '{}' (known: {})",
-                                dimension == 3 ? "surface" : "curve", args.output,
-                                dimension == 3 ? io::surface_formats : io::curve_formats));
+    throw Usage_error(fmt::format("cannot write a {} as '{}' (known: {})",
+                                  dimension == 3 ? "surface" : "curve", args.output,
+                                  dimension == 3 ? io::surface_formats : io::curve_formats));
   }
   if (!args.solid.empty()) {
     if (!io::writes_solid(io::extension_of(args.solid))) {
-      throw io::Error(
+      throw Usage_error(
           fmt::format("cannot write a solid as '{}' (known: {})", args.solid, io::solid_formats));
     }
   }
   if (!args.stats.empty() && io::extension_of(args.stats) != ".json") {
-    throw io::Error("the statistics file must end in .json: '" + args.stats + "'");
+    throw Usage_error("the statistics file must end in .json: '" + args.stats + "'");
   }
   // Every output's folder must exist before any work is done.
   for (const std::string* path : {&args.output, &args.solid, &args.stats}) {
@@ -92,6 +109,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   options.progress = progress_printer(samples.size(), args.quiet);
 
   const Reconstruction<D> result = reconstruct(samples, options);
+  clear_status();
   // A carved surface comes from no surface rule.
   run.rule = inserts_poles(options.method, options.kind) ? to_string(resolved_rule(options))
                                                          : "manifold carve";
@@ -122,7 +140,8 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   if (!verdict.manifold) {
     std::cerr << "sculpt: warning: " << verdict.line << '\n';  // never silent on broken output
   }
-  return verdict.manifold || !args.require_manifold ? 0 : defective_result_exit;
+  return verdict.manifold || !args.require_manifold ? frontend::exit_success
+                                                    : frontend::exit_defective_result;
 }
 
 int run_reconstruct(const Reconstruct_arguments& args) {
@@ -239,28 +258,37 @@ int main(int argc, char** argv) {
                   "Remove repeated points of the files instead of refusing them");
   bench->add_option("--json", bench_args.json, "Also write the measurements as JSON");
 
-  CLI11_PARSE(app, argc, argv);
+  app.footer(sculpt::frontend::exit_codes_help);
+  if (const auto stop = sculpt::frontend::parse_command_line(app, argc, argv, "sculpt"))
+    return *stop;
   sculpt::io::remove_temporaries_on_signals();
+  // Every failure is one line on stderr, after the status line is erased.
+  const auto fail = [](int code, const std::string& message) {
+    clear_status();
+    std::cerr << "sculpt: " << sculpt::frontend::one_line(message) << '\n';
+    return code;
+  };
   try {
     if (examples->parsed()) return run_examples();
     if (bench->parsed()) return run_bench(bench_args);
     if (render->parsed()) return run_render(render_args);
     if (figures_command->parsed()) return sculpt::figures::generate(figure_options) > 0 ? 0 : 1;
     if (args.input.empty() && args.example.empty()) {
-      std::cerr << "sculpt: error: give an input file or --example NAME\n";
-      return 2;
+      throw Usage_error("give an input file or --example NAME");
     }
     return run_reconstruct(args);
+  } catch (const Usage_error& e) {
+    return fail(exit_bad_usage, std::string("usage error: ") + e.what() + " (see sculpt --help)");
   } catch (const sculpt::io::Error& e) {
-    std::cerr << "sculpt: error: " << e.what() << '\n';
+    return fail(exit_bad_input, std::string("error: ") + e.what());
   } catch (const sculpt::Duplicate_points& e) {
-    std::cerr << "sculpt: error: " << e.what() << " (--merge-duplicates removes repeated points)\n";
+    return fail(exit_bad_input, std::string("error: ") + e.what() +
+                                    " (--merge-duplicates removes repeated points)");
   } catch (const sculpt::Input_error& e) {
-    std::cerr << "sculpt: error: " << e.what() << '\n';
+    return fail(exit_bad_input, std::string("error: ") + e.what());
   } catch (const std::bad_alloc&) {
-    std::cerr << "sculpt: error: out of memory\n";
+    return fail(exit_bad_input, "error: out of memory");
   } catch (const std::exception& e) {
-    std::cerr << "sculpt: internal error: " << e.what() << '\n';
+    return fail(exit_bad_input, std::string("internal error: ") + e.what());
   }
-  return 1;
 }

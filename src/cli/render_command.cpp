@@ -4,7 +4,9 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "frontend/command_line.hpp"
 #include "io/io_error.hpp"
+#include "io/point_reader.hpp"
 
 namespace sculpt::cli {
 void add_render_command(CLI::App& app, Render_arguments& args) {
@@ -50,6 +52,11 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
 int run_render(const Render_arguments& args) {
   frontend::Shot_renderer renderer;
   if (args.shots_file.empty()) {
+    if (args.shot.output.empty()) throw frontend::Usage_error("render needs -o FILE.png");
+    if (io::extension_of(args.shot.output) != ".png") {
+      throw frontend::Usage_error("render writes PNG images: '" + args.shot.output +
+                                  "' does not end in .png");
+    }
     renderer.render(args.shot, nullptr);
     return 0;
   }
@@ -61,7 +68,7 @@ int run_render(const Render_arguments& args) {
     const Shot shot = frontend::shot_from_json(entry);
     const nlohmann::json* camera = entry.contains("camera") ? &entry["camera"] : nullptr;
     renderer.render(shot, camera);
-    std::cerr << "sculpt render: wrote " << shot.output << '\n';
+    std::cout << "wrote " << shot.output << '\n';
   }
   return 0;
 }

@@ -22,6 +22,12 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     out << fmt::format("  {:<28}{:>12}\n", name, value);
   };
   row("samples (n)", stats.samples);
+  const auto& t = stats.translation;
+  row("normalised (exactly)",
+      fmt::format(
+          "{}x 2^{}",
+          t[0] || t[1] || t[2] ? fmt::format("(p - ({:g}, {:g}, {:g})) ", t[0], t[1], t[2]) : "p ",
+          stats.scale_exponent));
   row("poles", stats.poles);
   row("convex poles", stats.convex_poles);
   row("inner / outer poles", fmt::format("{} / {}", stats.inner_poles, stats.outer_poles));
@@ -68,6 +74,8 @@ nlohmann::json report_json(const Statistics& stats, const Run_description& run) 
       {"rule", run.rule},
       {"box_factor", run.box_factor},
       {"samples", stats.samples},
+      {"normalisation",
+       {{"translation", stats.translation}, {"scale_exponent", stats.scale_exponent}}},
       {"poles", stats.poles},
       {"convex_poles", stats.convex_poles},
       {"inner_poles", stats.inner_poles},

@@ -11,7 +11,7 @@
 #include "../methods/paper/paper_method.hpp"
 #include "../methods/robust/robust_method.hpp"
 #include "delaunay.hpp"
-#include "exact_scaling.hpp"
+#include "exact_normalisation.hpp"
 #include "facet_topology.hpp"
 #include "input_checks.hpp"
 #include "poles.hpp"
@@ -46,11 +46,14 @@ Reconstruction<Traits::dimension> reconstruct_with(
 
   clock.start("checks");
   check_input<Traits>(samples, options);
-  const int exponent = normalising_exponent<Traits::dimension>(samples);
-  const std::vector<Point<Traits::dimension>> normalised =
-      exponent == 0 ? std::vector<Point<Traits::dimension>>()
-                    : scaled<Traits::dimension>(samples, exponent);
-  const auto& work = exponent == 0 ? samples : normalised;
+  const Normalisation<Traits::dimension> normalisation =
+      normalisation_of<Traits::dimension>(samples);
+  const std::vector<Point<Traits::dimension>> normalised_samples =
+      normalisation.identity() ? std::vector<Point<Traits::dimension>>()
+                               : normalised<Traits::dimension>(samples, normalisation);
+  const auto& work = normalisation.identity() ? samples : normalised_samples;
+  result.stats.scale_exponent = normalisation.exponent;
+  for (int k = 0; k < Traits::dimension; ++k) result.stats.translation[k] = normalisation.offset[k];
 
   typename Traits::Triangulation triangulation;
   clock.start("delaunay");
@@ -75,7 +78,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
 
   clock.start("topology");
   measure_topology<Traits::dimension>(samples.size(), result.surface, result.stats);
-  scale_back(result, exponent);
+  undo_normalisation<Traits::dimension>(result, normalisation, samples);
   clock.stop();
   return result;
 }

@@ -1,12 +1,17 @@
 // Reading samples: the vertices of a point or mesh file, whatever its format.
 //   text:   .xyz .pts .txt .xy .p2d .csv  ("x y [z]" per line; `#` comments, a leading word such
 //           as `p` or `v`, a count header, commas and extra columns are tolerated)
-//   meshes: .ply (ascii or binary) .off .obj .stl (ascii or binary), through CGAL's readers
+//   meshes: .ply (ascii or binary, any scalar type) .off (and COFF, NOFF, STOFF, 4OFF, nOFF)
+//           .obj (a point cloud of `v` lines too) .stl (ascii or binary)
+// The readers are Sculpt's own (src/io/readers), written to survive any bytes: every count is
+// checked against the bytes that can follow it, files are streamed, and all are fuzzed.
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <sculpt/sculpt.hpp>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io_error.hpp"
@@ -21,8 +26,14 @@ struct Point_set {
   std::vector<std::array<int, 3>> triangles;
 };
 
+// Files larger than this are refused (a pipe is read up to it): far beyond what a
+// reconstruction fits in memory, and a bound on what an endless input costs.
+constexpr std::uint64_t max_input_bytes = std::uint64_t(4) << 30;
+
 // Throws io::Error with a one-line message on any problem with the file.
-Point_set read_points(const std::string& path);
+Point_set read_points(const std::string& path, std::uint64_t limit = max_input_bytes);
+// The same readers on bytes in memory; `extension` (".ply", ".xyz", ...) names the format.
+Point_set read_points_from_memory(std::string_view bytes, const std::string& extension);
 
 // The points of a set in a plane: a 2D file's (x, y), or a 3D set whose points all share one
 // coordinate, without it (`dropped` names it: "x", "y" or "z"). Throws io::Error otherwise.

@@ -13,6 +13,7 @@
 #include <iostream>
 #include <optional>
 
+#include "frontend/command_line.hpp"
 #include "io/atomic_file.hpp"
 #include "render/image.hpp"
 #include "render/renderer.hpp"
@@ -51,7 +52,10 @@ int main(int argc, char** argv) {
   app.add_option("--screenshot", screenshot,
                  "With --frames: save the window to this PNG at the end");
   app.add_option("--size", width, "Window width")->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  app.footer(sculpt::frontend::exit_codes_help);
+  if (const auto stop = sculpt::frontend::parse_command_line(app, argc, argv, "sculpt-view")) {
+    return *stop;
+  }
 
   glfwSetErrorCallback(on_glfw_error);
   if (!glfwInit()) {

@@ -1,0 +1,112 @@
+// Extreme but finite scales (a sphere of radius 1e80 or 1e-105, denormal coordinates) overflow
+// or underflow the squared distances and circumradii every stage computes in floating point,
+// and a small object far from the origin loses the digits its circumcentres need. So the
+// stages run on normalised samples: translated (only when the cloud is far from the origin,
+// and then by a multiple of a power of two no smaller than its extent, which makes every
+// subtraction exact) and scaled by a power of two (exact) so that the longest side of the
+// bounding box lies in [1, 2). Every predicate therefore decides as it would on the input; the
+// samples are handed back as given and the other stored stages are mapped back at the end.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <sculpt/sculpt.hpp>
+#include <vector>
+
+namespace sculpt {
+
+template <int D>
+struct Normalisation {
+  Point<D> offset{};  // subtracted first
+  int exponent = 0;   // then multiplied by 2^exponent
+
+  bool identity() const {
+    return exponent == 0 &&
+           std::all_of(offset.begin(), offset.end(), [](double c) { return c == 0; });
+  }
+  Point<D> apply(Point<D> p) const {
+    for (int k = 0; k < D; ++k) p[k] = std::ldexp(p[k] - offset[k], exponent);
+    return p;
+  }
+  Point<D> undo(Point<D> p) const {
+    for (int k = 0; k < D; ++k) p[k] = std::ldexp(p[k], -exponent) + offset[k];
+    return p;
+  }
+};
+
+// Coordinates this much smaller than the extent (after normalisation) would underflow the
+// squared distances of the cells around them.
+constexpr int smallest_normalised_exponent = -400;
+
+template <int D>
+Normalisation<D> normalisation_of(const std::vector<Point<D>>& samples) {
+  Normalisation<D> result;
+  if (samples.empty()) return result;
+  Point<D> lo = samples[0], hi = samples[0];
+  for (const auto& p : samples) {
+    for (int k = 0; k < D; ++k) {
+      lo[k] = std::min(lo[k], p[k]);
+      hi[k] = std::max(hi[k], p[k]);
+    }
+  }
+  double half_longest = 0;  // halves: hi - lo can overflow for huge coordinates of both signs
+  for (int k = 0; k < D; ++k) half_longest = std::max(half_longest, 0.5 * hi[k] - 0.5 * lo[k]);
+  if (!(half_longest > 0)) return result;
+  int e = 0;
+  std::frexp(half_longest, &e);  // half_longest in [2^(e-1), 2^e): the longest side < 2^(e+1)
+  result.exponent = -e;
+  // Far from the origin (the centre beyond four extents): translate by the centre rounded to
+  // a multiple of 2^(e+1) >= the extent. x - offset is then exact (both are multiples of
+  // x's unit in the last place, and their difference is small against x).
+  for (int k = 0; k < D; ++k) {
+    const double centre = 0.5 * lo[k] + 0.5 * hi[k];
+    if (std::abs(centre) >= 8 * half_longest) {
+      result.offset[k] = std::ldexp(std::nearbyint(std::ldexp(centre, -(e + 1))), e + 1);
+      if (!std::isfinite(result.offset[k])) result.offset[k] = 0;
+    }
+  }
+  return result;
+}
+
+// The normalised samples; throws Input_error where the spread of the coordinates cannot be
+// represented (a coordinate lost in the normalisation, or too small against the extent).
+template <int D>
+std::vector<Point<D>> normalised(const std::vector<Point<D>>& samples, const Normalisation<D>& n) {
+  std::vector<Point<D>> result;
+  result.reserve(samples.size());
+  const double smallest = std::ldexp(1.0, smallest_normalised_exponent);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const Point<D> p = n.apply(samples[i]);
+    for (int k = 0; k < D; ++k) {
+      if (p[k] != 0 && std::abs(p[k]) < smallest) {
+        throw Input_error("point " + std::to_string(i) +
+                          " has a coordinate too small against the size of the set (more than "
+                          "120 orders of magnitude apart) to be represented with the others");
+      }
+    }
+    if (n.undo(p) != samples[i]) {
+      throw Input_error("point " + std::to_string(i) +
+                        " cannot be represented exactly together with the others: the "
+                        "coordinates span too many orders of magnitude");
+    }
+    result.push_back(p);
+  }
+  return result;
+}
+
+// Brings a reconstruction made from normalised samples back to the input's coordinates: the
+// samples exactly as given, the box corners, inserted poles and poles mapped back.
+template <int D>
+void undo_normalisation(Reconstruction<D>& result, const Normalisation<D>& n,
+                        const std::vector<Point<D>>& samples) {
+  if (n.identity()) return;
+  for (std::size_t i = 0; i < result.sites.size(); ++i) {
+    result.sites[i] = i < samples.size() ? samples[i] : n.undo(result.sites[i]);
+  }
+  for (auto& pole : result.poles.poles) {
+    pole.center = n.undo(pole.center);
+    pole.radius = std::ldexp(pole.radius, -n.exponent);
+  }
+}
+
+}  // namespace sculpt

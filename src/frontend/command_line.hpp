@@ -1,0 +1,63 @@
+// What `sculpt` and `sculpt-view` share about their command lines: the exit codes, and usage
+// errors as one line on stderr with exit code 2 (CLI11 prints two lines and exits 105 and up).
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace sculpt::frontend {
+
+enum Exit_code : int {
+  exit_success = 0,
+  exit_bad_input = 1,         // a file that cannot be read, points that cannot be reconstructed,
+                              // an output that cannot be written
+  exit_bad_usage = 2,         // an unknown option, a bad value, a missing argument
+  exit_defective_result = 3,  // --require-manifold, and the result is not a 2-manifold
+};
+
+inline const char* exit_codes_help =
+    "Exit codes: 0 success; 1 bad input (unreadable or malformed file, points that cannot be "
+    "reconstructed, an output that cannot be written); 2 bad usage; 3 with --require-manifold, "
+    "a result that is not a 2-manifold (written all the same). Every failure is one line on "
+    "stderr, and no output file is left behind.";
+
+// A mistake in the arguments themselves (exit code 2), found before any work is done.
+class Usage_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A message as one line: newlines become "; ".
+inline std::string one_line(std::string message) {
+  std::string result;
+  for (char c : message) {
+    if (c == '\n' || c == '\r') {
+      if (!result.empty() && result.back() != ' ') result += "; ";
+    } else {
+      result += c;
+    }
+  }
+  while (!result.empty() && (result.back() == ' ' || result.back() == ';')) result.pop_back();
+  return result;
+}
+
+// Parses the command line; an exit code if the program should stop now (help, version, or a
+// usage error reported in one line), nothing if it should run.
+inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
+                                             const std::string& program) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << program << ": usage error: " << one_line(e.what()) << " (see " << program
+              << " --help)\n";
+    return exit_bad_usage;
+  }
+  return std::nullopt;
+}
+
+}  // namespace sculpt::frontend

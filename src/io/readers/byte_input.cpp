@@ -1,0 +1,169 @@
+#include "byte_input.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include "io/io_error.hpp"
+#include "words.hpp"
+
+namespace sculpt::io {
+namespace {
+
+constexpr std::size_t buffer_size = 1 << 20;
+
+std::string size_text(std::uint64_t bytes) {
+  if (bytes >= (std::uint64_t(1) << 30)) return std::to_string(bytes >> 30) + " GiB";
+  if (bytes >= (std::uint64_t(1) << 20)) return std::to_string(bytes >> 20) + " MiB";
+  return std::to_string(bytes) + " bytes";
+}
+
+}  // namespace
+
+Byte_input Byte_input::open_file(const std::string& path, std::uint64_t limit) {
+  Byte_input input;
+  input.name_ = "'" + printable(path, 1000) + "'";
+  input.limit_ = limit;
+  input.descriptor_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (input.descriptor_ < 0) {
+    throw Error("cannot open " + input.name_ + ": " + std::strerror(errno));
+  }
+  struct stat status {};
+  if (::fstat(input.descriptor_, &status) != 0) {
+    throw Error("cannot read " + input.name_ + ": " + std::strerror(errno));
+  }
+  if (S_ISDIR(status.st_mode)) throw Error(input.name_ + " is a folder, not a point file");
+  if (S_ISREG(status.st_mode)) {
+    input.size_known_ = true;
+    input.size_ = static_cast<std::uint64_t>(status.st_size);
+    if (input.size_ > limit) {
+      throw Error(input.name_ + " holds " + size_text(input.size_) +
+                  ", more than the input limit of " + size_text(limit));
+    }
+  }
+  input.buffer_.resize(buffer_size);
+  input.data_ = input.buffer_.data();
+  return input;
+}
+
+Byte_input Byte_input::from_memory(std::string_view bytes, std::string name) {
+  Byte_input input;
+  input.name_ = std::move(name);
+  input.size_known_ = true;
+  input.size_ = bytes.size();
+  input.limit_ = bytes.size();
+  input.data_ = bytes.data();
+  input.end_ = bytes.size();
+  input.exhausted_ = true;
+  return input;
+}
+
+Byte_input::Byte_input(Byte_input&& other) noexcept
+    : name_(std::move(other.name_)),
+      descriptor_(other.descriptor_),
+      size_(other.size_),
+      size_known_(other.size_known_),
+      limit_(other.limit_),
+      buffer_(std::move(other.buffer_)),
+      data_(other.descriptor_ >= 0 ? buffer_.data() : other.data_),
+      position_(other.position_),
+      end_(other.end_),
+      consumed_(other.consumed_),
+      exhausted_(other.exhausted_) {
+  other.descriptor_ = -1;
+}
+
+Byte_input::~Byte_input() {
+  if (descriptor_ >= 0) ::close(descriptor_);
+}
+
+std::uint64_t Byte_input::remaining_bound() const {
+  const std::uint64_t total = size_known_ ? size_ : limit_;
+  return total > offset() ? total - offset() : 0;
+}
+
+void Byte_input::check_count(std::uint64_t count, std::uint64_t bytes_each,
+                             const std::string& what) const {
+  if (bytes_each == 0) bytes_each = 1;
+  const std::uint64_t room = remaining_bound();
+  if (count > room / bytes_each) {
+    throw Error(name_ + " is truncated or malformed: it announces " + std::to_string(count) + " " +
+                what + ", but " + (size_known_ ? "only " : "at most ") + std::to_string(room) +
+                " bytes can follow");
+  }
+}
+
+bool Byte_input::fill(std::size_t wanted) {
+  if (end_ - position_ >= wanted) return true;
+  if (exhausted_) return false;
+  // Keep the unread bytes, at the front of the buffer.
+  std::memmove(buffer_.data(), buffer_.data() + position_, end_ - position_);
+  consumed_ += position_;
+  end_ -= position_;
+  position_ = 0;
+  if (buffer_.size() < wanted) buffer_.resize(wanted);
+  data_ = buffer_.data();
+  while (end_ < wanted) {
+    const ssize_t got = ::read(descriptor_, buffer_.data() + end_, buffer_.size() - end_);
+    if (got < 0) {
+      if (errno == EINTR) continue;
+      throw Error("cannot read " + name_ + ": " + std::strerror(errno));
+    }
+    if (got == 0) {
+      exhausted_ = true;
+      break;
+    }
+    end_ += static_cast<std::size_t>(got);
+    if (consumed_ + end_ > limit_) {
+      throw Error(name_ + " is longer than the input limit of " + size_text(limit_));
+    }
+  }
+  return end_ - position_ >= wanted;
+}
+
+std::string_view Byte_input::peek(std::size_t n) {
+  fill(n);
+  return {data_ + position_, std::min(n, end_ - position_)};
+}
+
+void Byte_input::read(void* out, std::size_t n, const char* what) {
+  if (!fill(n)) {
+    throw Error(name_ + " is truncated: it ends inside " + what + " (at byte " +
+                std::to_string(offset() + (end_ - position_)) + ")");
+  }
+  std::memcpy(out, data_ + position_, n);
+  position_ += n;
+}
+
+bool Byte_input::read_line(std::string& line, std::size_t max_length) {
+  line.clear();
+  bool any_byte = false;
+  for (;;) {
+    if (position_ == end_ && !fill(1)) {
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      return any_byte;
+    }
+    const char* start = data_ + position_;
+    const std::size_t available = end_ - position_;
+    const void* newline = std::memchr(start, '\n', available);
+    const std::size_t taken =
+        newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - start) : available;
+    if (line.size() + taken > max_length) {
+      throw Error(name_ + " has a line longer than " + size_text(max_length) +
+                  " (is it a text file?)");
+    }
+    line.append(start, taken);
+    position_ += taken;
+    any_byte = true;
+    if (newline) {
+      ++position_;
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      return true;
+    }
+  }
+}
+
+}  // namespace sculpt::io

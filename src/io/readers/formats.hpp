@@ -1,0 +1,18 @@
+// One reader per input format, each from a Byte_input. All of them bound every count by the
+// bytes that can follow it, refuse trailing data, and throw io::Error with one line.
+#pragma once
+
+#include "byte_input.hpp"
+#include "io/point_reader.hpp"
+
+namespace sculpt::io {
+
+// "x y [z]" per line (.xyz .pts .txt .csv .xy .p2d); forced_dimension 2 or 3, or 0 for the
+// file's own (the column count of its first point line).
+Point_set read_text_points(Byte_input& input, int forced_dimension);
+Point_set read_ply(Byte_input& input);  // ascii, binary little and big endian
+Point_set read_off(Byte_input& input);  // OFF, COFF, NOFF, CNOFF, STOFF, 4OFF, nOFF (text)
+Point_set read_obj(Byte_input& input);  // v and f records; a point cloud of v lines only
+Point_set read_stl(Byte_input& input);  // ascii and binary; equal corners merged
+
+}  // namespace sculpt::io

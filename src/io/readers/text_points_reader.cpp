@@ -1,0 +1,90 @@
+// Point lists as scanners and people write them: one point per line, numbers separated by
+// spaces, tabs, commas or semicolons; `#` comments; a leading `p` or `v` (Hoppe's .pts, OBJ-like
+// lists); an optional count on the first line; extra columns (normals, colours) ignored.
+#include <cmath>
+
+#include "formats.hpp"
+#include "io/io_error.hpp"
+#include "text_lines.hpp"
+#include "words.hpp"
+
+namespace sculpt::io {
+namespace {
+
+bool is_letter(char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+}  // namespace
+
+Point_set read_text_points(Byte_input& input, int forced_dimension) {
+  Text_lines lines(input, "a text point file");
+  Point_set set;
+  set.dimension = forced_dimension ? forced_dimension : 3;
+  std::vector<std::string_view> words;
+  std::vector<double> numbers;
+  std::uint64_t announced = 0;
+  bool has_count = false;
+  std::size_t columns = 0;       // numbers on every point line, from the first one
+  std::string first_point_line;  // where that was, for the message on a line that differs
+  while (lines.next(words, '#', ",;")) {
+    if (words.empty()) continue;
+    std::size_t first = 0;
+    double value = 0;
+    if (is_letter(words[0][0]) && !parse_number(words[0], value)) {
+      // `p x y z` and `v x y z` are points; other records (a scanner's d, s, g lines, `vn`
+      // normals, a header of column names) are not.
+      if (words[0] != "p" && words[0] != "v" && words[0] != "P" && words[0] != "V") continue;
+      first = 1;
+    }
+    numbers.clear();
+    for (std::size_t k = first; k < words.size(); ++k) {
+      if (!parse_number(words[k], value)) {
+        throw Error(lines.where() + ": '" + printable(words[k]) + "' is not a number");
+      }
+      numbers.push_back(value);
+    }
+    if (numbers.empty()) continue;
+    std::uint64_t count = 0;
+    if (set.points.empty() && !has_count && columns == 0 && numbers.size() == 1 &&
+        parse_count(words[first], count)) {
+      has_count = true;  // a count header: digits alone on the first line with numbers
+      announced = count;
+      input.check_count(announced, 4, "points");  // "0 0\n" at least
+      continue;
+    }
+    if (columns == 0) {
+      columns = numbers.size();
+      first_point_line = lines.where();
+      set.dimension = forced_dimension ? forced_dimension : (columns >= 3 ? 3 : 2);
+      if (columns < static_cast<std::size_t>(set.dimension)) {
+        throw Error(lines.where() + ": expected " + std::to_string(set.dimension) +
+                    " coordinates, found " + std::to_string(columns));
+      }
+    } else if (numbers.size() < static_cast<std::size_t>(set.dimension) ||
+               (!forced_dimension && columns == 2 && numbers.size() > 2)) {
+      // Columns after the coordinates may vary; the coordinates may not: a third number where
+      // the first point line had two would be a z that is silently dropped.
+      throw Error(lines.where() + " holds " + std::to_string(numbers.size()) + " numbers, but " +
+                  first_point_line + " held " + std::to_string(columns) +
+                  " (mixed columns: 2D or 3D?)");
+    }
+    Point<3> p{0, 0, 0};
+    for (int k = 0; k < set.dimension; ++k) {
+      if (!std::isfinite(numbers[k])) {
+        throw Error(lines.where() + ": coordinate '" + printable(words[first + k]) +
+                    "' is not finite");
+      }
+      p[k] = numbers[k];
+    }
+    set.points.push_back(p);
+  }
+  if (has_count && announced != set.points.size()) {
+    throw Error(input.name() + " is truncated or malformed: its first line announces " +
+                std::to_string(announced) + " points, it holds " +
+                std::to_string(set.points.size()));
+  }
+  return set;
+}
+
+}  // namespace sculpt::io
