@@ -51,8 +51,9 @@ Point_set read_points(const std::string& path, std::uint64_t limit) {
   return set;
 }
 
-Point_set read_points_from_memory(std::string_view bytes, const std::string& extension) {
-  Byte_input input = Byte_input::from_memory(bytes, "'input" + extension + "'");
+Point_set read_points_from_memory(std::string_view bytes, const std::string& extension,
+                                  std::size_t chunk) {
+  Byte_input input = Byte_input::from_memory(bytes, "'input" + extension + "'", chunk);
   Point_set set = read_format(input, extension);
   if (set.points.empty()) throw Error(input.name() + " holds no points");
   return set;

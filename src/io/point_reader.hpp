@@ -33,7 +33,9 @@ constexpr std::uint64_t max_input_bytes = std::uint64_t(4) << 30;
 // Throws io::Error with a one-line message on any problem with the file.
 Point_set read_points(const std::string& path, std::uint64_t limit = max_input_bytes);
 // The same readers on bytes in memory; `extension` (".ply", ".xyz", ...) names the format.
-Point_set read_points_from_memory(std::string_view bytes, const std::string& extension);
+// A chunk size hands the bytes over that many at a time, as a pipe would (fuzzing, tests).
+Point_set read_points_from_memory(std::string_view bytes, const std::string& extension,
+                                  std::size_t chunk = 0);
 
 // The points of a set in a plane: a 2D file's (x, y), or a 3D set whose points all share one
 // coordinate, without it (`dropped` names it: "x", "y" or "z"). Throws io::Error otherwise.

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -49,8 +50,18 @@ Byte_input Byte_input::open_file(const std::string& path, std::uint64_t limit) {
   return input;
 }
 
-Byte_input Byte_input::from_memory(std::string_view bytes, std::string name) {
+Byte_input Byte_input::from_memory(std::string_view bytes, std::string name, std::size_t chunk) {
   Byte_input input;
+  if (chunk > 0) {
+    input.name_ = std::move(name);
+    input.size_known_ = true;
+    input.size_ = input.limit_ = bytes.size();
+    input.chunked_source_ = bytes;
+    input.chunk_ = chunk;
+    input.buffer_.resize(std::min<std::size_t>(buffer_size, 4 * chunk));
+    input.data_ = input.buffer_.data();
+    return input;
+  }
   input.name_ = std::move(name);
   input.size_known_ = true;
   input.size_ = bytes.size();
@@ -64,11 +75,13 @@ Byte_input Byte_input::from_memory(std::string_view bytes, std::string name) {
 Byte_input::Byte_input(Byte_input&& other) noexcept
     : name_(std::move(other.name_)),
       descriptor_(other.descriptor_),
+      chunked_source_(other.chunked_source_),
+      chunk_(other.chunk_),
       size_(other.size_),
       size_known_(other.size_known_),
       limit_(other.limit_),
       buffer_(std::move(other.buffer_)),
-      data_(other.descriptor_ >= 0 ? buffer_.data() : other.data_),
+      data_(other.buffer_.empty() ? other.data_ : buffer_.data()),
       position_(other.position_),
       end_(other.end_),
       consumed_(other.consumed_),
@@ -107,21 +120,31 @@ bool Byte_input::fill(std::size_t wanted) {
   if (buffer_.size() < wanted) buffer_.resize(wanted);
   data_ = buffer_.data();
   while (end_ < wanted) {
-    const ssize_t got = ::read(descriptor_, buffer_.data() + end_, buffer_.size() - end_);
-    if (got < 0) {
-      if (errno == EINTR) continue;
-      throw Error("cannot read " + name_ + ": " + std::strerror(errno));
-    }
+    const std::size_t got = read_some(buffer_.data() + end_, buffer_.size() - end_);
     if (got == 0) {
       exhausted_ = true;
       break;
     }
-    end_ += static_cast<std::size_t>(got);
+    end_ += got;
     if (consumed_ + end_ > limit_) {
       throw Error(name_ + " is longer than the input limit of " + size_text(limit_));
     }
   }
   return end_ - position_ >= wanted;
+}
+
+std::size_t Byte_input::read_some(char* out, std::size_t capacity) {
+  if (descriptor_ < 0) {
+    const std::size_t n = std::min({capacity, chunk_, chunked_source_.size()});
+    if (n > 0) std::memcpy(out, chunked_source_.data(), n);
+    chunked_source_.remove_prefix(n);
+    return n;
+  }
+  for (;;) {
+    const ssize_t got = ::read(descriptor_, out, capacity);
+    if (got >= 0) return static_cast<std::size_t>(got);
+    if (errno != EINTR) throw Error("cannot read " + name_ + ": " + std::strerror(errno));
+  }
 }
 
 std::string_view Byte_input::peek(std::size_t n) {

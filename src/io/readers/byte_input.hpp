@@ -15,8 +15,9 @@ class Byte_input {
  public:
   // Opens a file; throws io::Error if it is missing, unreadable or a directory.
   static Byte_input open_file(const std::string& path, std::uint64_t limit);
-  // Reads from memory that outlives the input.
-  static Byte_input from_memory(std::string_view bytes, std::string name);
+  // Reads from memory that outlives the input. With a chunk size, the bytes are handed over
+  // that many at a time, through the same buffer refills as a pipe (for the fuzzers and tests).
+  static Byte_input from_memory(std::string_view bytes, std::string name, std::size_t chunk = 0);
 
   Byte_input(Byte_input&&) noexcept;
   Byte_input& operator=(Byte_input&&) = delete;
@@ -31,7 +32,8 @@ class Byte_input {
   // Throws io::Error unless `count` items of at least `bytes_each` bytes fit in what can follow.
   void check_count(std::uint64_t count, std::uint64_t bytes_each, const std::string& what) const;
 
-  // The first up to n bytes of what is left, without consuming them.
+  // The first up to n bytes of what is left, without consuming them; valid until the next
+  // call (a refill may move or grow the buffer).
   std::string_view peek(std::size_t n);
   bool at_end() { return peek(1).empty(); }
   // Consumes exactly n bytes into out; throws io::Error (truncated) if fewer remain.
@@ -43,9 +45,12 @@ class Byte_input {
  private:
   Byte_input() = default;
   bool fill(std::size_t wanted);  // makes `wanted` bytes available if the input has them
+  std::size_t read_some(char* out, std::size_t capacity);  // 0 at the end
 
   std::string name_;
   int descriptor_ = -1;
+  std::string_view chunked_source_;  // a memory source handed over in chunks
+  std::size_t chunk_ = 0;
   std::uint64_t size_ = 0;  // the whole input, when known
   bool size_known_ = false;
   std::uint64_t limit_ = 0;

@@ -155,10 +155,10 @@ Point_set read_ascii_stl(Byte_input& input) {
 Point_set read_stl(Byte_input& input) {
   // An ASCII file starts with "solid" and is text; a binary header may start with "solid" too,
   // but then its size is exactly 84 + 50 per triangle, or it holds binary bytes early on.
-  const std::string_view head = input.peek(84);
+  const std::string head(input.peek(84));  // a copy: the next peek may move the buffer
   bool ascii = false;
   const std::size_t start = head.find_first_not_of(" \t\r\n");
-  if (start != std::string_view::npos && same_word(head.substr(start, 5), "solid") &&
+  if (start != std::string_view::npos && same_word(std::string_view(head).substr(start, 5), "solid") &&
       !looks_binary(input.peek(512))) {
     ascii = true;
     if (head.size() == 84) {
