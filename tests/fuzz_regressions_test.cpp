@@ -40,7 +40,8 @@ TEST(Fuzz_regressions, ReconstructionOfTinyInputs) {
     fuzz::check_reconstruction(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
   }
   // The seeds too: every mode of the fuzzer on real shapes runs in the suite.
-  for (const auto& entry : fs::directory_iterator(fs::path(SCULPT_FUZZ_DIR) / "corpus" / "reconstruct")) {
+  for (const auto& entry :
+       fs::directory_iterator(fs::path(SCULPT_FUZZ_DIR) / "corpus" / "reconstruct")) {
     const std::string bytes = testing::read_file(entry.path().string());
     fuzz::check_reconstruction(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
   }

@@ -1,11 +1,14 @@
 // Hostile input through the `sculpt` command: every file below is generated here, most are a
 // few bytes, and each must give its exit code (1 bad input, 2 bad usage), exactly one line on
 // stderr, and an output folder left empty. Nothing may crash, hang or leave a temporary.
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -325,6 +328,43 @@ TEST(Hostile_input, ExtremeScalesGiveASurfaceOrOneLine) {
     const Command_run run = run_sculpt("reconstruct " + input + " -o " + out + "/x.stl", scratch);
     EXPECT_EQ(run.exit_code, 0) << radius << ": " << run.err;
     EXPECT_NE(run.out.find("verdict: closed 2-manifold"), std::string::npos) << radius << run.out;
+  }
+}
+
+TEST(Hostile_input, AnInterruptedRunLeavesAllItsOutputsOrNone) {
+  // SIGTERM and SIGINT at several moments of a run (reading, reconstructing, writing): the
+  // output folder then holds nothing, or every output complete; never a temporary.
+  const std::string input = testing::write_file("hostile/interrupted.xyz", sphere_points(1, 30000));
+  for (const int signal : {SIGTERM, SIGINT}) {
+    for (const int milliseconds : {20, 150, 400, 800, 1600, 3200}) {
+      SCOPED_TRACE(fmt::format("signal {} after {} ms", signal, milliseconds));
+      const std::string out = folder("interrupted");
+      const pid_t child = ::fork();
+      ASSERT_GE(child, 0);
+      if (child == 0) {
+        const int null = ::open("/dev/null", O_WRONLY);
+        ::dup2(null, 1);
+        ::dup2(null, 2);
+        ::execl(SCULPT_EXECUTABLE, "sculpt", "reconstruct", input.c_str(), "-o",
+                (out + "/s.stl").c_str(), "--solid", (out + "/s.node").c_str(), "--stats",
+                (out + "/s.json").c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+      }
+      ::usleep(milliseconds * 1000);
+      ::kill(child, signal);
+      int status = 0;
+      ::waitpid(child, &status, 0);
+      std::vector<std::string> names;
+      for (const auto& entry : fs::directory_iterator(out))
+        names.push_back(entry.path().filename());
+      std::sort(names.begin(), names.end());
+      if (!names.empty()) {
+        EXPECT_EQ(names, (std::vector<std::string>{"s.ele", "s.json", "s.node", "s.stl"}));
+      }
+      if (WIFSIGNALED(status)) {
+        EXPECT_EQ(WTERMSIG(status), signal);
+      }
+    }
   }
 }
 

@@ -259,6 +259,8 @@ int main(int argc, char** argv) {
   bench->add_option("--json", bench_args.json, "Also write the measurements as JSON");
 
   app.footer(sculpt::frontend::exit_codes_help);
+  for (CLI::App* command : app.get_subcommands({}))
+    command->footer(sculpt::frontend::exit_codes_help);
   if (const auto stop = sculpt::frontend::parse_command_line(app, argc, argv, "sculpt"))
     return *stop;
   sculpt::io::remove_temporaries_on_signals();

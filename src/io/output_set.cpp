@@ -1,5 +1,7 @@
 #include "output_set.hpp"
 
+#include <pthread.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -34,13 +36,22 @@ std::string Output_set::stage(const std::string& destination) {
 }
 
 void Output_set::commit() {
+  // A signal between two renames would leave some outputs and not others: it waits until all
+  // are in place (and then ends the run, with every output written).
+  sigset_t stopping, previous;
+  sigemptyset(&stopping);
+  for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stopping, signal);
+  pthread_sigmask(SIG_BLOCK, &stopping, &previous);
   for (const auto& [temporary, destination] : staged_) {
     if (std::rename(temporary.c_str(), destination.c_str()) != 0) {
-      throw Error("cannot write '" + destination + "': " + std::strerror(errno));
+      const int error = errno;
+      pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+      throw Error("cannot write '" + destination + "': " + std::strerror(error));
     }
     forget_temporary(temporary);
   }
   committed_ = true;
+  pthread_sigmask(SIG_SETMASK, &previous, nullptr);
 }
 
 Output_set::~Output_set() {

@@ -158,7 +158,8 @@ Point_set read_stl(Byte_input& input) {
   const std::string head(input.peek(84));  // a copy: the next peek may move the buffer
   bool ascii = false;
   const std::size_t start = head.find_first_not_of(" \t\r\n");
-  if (start != std::string_view::npos && same_word(std::string_view(head).substr(start, 5), "solid") &&
+  if (start != std::string_view::npos &&
+      same_word(std::string_view(head).substr(start, 5), "solid") &&
       !looks_binary(input.peek(512))) {
     ascii = true;
     if (head.size() == 84) {
