@@ -331,6 +331,22 @@ TEST(Hostile_input, ExtremeScalesGiveASurfaceOrOneLine) {
   }
 }
 
+TEST(Hostile_input, ExtremeScalesOfPlaneCurves) {
+  const std::string out = folder("scales-2d-out"), scratch = folder("scales-2d-scratch");
+  for (const double radius : {1e-300, 1e-200, 1e200, 1e300}) {
+    std::string text;
+    for (int i = 0; i < 60; ++i) {
+      const double a = 2 * M_PI * i / 60;
+      text += fmt::format("{:.17g} {:.17g}\n", radius * std::cos(a), radius * std::sin(a));
+    }
+    const std::string input =
+        testing::write_file(fmt::format("hostile/circle-{:g}.xy", radius), text);
+    const Command_run run = run_sculpt("reconstruct " + input + " -o " + out + "/x.svg", scratch);
+    EXPECT_EQ(run.exit_code, 0) << radius << ": " << run.err;
+    EXPECT_NE(run.out.find("verdict: closed curve"), std::string::npos) << radius << run.out;
+  }
+}
+
 TEST(Hostile_input, AnInterruptedRunLeavesAllItsOutputsOrNone) {
   // SIGTERM and SIGINT at several moments of a run (reading, reconstructing, writing): the
   // output folder then holds nothing, or every output complete; never a temporary.

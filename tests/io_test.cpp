@@ -209,6 +209,58 @@ TEST(Point_reader, NumbersInEverySpellingAndSeparator) {
       << "a word strtod would half-read is not a number";
 }
 
+TEST(Point_reader, LineEndsByteOrderMarksAndLastLinesWithoutNewline) {
+  const std::vector<Point<3>> tetra = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  for (const std::string end : {"\n", "\r\n", "\r"}) {  // Unix, Windows, old Mac
+    SCOPED_TRACE(::testing::PrintToString(end));
+    std::string text;
+    for (const auto& p : tetra) text += fmt::format("{} {} {}", p[0], p[1], p[2]) + end;
+    EXPECT_EQ(io::read_points_from_memory(text, ".xyz").points, tetra);
+    EXPECT_EQ(io::read_points_from_memory(text, ".xyz", 3).points, tetra);
+    EXPECT_EQ(io::read_points_from_memory("OFF" + end + "4 0 0" + end + text, ".off").points,
+              tetra);
+  }
+  // The last line without its newline, where a count announces exactly what follows.
+  EXPECT_EQ(io::read_points_from_memory("OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0", ".off").points.size(),
+            3u);
+  EXPECT_EQ(io::read_points_from_memory("nOFF 2\n3 0 0\n0 0\n1 0\n0 1\n", ".off").points.size(),
+            3u);
+  EXPECT_EQ(io::read_points_from_memory("3\n0 0\n1 0\n0 1", ".xy").points.size(), 3u);
+  // A byte order mark before any format's first word.
+  const std::string bom = "\xEF\xBB\xBF";
+  EXPECT_EQ(io::read_points_from_memory(
+                bom + "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                      "property float y\nproperty float z\nend_header\n1 2 3\n",
+                ".ply")
+                .points.size(),
+            1u);
+  EXPECT_EQ(io::read_points_from_memory(
+                bom + "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                      "vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid s\n",
+                ".stl")
+                .points.size(),
+            3u);
+  EXPECT_EQ(io::read_points_from_memory(bom + "1 2 3\n", ".xyz").points.size(), 1u);
+}
+
+TEST(Point_reader, PlyAsciiIntegersWrittenAsDecimalsAndFloatRange) {
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const auto set =
+      io::read_points_from_memory(header + "0 0 0\n1 0 0\n0 1 0\n3.0 0 1.0 2\n", ".ply");
+  EXPECT_EQ(set.triangles.size(), 1u);
+  EXPECT_THROW(io::read_points_from_memory(header + "0 0 0\n1 0 0\n0 1 0\n3.5 0 1 2\n", ".ply"),
+               io::Error);
+  try {
+    io::read_points_from_memory(header + "0 0 0\n1e39 0 0\n0 1 0\n3 0 1 2\n", ".ply");
+    FAIL() << "accepted";
+  } catch (const io::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("beyond the range of a float"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(Point_reader, PlanarPointsDropTheirConstantCoordinate) {
   const auto set = io::read_points(write_file("plane.pts", "p 0 1 2\np 0 3 4\np 0 5 7\n"));
   std::string dropped;

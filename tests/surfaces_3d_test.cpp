@@ -175,7 +175,19 @@ TEST(Surfaces_3d, FarFromTheOriginIsTranslatedExactly) {
   }
 }
 
+TEST(Surfaces_3d, DenormalExtentsAreScaledToo) {
+  const double d = std::numeric_limits<double>::denorm_min();
+  const auto result =
+      reconstruct(std::vector<Point<3>>{{0, 0, 0}, {d, 0, 0}, {0, d, 0}, {0, 0, d}});
+  EXPECT_EQ(result.stats.facets, 4u);
+  EXPECT_EQ(result.stats.scale_exponent, 1074) << "a side of 2^-1074 scaled into [1, 2)";
+}
+
 TEST(Surfaces_3d, AnUnrepresentableSpreadIsOneClearError) {
+  // Also when nothing needs scaling: a coordinate 1e-300 beside others near 1.
+  EXPECT_THROW(reconstruct(std::vector<Point<3>>{
+                   {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1e-300, 0.5, 0.5}}),
+               Input_error);
   const std::vector<Point<3>> spread = {
       {0, 0, 0}, {1e-300, 0, 0}, {0, 1e-300, 0}, {0, 0, 1e-300}, {1e300, 1e300, 1e300}};
   try {

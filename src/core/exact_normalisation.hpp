@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
@@ -49,19 +50,31 @@ Normalisation<D> normalisation_of(const std::vector<Point<D>>& samples) {
       hi[k] = std::max(hi[k], p[k]);
     }
   }
-  double half_longest = 0;  // halves: hi - lo can overflow for huge coordinates of both signs
-  for (int k = 0; k < D; ++k) half_longest = std::max(half_longest, 0.5 * hi[k] - 0.5 * lo[k]);
-  if (!(half_longest > 0)) return result;
-  int e = 0;
-  std::frexp(half_longest, &e);  // half_longest in [2^(e-1), 2^e): the longest side < 2^(e+1)
-  result.exponent = -e;
-  // Far from the origin (the centre beyond four extents): translate by the centre rounded to
-  // a multiple of 2^(e+1) >= the extent. x - offset is then exact (both are multiples of
-  // x's unit in the last place, and their difference is small against x).
+  // E: every side of the bounding box is below 2^E. A side is hi - lo (exact for denormals);
+  // where that overflows (huge coordinates of both signs), twice the difference of halves.
+  int E = std::numeric_limits<int>::min();
+  for (int k = 0; k < D; ++k) {
+    const double side = hi[k] - lo[k];
+    int e = 0;
+    if (std::isfinite(side)) {
+      if (side == 0) continue;
+      std::frexp(side, &e);  // side = m 2^e with m in [0.5, 1)
+    } else {
+      std::frexp(0.5 * hi[k] - 0.5 * lo[k], &e);
+      e += 1;
+    }
+    E = std::max(E, e);
+  }
+  if (E == std::numeric_limits<int>::min()) return result;
+  result.exponent = 1 - E;  // the longest side times 2^exponent is in [1, 2)
+  // Far from the origin (the centre beyond 4 * 2^E on an axis): translate that axis by the
+  // centre rounded to a multiple of 2^E. Then |x| >= 2^(E+1), so x's unit in the last place is
+  // at least 2^(E-51), and |x - offset| <= 2^E: the difference has at most 52 significant bits
+  // and is computed exactly.
   for (int k = 0; k < D; ++k) {
     const double centre = 0.5 * lo[k] + 0.5 * hi[k];
-    if (std::abs(centre) >= 8 * half_longest) {
-      result.offset[k] = std::ldexp(std::nearbyint(std::ldexp(centre, -(e + 1))), e + 1);
+    if (std::abs(centre) >= std::ldexp(4.0, E)) {
+      result.offset[k] = std::ldexp(std::nearbyint(std::ldexp(centre, -E)), E);
       if (!std::isfinite(result.offset[k])) result.offset[k] = 0;
     }
   }

@@ -48,10 +48,9 @@ Reconstruction<Traits::dimension> reconstruct_with(
   check_input<Traits>(samples, options);
   const Normalisation<Traits::dimension> normalisation =
       normalisation_of<Traits::dimension>(samples);
-  const std::vector<Point<Traits::dimension>> normalised_samples =
-      normalisation.identity() ? std::vector<Point<Traits::dimension>>()
-                               : normalised<Traits::dimension>(samples, normalisation);
-  const auto& work = normalisation.identity() ? samples : normalised_samples;
+  // Checked even when nothing moves: a coordinate too small against the others is refused.
+  const std::vector<Point<Traits::dimension>> work =
+      normalised<Traits::dimension>(samples, normalisation);
   result.stats.scale_exponent = normalisation.exponent;
   for (int k = 0; k < Traits::dimension; ++k) result.stats.translation[k] = normalisation.offset[k];
 

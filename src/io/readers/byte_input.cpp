@@ -81,11 +81,12 @@ Byte_input::Byte_input(Byte_input&& other) noexcept
       size_known_(other.size_known_),
       limit_(other.limit_),
       buffer_(std::move(other.buffer_)),
-      data_(other.buffer_.empty() ? other.data_ : buffer_.data()),
+      data_(other.data_),
       position_(other.position_),
       end_(other.end_),
       consumed_(other.consumed_),
       exhausted_(other.exhausted_) {
+  if (!buffer_.empty()) data_ = buffer_.data();  // the buffer moved with its storage
   other.descriptor_ = -1;
 }
 
@@ -102,7 +103,8 @@ void Byte_input::check_count(std::uint64_t count, std::uint64_t bytes_each,
                              const std::string& what) const {
   if (bytes_each == 0) bytes_each = 1;
   const std::uint64_t room = remaining_bound();
-  if (count > room / bytes_each) {
+  // The last item of a text file may lack its line end: one byte of slack.
+  if (count > (room + 1) / bytes_each) {
     throw Error(name_ + " is truncated or malformed: it announces " + std::to_string(count) + " " +
                 what + ", but " + (size_known_ ? "only " : "at most ") + std::to_string(room) +
                 " bytes can follow");
@@ -162,18 +164,15 @@ void Byte_input::read(void* out, std::size_t n, const char* what) {
 }
 
 bool Byte_input::read_line(std::string& line, std::size_t max_length) {
+  // Lines end in "\n", "\r\n" or a lone "\r" (old Mac files).
   line.clear();
   bool any_byte = false;
   for (;;) {
-    if (position_ == end_ && !fill(1)) {
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      return any_byte;
-    }
+    if (position_ == end_ && !fill(1)) return any_byte;
     const char* start = data_ + position_;
     const std::size_t available = end_ - position_;
-    const void* newline = std::memchr(start, '\n', available);
-    const std::size_t taken =
-        newline ? static_cast<std::size_t>(static_cast<const char*>(newline) - start) : available;
+    std::size_t taken = 0;
+    while (taken < available && start[taken] != '\n' && start[taken] != '\r') ++taken;
     if (line.size() + taken > max_length) {
       throw Error(name_ + " has a line longer than " + size_text(max_length) +
                   " (is it a text file?)");
@@ -181,9 +180,9 @@ bool Byte_input::read_line(std::string& line, std::size_t max_length) {
     line.append(start, taken);
     position_ += taken;
     any_byte = true;
-    if (newline) {
-      ++position_;
-      if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (taken < available) {
+      const char end = data_[position_++];
+      if (end == '\r' && fill(1) && data_[position_] == '\n') ++position_;
       return true;
     }
   }

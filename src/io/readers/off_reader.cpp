@@ -79,8 +79,8 @@ Point_set read_off(Byte_input& input) {
       !parse_count(header[1], faces) || (header.size() == 3 && !parse_count(header[2], edges))) {
     throw Error(lines.where() + ": expected the counts 'VERTICES FACES EDGES'");
   }
-  input.check_count(vertices, 6, "vertices");  // "0 0 0\n"
-  input.check_count(faces, 2, "faces");        // "0\n"
+  input.check_count(vertices, 2 * dimension, "vertices");  // "0 0 0\n" (3D), "0 0\n" (2D)
+  input.check_count(faces, 2, "faces");                    // "0\n"
 
   Point_set set;
   set.dimension = dimension;

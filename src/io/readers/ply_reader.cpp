@@ -87,8 +87,11 @@ Header read_header(Byte_input& input) {
   bool has_format = false;
   auto where = [&] { return input.name() + " line " + std::to_string(header.lines); };
   for (;;) {
-    if (!input.read_line(line, 4096)) throw Error(input.name() + " ends inside its PLY header");
+    if (!input.read_line(line, 1 << 16)) {
+      throw Error(input.name() + " ends inside its PLY header");
+    }
     ++header.lines;
+    if (header.lines == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a BOM
     if (looks_binary(line)) {
       throw Error(header.lines == 1
                       ? input.name() + " is not a PLY file (it does not start with 'ply')"
@@ -188,8 +191,16 @@ class Value_reader {
     }
     const std::string_view word = words_[next_word_++];
     if (is_integral(type)) {
+      // Some writers put "3.0" where an integer belongs: an integral number is accepted.
       std::int64_t value = 0;
-      if (!parse_integer(word, value) || !fits(value, type)) {
+      double number = 0;
+      bool integer = parse_integer(word, value);
+      if (!integer && parse_number(word, number) && std::abs(number) < 9e18 &&
+          number == std::trunc(number)) {
+        value = static_cast<std::int64_t>(number);
+        integer = true;
+      }
+      if (!integer || !fits(value, type)) {
         throw Error(lines_->where() + ": '" + printable(word) + "' is not a value of " + what);
       }
       return static_cast<double>(value);
@@ -197,6 +208,10 @@ class Value_reader {
     double value = 0;
     if (!parse_number(word, value)) {
       throw Error(lines_->where() + ": '" + printable(word) + "' is not a number");
+    }
+    if (type == Scalar::float32 && std::isfinite(value) &&
+        std::abs(value) > std::numeric_limits<float>::max()) {
+      throw Error(lines_->where() + ": '" + printable(word) + "' is beyond the range of a float");
     }
     return type == Scalar::float32 ? static_cast<double>(static_cast<float>(value)) : value;
   }
@@ -322,8 +337,9 @@ Point_set read_ply(Byte_input& input) {
     }
     const Roles roles = roles_of(element, input.name());
     const std::string what = "a '" + printable(element.name) + "' element";
-    if (element.name == "vertex")
+    if (element.name == "vertex" && binary) {  // a count checked against the bytes left
       set.points.reserve(std::min<std::uint64_t>(element.count, 1 << 20));
+    }
     for (std::uint64_t i = 0; i < element.count; ++i) {
       Point<3> point{0, 0, 0};
       polygon.clear();

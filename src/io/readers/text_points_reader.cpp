@@ -50,7 +50,7 @@ Point_set read_text_points(Byte_input& input, int forced_dimension) {
         parse_count(words[first], count)) {
       has_count = true;  // a count header: digits alone on the first line with numbers
       announced = count;
-      input.check_count(announced, 4, "points");  // "0 0\n" at least
+      input.check_count(announced, 4, "points");  // "0 0\n" (the last may lack its \n)
       continue;
     }
     if (columns == 0) {
