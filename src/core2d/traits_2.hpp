@@ -12,6 +12,7 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "../core/exact_circumcentre.hpp"
 #include "../core/facet_orientation.hpp"
 
 namespace sculpt {
@@ -44,7 +45,18 @@ struct Traits_2 {
       while (++face != first);
     }
   }
-  static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) { return t.dual(c); }
+  static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) {
+    return circumcentre_or_exact<Cgal_point>(
+        [&] { return t.dual(c); },
+        [&] {
+          using P = Exact_rational_kernel::Point_2;
+          P corners[3];
+          for (int i = 0; i < 3; ++i)
+            corners[i] = P(c->vertex(i)->point().x(), c->vertex(i)->point().y());
+          const P centre = CGAL::circumcenter(corners[0], corners[1], corners[2]);
+          return Cgal_point(CGAL::to_double(centre.x()), CGAL::to_double(centre.y()));
+        });
+  }
 
   // Vertex j of the edge opposite vertex i, with the face on its left: a closed curve comes out
   // counterclockwise around the region it bounds, its normals pointing outward.

@@ -12,6 +12,7 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "../core/exact_circumcentre.hpp"
 #include "../core/facet_orientation.hpp"
 
 namespace sculpt {
@@ -41,7 +42,21 @@ struct Traits_3 {
                              std::vector<Cell_handle>& cells) {
     t.incident_cells(v, std::back_inserter(cells));
   }
-  static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) { return t.dual(c); }
+  static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) {
+    return circumcentre_or_exact<Cgal_point>(
+        [&] { return t.dual(c); },
+        [&] {
+          using P = Exact_rational_kernel::Point_3;
+          P corners[4];
+          for (int i = 0; i < 4; ++i) {
+            const Cgal_point& p = c->vertex(i)->point();
+            corners[i] = P(p.x(), p.y(), p.z());
+          }
+          const P centre = CGAL::circumcenter(corners[0], corners[1], corners[2], corners[3]);
+          return Cgal_point(CGAL::to_double(centre.x()), CGAL::to_double(centre.y()),
+                            CGAL::to_double(centre.z()));
+        });
+  }
 
   // Vertex j of the facet opposite vertex i, facing away from vertex i.
   static constexpr const auto& facet_vertex = Facet_orientation<3>::vertex;

@@ -1,0 +1,34 @@
+// The circumcentre of a Delaunay cell, as every stage measures with: CGAL's floating-point
+// construction, except for a cell so flat that its floating-point denominator vanishes (CGAL
+// asserts, or divides by zero when its assertions are compiled out) or its centre overflows.
+// The triangulation's exact predicates say such a cell is not degenerate, so its centre exists:
+// it is computed with rationals and rounded. Found by fuzzing the reconstruction on points whose
+// coordinates are ~1e-108 apart after normalisation (fuzz/regressions/reconstruct).
+#pragma once
+
+#include <CGAL/Exact_rational.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/exceptions.h>
+
+#include <cmath>
+
+namespace sculpt {
+
+using Exact_rational_kernel = CGAL::Simple_cartesian<CGAL::Exact_rational>;
+
+template <class Cgal_point, class Inexact, class Exact>
+Cgal_point circumcentre_or_exact(Inexact&& inexact, Exact&& exact) {
+  try {
+    const Cgal_point centre = inexact();
+    bool finite = true;
+    for (int k = 0; k < Cgal_point::Ambient_dimension::value; ++k) {
+      finite = finite && std::isfinite(centre[k]);
+    }
+    if (finite) return centre;
+  } catch (const CGAL::Assertion_exception&) {
+    // CGAL's kernel assertion on a vanishing denominator (builds with assertions on)
+  }
+  return exact();
+}
+
+}  // namespace sculpt
