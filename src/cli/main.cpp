@@ -5,7 +5,6 @@
 
 #include <CLI/CLI.hpp>
 #include <chrono>
-#include <filesystem>
 #include <iostream>
 
 #include "bench.hpp"
@@ -88,11 +87,7 @@ void check_output_formats(const Reconstruct_arguments& args, int dimension) {
   }
   // Every output's folder must exist before any work is done.
   for (const std::string* path : {&args.output, &args.solid, &args.stats}) {
-    if (path->empty()) continue;
-    const auto folder = std::filesystem::path(*path).parent_path();
-    if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-      throw io::Error("cannot write '" + *path + "': there is no folder '" + folder.string() + "'");
-    }
+    io::check_output_folder(*path);
   }
 }
 

@@ -16,6 +16,24 @@ namespace sculpt {
 
 using Exact_rational_kernel = CGAL::Simple_cartesian<CGAL::Exact_rational>;
 
+// The exact circumcentres, rounded to doubles.
+template <class Cgal_point>
+Cgal_point exact_circumcentre(const Cgal_point& a, const Cgal_point& b, const Cgal_point& c) {
+  using P = Exact_rational_kernel::Point_2;
+  const P centre = CGAL::circumcenter(P(a.x(), a.y()), P(b.x(), b.y()), P(c.x(), c.y()));
+  return Cgal_point(CGAL::to_double(centre.x()), CGAL::to_double(centre.y()));
+}
+
+template <class Cgal_point>
+Cgal_point exact_circumcentre(const Cgal_point& a, const Cgal_point& b, const Cgal_point& c,
+                              const Cgal_point& d) {
+  using P = Exact_rational_kernel::Point_3;
+  const auto exact = [](const Cgal_point& p) { return P(p.x(), p.y(), p.z()); };
+  const P centre = CGAL::circumcenter(exact(a), exact(b), exact(c), exact(d));
+  return Cgal_point(CGAL::to_double(centre.x()), CGAL::to_double(centre.y()),
+                    CGAL::to_double(centre.z()));
+}
+
 template <class Cgal_point, class Inexact, class Exact>
 Cgal_point circumcentre_or_exact(Inexact&& inexact, Exact&& exact) {
   try {

@@ -46,16 +46,12 @@ struct Traits_2 {
     }
   }
   static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) {
-    return circumcentre_or_exact<Cgal_point>(
-        [&] { return t.dual(c); },
-        [&] {
-          using P = Exact_rational_kernel::Point_2;
-          P corners[3];
-          for (int i = 0; i < 3; ++i)
-            corners[i] = P(c->vertex(i)->point().x(), c->vertex(i)->point().y());
-          const P centre = CGAL::circumcenter(corners[0], corners[1], corners[2]);
-          return Cgal_point(CGAL::to_double(centre.x()), CGAL::to_double(centre.y()));
-        });
+    return circumcentre_or_exact<Cgal_point>([&] { return t.dual(c); },
+                                             [&] {
+                                               return exact_circumcentre(c->vertex(0)->point(),
+                                                                         c->vertex(1)->point(),
+                                                                         c->vertex(2)->point());
+                                             });
   }
 
   // Vertex j of the edge opposite vertex i, with the face on its left: a closed curve comes out

@@ -43,19 +43,12 @@ struct Traits_3 {
     t.incident_cells(v, std::back_inserter(cells));
   }
   static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) {
-    return circumcentre_or_exact<Cgal_point>(
-        [&] { return t.dual(c); },
-        [&] {
-          using P = Exact_rational_kernel::Point_3;
-          P corners[4];
-          for (int i = 0; i < 4; ++i) {
-            const Cgal_point& p = c->vertex(i)->point();
-            corners[i] = P(p.x(), p.y(), p.z());
-          }
-          const P centre = CGAL::circumcenter(corners[0], corners[1], corners[2], corners[3]);
-          return Cgal_point(CGAL::to_double(centre.x()), CGAL::to_double(centre.y()),
-                            CGAL::to_double(centre.z()));
-        });
+    return circumcentre_or_exact<Cgal_point>([&] { return t.dual(c); },
+                                             [&] {
+                                               return exact_circumcentre(
+                                                   c->vertex(0)->point(), c->vertex(1)->point(),
+                                                   c->vertex(2)->point(), c->vertex(3)->point());
+                                             });
   }
 
   // Vertex j of the facet opposite vertex i, facing away from vertex i.

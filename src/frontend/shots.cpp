@@ -1,12 +1,12 @@
 #include "frontend/shots.hpp"
 
-#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
+#include "io/output_set.hpp"
 #include "io/point_reader.hpp"
 
 namespace sculpt::frontend {
@@ -77,12 +77,8 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   if (io::extension_of(shot.output) != ".png") {
     throw io::Error("render writes PNG images: '" + shot.output + "' does not end in .png");
   }
-  for (const std::string* path : {&shot.output, &shot.save_camera}) {  // before any work
-    const auto folder = std::filesystem::path(*path).parent_path();
-    if (!path->empty() && !folder.empty() && !std::filesystem::is_directory(folder)) {
-      throw io::Error("cannot write '" + *path + "': there is no folder '" + folder.string() + "'");
-    }
-  }
+  io::check_output_folder(shot.output);  // before any work
+  io::check_output_folder(shot.save_camera);
   if (shot.input.empty() == shot.example.empty()) {
     throw io::Error("a shot needs an input file or an example (one of them)");
   }

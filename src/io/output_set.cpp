@@ -15,6 +15,13 @@
 
 namespace sculpt::io {
 
+void check_output_folder(const std::string& path) {
+  const auto folder = std::filesystem::path(path).parent_path();
+  if (!path.empty() && !folder.empty() && !std::filesystem::is_directory(folder)) {
+    throw Error("cannot write '" + path + "': there is no folder '" + folder.string() + "'");
+  }
+}
+
 std::string Output_set::stage(const std::string& destination) {
   const std::filesystem::path path(destination);
   const std::string extension = extension_of(destination);

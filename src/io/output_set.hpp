@@ -10,6 +10,10 @@
 
 namespace sculpt::io {
 
+// Throws io::Error if the folder an output would go into does not exist: checked for every
+// output before any work, so a run never fails after it.
+void check_output_folder(const std::string& path);
+
 class Output_set {
  public:
   Output_set() = default;

@@ -10,13 +10,22 @@ namespace sculpt::io {
 namespace {
 
 Point_set read_format(Byte_input& input, const std::string& extension) {
-  if (extension == ".off") return read_off(input);
-  if (extension == ".obj") return read_obj(input);
-  if (extension == ".ply") return read_ply(input);
-  if (extension == ".stl") return read_stl(input);
-  if (extension == ".xy" || extension == ".p2d") return read_text_points(input, 2);
-  if (extension == ".xyz") return read_text_points(input, 3);
-  return read_text_points(input, 0);
+  Point_set set;
+  if (extension == ".off") {
+    set = read_off(input);
+  } else if (extension == ".obj") {
+    set = read_obj(input);
+  } else if (extension == ".ply") {
+    set = read_ply(input);
+  } else if (extension == ".stl") {
+    set = read_stl(input);
+  } else if (extension == ".xy" || extension == ".p2d") {
+    set = read_text_points(input, 2);
+  } else {
+    set = read_text_points(input, extension == ".xyz" ? 3 : 0);
+  }
+  if (set.points.empty()) throw Error(input.name() + " holds no points");
+  return set;
 }
 
 bool known_extension(const std::string& extension) {
@@ -46,17 +55,13 @@ Point_set read_points(const std::string& path, std::uint64_t limit) {
                 "' (known: .xyz .pts .txt .csv .xy .p2d .ply .off .obj .stl)");
   }
   Byte_input input = Byte_input::open_file(path, limit);
-  Point_set set = read_format(input, extension);
-  if (set.points.empty()) throw Error(input.name() + " holds no points");
-  return set;
+  return read_format(input, extension);
 }
 
 Point_set read_points_from_memory(std::string_view bytes, const std::string& extension,
                                   std::size_t chunk) {
   Byte_input input = Byte_input::from_memory(bytes, "'input" + extension + "'", chunk);
-  Point_set set = read_format(input, extension);
-  if (set.points.empty()) throw Error(input.name() + " holds no points");
-  return set;
+  return read_format(input, extension);
 }
 
 std::vector<Point<2>> planar_points(const Point_set& set, std::string* dropped) {

@@ -163,6 +163,10 @@ void Byte_input::read(void* out, std::size_t n, const char* what) {
   position_ += n;
 }
 
+void Byte_input::skip_byte_order_mark() {
+  if (peek(3) == "\xEF\xBB\xBF") position_ += 3;
+}
+
 bool Byte_input::read_line(std::string& line, std::size_t max_length) {
   // Lines end in "\n", "\r\n" or a lone "\r" (old Mac files).
   line.clear();

@@ -36,6 +36,8 @@ class Byte_input {
   // call (a refill may move or grow the buffer).
   std::string_view peek(std::size_t n);
   bool at_end() { return peek(1).empty(); }
+  // Consumes a UTF-8 byte order mark if the input continues with one (editors on Windows).
+  void skip_byte_order_mark();
   // Consumes exactly n bytes into out; throws io::Error (truncated) if fewer remain.
   void read(void* out, std::size_t n, const char* what);
   // The next line without its end ('\n', "\r\n"); false at the end of the input. Throws

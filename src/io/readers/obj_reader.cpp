@@ -7,6 +7,7 @@
 
 #include "formats.hpp"
 #include "io/io_error.hpp"
+#include "polygons.hpp"
 #include "text_lines.hpp"
 #include "words.hpp"
 
@@ -54,19 +55,10 @@ Point_set read_obj(Byte_input& input) {
         }
         polygon.push_back(static_cast<int>(vertex));
       }
-      for (std::size_t j = 2; j < polygon.size(); ++j) {
-        set.triangles.push_back({polygon[0], polygon[j - 1], polygon[j]});
-      }
+      add_polygon(set, polygon);
     }
   }
-  for (const auto& triangle : set.triangles) {
-    for (int corner : triangle) {
-      if (static_cast<std::size_t>(corner) >= set.points.size()) {
-        throw Error(input.name() + ": a face names vertex " + std::to_string(corner + 1) + " of " +
-                    std::to_string(set.points.size()));
-      }
-    }
-  }
+  check_corners(set, input.name(), 1);
   return set;
 }
 

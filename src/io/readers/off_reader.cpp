@@ -6,6 +6,7 @@
 
 #include "formats.hpp"
 #include "io/io_error.hpp"
+#include "polygons.hpp"
 #include "text_lines.hpp"
 #include "words.hpp"
 
@@ -127,9 +128,7 @@ Point_set read_off(Byte_input& input) {
       }
       polygon.push_back(static_cast<int>(corner));
     }
-    for (std::size_t j = 2; j < polygon.size(); ++j) {
-      set.triangles.push_back({polygon[0], polygon[j - 1], polygon[j]});
-    }
+    add_polygon(set, polygon);
   }
   while (lines.next(words, '#')) {
     if (!words.empty()) throw Error(lines.where() + ": data after the last face");

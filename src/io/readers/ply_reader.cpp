@@ -10,6 +10,7 @@
 
 #include "formats.hpp"
 #include "io/io_error.hpp"
+#include "polygons.hpp"
 #include "text_lines.hpp"
 #include "words.hpp"
 
@@ -82,6 +83,7 @@ struct Header {
 Header read_header(Byte_input& input) {
   constexpr std::uint64_t max_header_bytes = 1 << 20;
   Header header;
+  input.skip_byte_order_mark();
   std::string line;
   std::vector<std::string_view> words;
   bool has_format = false;
@@ -91,7 +93,6 @@ Header read_header(Byte_input& input) {
       throw Error(input.name() + " ends inside its PLY header");
     }
     ++header.lines;
-    if (header.lines == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);  // a BOM
     if (looks_binary(line)) {
       throw Error(header.lines == 1
                       ? input.name() + " is not a PLY file (it does not start with 'ply')"
@@ -376,20 +377,11 @@ Point_set read_ply(Byte_input& input) {
         }
         set.points.push_back(point);
       }
-      for (std::size_t j = 2; j < polygon.size(); ++j) {
-        set.triangles.push_back({polygon[0], polygon[j - 1], polygon[j]});
-      }
+      add_polygon(set, polygon);
     }
   }
   values.expect_end();
-  for (const auto& triangle : set.triangles) {
-    for (int corner : triangle) {
-      if (static_cast<std::size_t>(corner) >= set.points.size()) {
-        throw Error(input.name() + ": a face names vertex " + std::to_string(corner) + " of " +
-                    std::to_string(set.points.size()));
-      }
-    }
-  }
+  check_corners(set, input.name(), 0);
   return set;
 }
 

@@ -153,10 +153,7 @@ Point_set read_ascii_stl(Byte_input& input) {
 }  // namespace
 
 Point_set read_stl(Byte_input& input) {
-  if (input.peek(3) == "\xEF\xBB\xBF") {  // a byte order mark before an ASCII "solid"
-    char bom[3];
-    input.read(bom, 3, "a byte order mark");
-  }
+  input.skip_byte_order_mark();  // before an ASCII "solid"
   // An ASCII file starts with "solid" and is text; a binary header may start with "solid" too,
   // but then its size is exactly 84 + 50 per triangle, or it holds binary bytes early on.
   const std::string head(input.peek(84));  // a copy: the next peek may move the buffer

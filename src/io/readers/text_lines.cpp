@@ -19,10 +19,7 @@ Text_lines::Text_lines(Byte_input& input, const std::string& format, long first_
   if (looks_binary(input_.peek(4096))) {
     throw Error(input_.name() + " is not " + format + " (it holds binary data)");
   }
-  if (input_.peek(3) == "\xEF\xBB\xBF") {
-    char bom[3];
-    input_.read(bom, 3, "a byte order mark");
-  }
+  input_.skip_byte_order_mark();
 }
 
 bool Text_lines::next(std::vector<std::string_view>& words, char comment,
