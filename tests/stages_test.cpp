@@ -222,7 +222,11 @@ TEST(Stages, KeepTriangulationsOffStillCountsCells) {
   const auto result = reconstruct(shapes::torus(1000), options);
   EXPECT_TRUE(result.delaunay.cells.empty());
   EXPECT_GT(result.delaunay.cell_count, 0u);
-  EXPECT_GT(result.sculpted_delaunay.cell_count, result.delaunay.cell_count);
+  EXPECT_EQ(result.sculpted_delaunay.cell_count, 0u);  // closed: answered without inserting
+  options.kind = Surface_kind::bordered;
+  const auto bordered = reconstruct(shapes::torus(1000), options);
+  EXPECT_TRUE(bordered.sculpted_delaunay.cells.empty());
+  EXPECT_GT(bordered.sculpted_delaunay.cell_count, bordered.delaunay.cell_count);
 }
 
 TEST(Stages, ProgressCanCancel) {

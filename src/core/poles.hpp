@@ -4,9 +4,9 @@
 //   p+ = circumcentre of the incident cell with the largest circumradius,
 //   p- = circumcentre of the incident cell with the largest circumradius among those on the
 //        other side of s: (c - s) · (p+ - s) < 0.
-// Both are found in two passes over the cells, without walking around any vertex. A pole is a
-// Delaunay cell; one cell can be a pole of several samples, so poles are deduplicated and their
-// pairing (the two poles of each sample) is stored as a graph.
+// Among equal radii the cell met first in the triangulation's order of finite cells wins.
+// A pole is a Delaunay cell; one cell can be a pole of several samples, so poles are deduplicated
+// and their pairing (the two poles of each sample) is stored as a graph.
 #pragma once
 
 #include <CGAL/squared_distance_2.h>
@@ -22,20 +22,24 @@ template <class Traits>
 void find_poles(const typename Traits::Triangulation& triangulation,
                 Reconstruction<Traits::dimension>& result) {
   constexpr int D = Traits::dimension;
+  using Cell_handle = typename Traits::Cell_handle;
+  using Cgal_point = typename Traits::Cgal_point;
   const int n = static_cast<int>(result.sites.size()) - (1 << D);
-  const auto squared_radius = [&](auto cell, const typename Traits::Cgal_point& center) {
+  const auto squared_radius = [&](Cell_handle cell, const Cgal_point& center) {
     return CGAL::squared_distance(center, cell->vertex(0)->point());
   };
 
   // Circumcentres are computed again in each pass rather than stored: storing them for every cell
   // would take 24 bytes a cell (475 MB for the 19.8M cells of a 1M-point torus) to save ~2 s.
+  // Keeping a few largest balls per sample in one pass does not find p- either: a sample's
+  // largest Voronoi vertices crowd together at the far end of its cell, on the side of p+
+  // (measured: the 4 largest are all on that side for 98% of bunny00's samples).
 
   // Pass 1: p+ of every sample.
   std::vector<double> plus_radius2(n, -1.0);
-  std::vector<typename Traits::Cell_handle> plus_cell(n);
+  std::vector<Cell_handle> plus_cell(n);
   for (auto cell : Traits::finite_cells(triangulation)) {
-    const auto center = Traits::circumcenter(triangulation, cell);
-    const double r2 = squared_radius(cell, center);
+    const double r2 = squared_radius(cell, Traits::circumcenter(triangulation, cell));
     for (int i = 0; i <= D; ++i) {
       const int s = cell->vertex(i)->info();
       if (s < n && r2 > plus_radius2[s]) {
@@ -44,12 +48,12 @@ void find_poles(const typename Traits::Triangulation& triangulation,
       }
     }
   }
-  std::vector<typename Traits::Cgal_point> plus_center(n);
+  std::vector<Cgal_point> plus_center(n);
   for (int s = 0; s < n; ++s) plus_center[s] = Traits::circumcenter(triangulation, plus_cell[s]);
 
   // Pass 2: p- of every sample.
   std::vector<double> minus_radius2(n, -1.0);
-  std::vector<typename Traits::Cell_handle> minus_cell(n);
+  std::vector<Cell_handle> minus_cell(n);
   for (auto cell : Traits::finite_cells(triangulation)) {
     const auto center = Traits::circumcenter(triangulation, cell);
     const double r2 = squared_radius(cell, center);
@@ -93,22 +97,31 @@ void find_poles(const typename Traits::Triangulation& triangulation,
 
   // The pairing graph in compressed rows: partners of each pole, sorted, without repeats.
   const int pole_count = static_cast<int>(stage.poles.size());
-  std::vector<std::vector<int>> partners(pole_count);
+  auto& offsets = stage.partner_offsets;
+  offsets.assign(pole_count + 1, 0);
+  for (int s = 0; s < n; ++s) {
+    if (stage.negative_pole[s] < 0) continue;
+    ++offsets[stage.positive_pole[s] + 1];
+    ++offsets[stage.negative_pole[s] + 1];
+  }
+  for (int p = 0; p < pole_count; ++p) offsets[p + 1] += offsets[p];
+  std::vector<int> partners(offsets.back());
+  std::vector<int> fill(offsets.begin(), offsets.end() - 1);
   for (int s = 0; s < n; ++s) {
     const int a = stage.positive_pole[s], b = stage.negative_pole[s];
     if (b < 0) continue;
-    partners[a].push_back(b);
-    partners[b].push_back(a);
+    partners[fill[a]++] = b;
+    partners[fill[b]++] = a;
   }
-  stage.partner_offsets.assign(pole_count + 1, 0);
   stage.partners.clear();
+  stage.partners.reserve(partners.size());
   for (int p = 0; p < pole_count; ++p) {
-    auto& list = partners[p];
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    stage.partners.insert(stage.partners.end(), list.begin(), list.end());
-    stage.partner_offsets[p + 1] = static_cast<int>(stage.partners.size());
+    const auto first = partners.begin() + offsets[p], last = partners.begin() + offsets[p + 1];
+    std::sort(first, last);
+    offsets[p] = static_cast<int>(stage.partners.size());  // rows only shrink: safe in place
+    stage.partners.insert(stage.partners.end(), first, std::unique(first, last));
   }
+  offsets[pole_count] = static_cast<int>(stage.partners.size());
 }
 
 }  // namespace sculpt

@@ -56,7 +56,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
 
   typename Traits::Triangulation triangulation;
   clock.start("delaunay");
-  build_delaunay<Traits>(work, options, triangulation, result);
+  build_delaunay<Traits>(work, options, triangulation, result, clock);
   result.stats.delaunay_cells = result.delaunay.cell_count;
 
   clock.start("poles");

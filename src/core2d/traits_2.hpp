@@ -6,6 +6,7 @@
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Search_traits_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -29,9 +30,17 @@ struct Traits_2 {
   using Tds = CGAL::Triangulation_data_structure_2<Vertex_base, Face_base>;
   using Triangulation = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
   using Cell_handle = Triangulation::Face_handle;
+  using Spatial_sort_traits =
+      CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::Pointer_property_map<Cgal_point>::type>;
 
   static Cgal_point to_cgal(const Point<2>& p) { return {p[0], p[1]}; }
   static Point<2> from_cgal(const Cgal_point& p) { return {p.x(), p.y()}; }
+
+  // Inserts p, locating it from the faces around `near` (none: from anywhere).
+  static Triangulation::Vertex_handle insert_near(Triangulation& t, const Cgal_point& p,
+                                                  Triangulation::Vertex_handle near) {
+    return t.insert(p, near == Triangulation::Vertex_handle() ? Cell_handle() : near->face());
+  }
 
   static auto finite_cells(const Triangulation& t) { return t.finite_face_handles(); }
   static auto all_cells(const Triangulation& t) { return t.all_face_handles(); }
@@ -45,13 +54,18 @@ struct Traits_2 {
       while (++face != first);
     }
   }
+  static Cgal_point exact_circumcenter(Cell_handle c) {
+    return exact_circumcentre(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point());
+  }
   static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) {
     return circumcentre_or_exact<Cgal_point>([&] { return t.dual(c); },
-                                             [&] {
-                                               return exact_circumcentre(c->vertex(0)->point(),
-                                                                         c->vertex(1)->point(),
-                                                                         c->vertex(2)->point());
-                                             });
+                                             [&] { return exact_circumcenter(c); });
+  }
+  // Whether p lies in the circumcircle of c, exactly; `perturbed` decides points on the circle
+  // as CGAL's insertion does.
+  static bool in_circumball(const Triangulation& t, Cell_handle c, const Cgal_point& p,
+                            bool perturbed) {
+    return t.side_of_oriented_circle(c, p, perturbed) == CGAL::ON_POSITIVE_SIDE;
   }
 
   // Vertex j of the edge opposite vertex i, with the face on its left: a closed curve comes out

@@ -5,6 +5,7 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Search_traits_3.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
@@ -31,9 +32,17 @@ struct Traits_3 {
   using Tds = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
   using Triangulation = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
   using Cell_handle = Triangulation::Cell_handle;
+  using Spatial_sort_traits =
+      CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Cgal_point>::type>;
 
   static Cgal_point to_cgal(const Point<3>& p) { return {p[0], p[1], p[2]}; }
   static Point<3> from_cgal(const Cgal_point& p) { return {p.x(), p.y(), p.z()}; }
+
+  // Inserts p, locating it from the cells around `near` (none: from anywhere).
+  static Triangulation::Vertex_handle insert_near(Triangulation& t, const Cgal_point& p,
+                                                  Triangulation::Vertex_handle near) {
+    return t.insert(p, near);
+  }
 
   static auto finite_cells(const Triangulation& t) { return t.finite_cell_handles(); }
   static auto all_cells(const Triangulation& t) { return t.all_cell_handles(); }
@@ -42,13 +51,19 @@ struct Traits_3 {
                              std::vector<Cell_handle>& cells) {
     t.incident_cells(v, std::back_inserter(cells));
   }
+  static Cgal_point exact_circumcenter(Cell_handle c) {
+    return exact_circumcentre(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                              c->vertex(3)->point());
+  }
   static Cgal_point circumcenter(const Triangulation& t, Cell_handle c) {
     return circumcentre_or_exact<Cgal_point>([&] { return t.dual(c); },
-                                             [&] {
-                                               return exact_circumcentre(
-                                                   c->vertex(0)->point(), c->vertex(1)->point(),
-                                                   c->vertex(2)->point(), c->vertex(3)->point());
-                                             });
+                                             [&] { return exact_circumcenter(c); });
+  }
+  // Whether p lies in the circumball of c, exactly; `perturbed` decides points on its sphere
+  // as CGAL's insertion does.
+  static bool in_circumball(const Triangulation& t, Cell_handle c, const Cgal_point& p,
+                            bool perturbed) {
+    return t.side_of_sphere(c, p, perturbed) == CGAL::ON_BOUNDED_SIDE;
   }
 
   // Vertex j of the facet opposite vertex i, facing away from vertex i.

@@ -5,6 +5,9 @@
 //   6. sculpted     DT(S ∪ OUP), by inserting them into the first triangulation
 //   7. solid        its all-sample cells
 //   8. surface      the skin or the paper's extraction rule
+// When nobody asks to see DT(S ∪ OUP) (the command line) and the surface is a closed skin,
+// stages 6-7 are answered on the first triangulation instead (solid_by_queries.hpp): the same
+// solid and surface, without the insertion.
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -13,17 +16,35 @@
 #include "../../core/stage_clock.hpp"
 #include "pole_insertion.hpp"
 #include "pole_separation.hpp"
+#include "solid_by_queries.hpp"
 #include "surface_extraction.hpp"
 
 namespace sculpt {
 
-// Stages 5-8, from labelled poles: insert OUP (UP), then the solid and the surface.
+// Whether stages 6-7 need DT(S ∪ OUP) itself: to show it, or for a surface that is not the
+// solid's skin (bordered surfaces, the extraction rule: they read the apexes of facets).
+inline bool builds_sculpted_delaunay(const Options& options) {
+  return options.keep_triangulations || options.kind != Surface_kind::closed ||
+         resolved_rule(options) != Surface_rule::skin;
+}
+
+// Stages 5-8, from labelled poles: OUP (UP) inserted or queried, then the solid and the surface.
 template <class Traits>
-void sculpt_by_insertion(typename Traits::Triangulation& triangulation,
-                         Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
+void sculpt_with_poles(typename Traits::Triangulation& triangulation,
+                       Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
+  if (!builds_sculpted_delaunay(result.options)) {
+    clock.start("queries");
+    choose_inserted_poles(result);
+    for (int pole : result.insertion.inserted_poles)
+      result.sites.push_back(result.poles.poles[pole].center);
+    result.stats.inserted_poles = result.insertion.inserted_poles.size();
+    const auto solid = solid_cells_by_queries<Traits>(triangulation, result, clock);
+    solid_and_skin<Traits>(triangulation, solid, result, clock);
+    return;
+  }
   clock.start("insertion");
   choose_inserted_poles(result);
-  insert_poles<Traits>(triangulation, result);
+  insert_poles<Traits>(triangulation, result, clock);
   result.stats.inserted_poles = result.insertion.inserted_poles.size();
   result.stats.sculpted_cells = result.sculpted_delaunay.cell_count;
 
@@ -40,7 +61,7 @@ void run_paper_method(typename Traits::Triangulation& triangulation,
   clock.start("propagation");
   propagate_labels(result, clock);
   count_labels(result);
-  sculpt_by_insertion<Traits>(triangulation, result, clock);
+  sculpt_with_poles<Traits>(triangulation, result, clock);
 }
 
 }  // namespace sculpt

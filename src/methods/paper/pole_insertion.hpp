@@ -5,7 +5,6 @@
 // Unlabelled poles have no side and are not inserted.
 #pragma once
 
-#include <utility>
 #include <vector>
 
 #include "../../core/delaunay.hpp"
@@ -25,15 +24,14 @@ void choose_inserted_poles(Reconstruction<D>& result) {
 
 template <class Traits>
 void insert_poles(typename Traits::Triangulation& triangulation,
-                  Reconstruction<Traits::dimension>& result) {
-  std::vector<std::pair<typename Traits::Cgal_point, int>> sites;
-  sites.reserve(result.insertion.inserted_poles.size());
-  for (int pole : result.insertion.inserted_poles) {
-    const auto& center = result.poles.poles[pole].center;
-    sites.emplace_back(Traits::to_cgal(center), static_cast<int>(result.sites.size()));
-    result.sites.push_back(center);
-  }
-  triangulation.insert(sites.begin(), sites.end());  // spatially sorted, located with hints
+                  Reconstruction<Traits::dimension>& result, const Stage_clock& clock) {
+  std::vector<Point<Traits::dimension>> centers;
+  centers.reserve(result.insertion.inserted_poles.size());
+  for (int pole : result.insertion.inserted_poles)
+    centers.push_back(result.poles.poles[pole].center);
+  const int first_site = static_cast<int>(result.sites.size());
+  result.sites.insert(result.sites.end(), centers.begin(), centers.end());
+  insert_in_spatial_order<Traits>(triangulation, centers, first_site, clock);
   number_cells<Traits>(triangulation, result.options.keep_triangulations, result.sculpted_delaunay);
 }
 

@@ -17,20 +17,20 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "../../core/circumball_query.hpp"
 #include "../../core/stage_clock.hpp"
 #include "manifold_carving.hpp"
-#include "point_tree.hpp"
 
 namespace sculpt {
 
 template <int D>
-Point_tree<D> outer_pole_tree(const Reconstruction<D>& result) {
+std::vector<Point<D>> outer_pole_centers(const Reconstruction<D>& result) {
   std::vector<Point<D>> centers;
   for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
     if (result.propagation.labels[p] == Label::outer)
       centers.push_back(result.poles.poles[p].center);
   }
-  return Point_tree<D>(std::move(centers));
+  return centers;
 }
 
 // The label of the polar ball of least power distance from x among the poles of `samples`.
@@ -60,7 +60,9 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
                            const Reconstruction<Traits::dimension>& result,
                            const Stage_clock& clock) {
   constexpr int D = Traits::dimension;
-  const Point_tree<D> outer_poles = outer_pole_tree(result);
+  // Strictly inside, decided exactly: the poles on the sphere (those of neighbouring cells can
+  // be) do not destroy it.
+  const Circumball_query<Traits> outer_poles(triangulation, outer_pole_centers(result), false);
   const int n = static_cast<int>(result.sample_count());
   Cell_judgement judgement;
   judgement.outer.assign(result.delaunay.cell_count, 0);
@@ -89,9 +91,7 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
     double r2 = 0;
     for (int k = 0; k < D; ++k) r2 += (x[k] - corner[k]) * (x[k] - corner[k]);
     judgement.radius2[cell->info()] = static_cast<float>(r2);
-    // Strictly inside, with a margin for the rounding of the circumcentre: the poles on the
-    // sphere (those of neighbouring cells can be) do not destroy it.
-    if (outer_poles.any_within(x, r2 * (1 - 1e-9))) {
+    if (outer_poles.holds_point(cell, x)) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_pole_inside);
     } else if (power_cell_label<D>(result, x, samples) == Label::outer) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_power_cell);

@@ -59,13 +59,14 @@ Pole_evidence pole_evidence(const Reconstruction<D>& result) {
   const auto& stage = result.poles;
   const int n = static_cast<int>(stage.positive_pole.size());
   const int pole_count = static_cast<int>(stage.poles.size());
-  struct Directed {
-    int from, to;
+  // Each piece of evidence once, as found; then both directions in compressed rows.
+  struct Found {
+    int p, q;
     float weight;
     bool opposite;
   };
-  std::vector<Directed> directed;
-  directed.reserve(static_cast<std::size_t>(pole_count) * 2 * (D + 1) * 2);
+  std::vector<Found> found;
+  found.reserve(static_cast<std::size_t>(pole_count) * 2 * (D + 1));
   for (int p = 0; p < pole_count; ++p) {
     for (int s : stage.poles[p].sites) {
       if (s >= n) continue;  // a box corner
@@ -85,34 +86,54 @@ Pole_evidence pole_evidence(const Reconstruction<D>& result) {
         const int plus = stage.positive_pole[s], minus = stage.negative_pole[s];
         const bool pair = (p == plus && q == minus) || (p == minus && q == plus);
         if (pair && cosine <= antipodal_pair_cosine) {
-          directed.push_back({p, q, float(-cosine), true});
-          directed.push_back({q, p, float(-cosine), true});
+          found.push_back({p, q, float(-cosine), true});
         } else if (!pair && cosine > 0) {
-          directed.push_back({p, q, float(cosine), false});
-          directed.push_back({q, p, float(cosine), false});
+          found.push_back({p, q, float(cosine), false});
         }
       }
     }
   }
-  // One link per (from, to, kind), with the strongest weight.
-  std::sort(directed.begin(), directed.end(), [](const Directed& a, const Directed& b) {
-    if (a.from != b.from) return a.from < b.from;
-    if (a.to != b.to) return a.to < b.to;
+  Pole_evidence evidence;
+  auto& offsets = evidence.offsets;
+  offsets.assign(pole_count + 1, 0);
+  for (const Found& f : found) {
+    ++offsets[f.p + 1];
+    ++offsets[f.q + 1];
+  }
+  for (int p = 0; p < pole_count; ++p) offsets[p + 1] += offsets[p];
+  using Link = Pole_evidence::Link;
+  std::vector<Link> links(offsets.back());
+  {
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for (const Found& f : found) {
+      links[fill[f.p]++] = {f.q, f.weight, f.opposite};
+      links[fill[f.q]++] = {f.p, f.weight, f.opposite};
+    }
+  }
+  found = {};
+  // Per pole, one link per (neighbour, kind), with the strongest weight, in that order.
+  const auto before = [](const Link& a, const Link& b) {
+    if (a.pole != b.pole) return a.pole < b.pole;
     if (a.opposite != b.opposite) return a.opposite < b.opposite;
     return a.weight > b.weight;
-  });
-  Pole_evidence evidence;
-  evidence.offsets.assign(pole_count + 1, 0);
-  for (std::size_t i = 0; i < directed.size(); ++i) {
-    const Directed& d = directed[i];
-    if (i > 0 && directed[i - 1].from == d.from && directed[i - 1].to == d.to &&
-        directed[i - 1].opposite == d.opposite) {
-      continue;
+  };
+  const auto same = [](const Link& a, const Link& b) {
+    return a.pole == b.pole && a.opposite == b.opposite;
+  };
+  std::size_t kept = 0;
+  for (int p = 0; p < pole_count; ++p) {
+    const auto first = links.begin() + offsets[p], last = links.begin() + offsets[p + 1];
+    std::sort(first, last, before);
+    offsets[p] = static_cast<int>(kept);  // rows only shrink: compacting in place is safe
+    for (auto link = first; link != last; ++link) {
+      if (link != first && same(*(link - 1), *link)) continue;
+      links[kept++] = *link;
     }
-    evidence.links.push_back({d.to, d.weight, d.opposite});
-    ++evidence.offsets[d.from + 1];
   }
-  for (int p = 0; p < pole_count; ++p) evidence.offsets[p + 1] += evidence.offsets[p];
+  offsets[pole_count] = static_cast<int>(kept);
+  links.resize(kept);
+  links.shrink_to_fit();
+  evidence.links = std::move(links);
   return evidence;
 }
 

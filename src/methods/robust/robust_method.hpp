@@ -32,7 +32,7 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
   count_labels(result);
 
   if (inserts_poles(Method::robust, result.options.kind)) {
-    sculpt_by_insertion<Traits>(triangulation, result, clock);
+    sculpt_with_poles<Traits>(triangulation, result, clock);
     return;
   }
 

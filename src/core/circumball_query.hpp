@@ -1,0 +1,95 @@
+// Which all-sample cells of DT(S ∪ BBV) a set of poles would destroy if they were inserted, as
+// the paper's sculpting inserts the outer concave poles (section 3.2), found without inserting.
+//
+// Inserting points P destroys exactly the cells whose circumball holds a point of P, and every
+// all-sample cell of DT(S ∪ BBV ∪ P) is already a cell of DT(S ∪ BBV) (a ball empty of more
+// points is empty of fewer). So the all-sample cells that survive are read off the first
+// triangulation with one query per cell: a k-d tree of P finds the points near the cell's
+// circumball, and CGAL's exact in-sphere predicate decides for each. With `perturbed`, a point on
+// the sphere counts as CGAL's insertion counts it (its symbolic perturbation), so the answer is
+// the insertion's also for cospherical points; without, only points strictly inside count.
+//
+// The k-d tree is searched with the floating-point circumcentre, so the search ball is widened
+// by more than that centre's error. When the cell is so flat that the error could exceed the
+// widening (its orientation determinant below 1e-6 of the product of its edge lengths, where
+// the centre's relative error can reach ~1e-10), the exact circumcentre is used instead.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <sculpt/sculpt.hpp>
+#include <vector>
+
+#include "point_tree.hpp"
+
+namespace sculpt {
+
+template <class Traits>
+class Circumball_query {
+  static constexpr int D = Traits::dimension;
+  using Triangulation = typename Traits::Triangulation;
+  using Cell_handle = typename Traits::Cell_handle;
+
+ public:
+  Circumball_query(const Triangulation& triangulation, const std::vector<Point<D>>& points,
+                   bool perturbed)
+      : triangulation_(triangulation),
+        tree_(points),
+        empty_(points.empty()),
+        perturbed_(perturbed) {}
+
+  // Whether a point lies in the circumball of `cell`, whose circumcentre Traits::circumcenter
+  // gave as `center`.
+  bool holds_point(Cell_handle cell, const Point<D>& center) const {
+    if (empty_) return false;
+    const Point<D> search_center = well_conditioned(cell) ? center : exact_center(cell);
+    const Point<D> corner = Traits::from_cgal(cell->vertex(0)->point());
+    double r2 = 0, size = 0;
+    for (int k = 0; k < D; ++k) {
+      r2 += (search_center[k] - corner[k]) * (search_center[k] - corner[k]);
+      size = std::max(size, std::abs(search_center[k]));
+    }
+    const double r = std::sqrt(r2);
+    const double widened = r + 1e-6 * r + 1e-14 * size;
+    return tree_.any_within(search_center, widened * widened, [&](const Point<D>& p) {
+      return Traits::in_circumball(triangulation_, cell, Traits::to_cgal(p), perturbed_);
+    });
+  }
+
+ private:
+  // |det(v1 - v0, ..., vD - v0)| against the product of those edge lengths (Hadamard's bound).
+  static bool well_conditioned(Cell_handle cell) {
+    Point<D> edge[D];
+    const Point<D> v0 = Traits::from_cgal(cell->vertex(0)->point());
+    double product = 1;
+    for (int i = 0; i < D; ++i) {
+      const Point<D> v = Traits::from_cgal(cell->vertex(i + 1)->point());
+      double length2 = 0;
+      for (int k = 0; k < D; ++k) {
+        edge[i][k] = v[k] - v0[k];
+        length2 += edge[i][k] * edge[i][k];
+      }
+      product *= std::sqrt(length2);
+    }
+    double det;
+    if constexpr (D == 2) {
+      det = edge[0][0] * edge[1][1] - edge[0][1] * edge[1][0];
+    } else {
+      det = edge[0][0] * (edge[1][1] * edge[2][2] - edge[1][2] * edge[2][1]) -
+            edge[0][1] * (edge[1][0] * edge[2][2] - edge[1][2] * edge[2][0]) +
+            edge[0][2] * (edge[1][0] * edge[2][1] - edge[1][1] * edge[2][0]);
+    }
+    return std::abs(det) >= 1e-6 * product && std::isfinite(product);
+  }
+
+  static Point<D> exact_center(Cell_handle cell) {
+    return Traits::from_cgal(Traits::exact_circumcenter(cell));
+  }
+
+  const Triangulation& triangulation_;
+  Point_tree<D> tree_;
+  bool empty_;
+  bool perturbed_;
+};
+
+}  // namespace sculpt

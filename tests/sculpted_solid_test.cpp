@@ -1,0 +1,133 @@
+// The paper's solid and surface read off DT(S ∪ BBV) by circumball queries (what the command
+// line runs) are the ones inserting OUP gives (what the viewer shows), triangle for triangle,
+// including inputs full of cospherical points, where only CGAL's symbolic perturbation decides.
+#include <algorithm>
+#include <vector>
+
+#include "shapes/shapes.hpp"
+#include "test_support.hpp"
+
+namespace sculpt {
+namespace {
+
+// Cells as sorted vertex lists; facets rotated to start at their least vertex (orientation kept).
+template <int D>
+std::vector<Cell<D>> canonical_cells(std::vector<Cell<D>> cells) {
+  for (auto& c : cells) std::sort(c.begin(), c.end());
+  std::sort(cells.begin(), cells.end());
+  return cells;
+}
+
+template <int D>
+std::vector<Facet<D>> canonical_facets(std::vector<Facet<D>> facets) {
+  for (auto& f : facets) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+  std::sort(facets.begin(), facets.end());
+  return facets;
+}
+
+template <int D>
+void expect_queries_match_insertion(const std::vector<Point<D>>& samples) {
+  Options options;
+  options.method = Method::paper;
+  options.keep_triangulations = true;  // builds DT(S ∪ OUP) by insertion
+  const auto inserted = reconstruct(samples, options);
+  options.keep_triangulations = false;  // answers with queries on DT(S ∪ BBV)
+  const auto queried = reconstruct(samples, options);
+
+  ASSERT_GT(inserted.sculpted_delaunay.cell_count, 0u);
+  EXPECT_EQ(queried.sculpted_delaunay.cell_count, 0u) << "the command line must not insert";
+  EXPECT_EQ(queried.insertion.inserted_poles, inserted.insertion.inserted_poles);
+  EXPECT_FALSE(inserted.solid.empty());
+  EXPECT_EQ(canonical_cells<D>(queried.solid), canonical_cells<D>(inserted.solid));
+  EXPECT_EQ(canonical_facets<D>(queried.surface), canonical_facets<D>(inserted.surface));
+  EXPECT_EQ(queried.stats.euler_characteristic, inserted.stats.euler_characteristic);
+}
+
+// Integer points on the boundary of a cube (3D) or square (2D), slightly sheared so that no
+// two share a coordinate plane exactly, but still with many four-point (three-point) circles.
+std::vector<Point<3>> cube_lattice(int side) {
+  std::vector<Point<3>> points;
+  for (int x = 0; x <= side; ++x)
+    for (int y = 0; y <= side; ++y)
+      for (int z = 0; z <= side; ++z) {
+        const bool on_boundary = x == 0 || y == 0 || z == 0 || x == side || y == side || z == side;
+        if (on_boundary) points.push_back({double(x), double(y), double(z)});
+      }
+  return points;
+}
+
+std::vector<Point<2>> square_lattice(int side) {
+  std::vector<Point<2>> points;
+  for (int x = 0; x <= side; ++x)
+    for (int y = 0; y <= side; ++y)
+      if (x == 0 || y == 0 || x == side || y == side) points.push_back({double(x), double(y)});
+  return points;
+}
+
+// Points of an integer sphere x² + y² + z² = 49 (and 2D circle x² + y² = 25²): every sample on
+// one sphere, so the first triangulation's cells are all cospherical inside.
+std::vector<Point<3>> lattice_sphere() {
+  std::vector<Point<3>> points;
+  for (int x = -7; x <= 7; ++x)
+    for (int y = -7; y <= 7; ++y)
+      for (int z = -7; z <= 7; ++z)
+        if (x * x + y * y + z * z == 49 || x * x + y * y + z * z == 50)
+          points.push_back({double(x), double(y), double(z)});
+  return points;
+}
+
+// Random points of a coarse integer grid: degenerate in every way at once (cospherical and
+// coplanar subsets, poles on other cells' circumspheres).
+template <int D>
+std::vector<Point<D>> coarse_grid_points(int count, int side, unsigned seed) {
+  std::vector<Point<D>> points;
+  unsigned state = seed;
+  const auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<int>((state >> 8) % static_cast<unsigned>(side));
+  };
+  while (static_cast<int>(points.size()) < count) {
+    Point<D> p;
+    for (int k = 0; k < D; ++k) p[k] = next();
+    if (std::find(points.begin(), points.end(), p) == points.end()) points.push_back(p);
+  }
+  return points;
+}
+
+TEST(SculptedSolid, QueriesMatchInsertionOnCoarseGrids) {
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    SCOPED_TRACE(seed);
+    expect_queries_match_insertion<3>(coarse_grid_points<3>(60, 5, seed));
+    expect_queries_match_insertion<2>(coarse_grid_points<2>(30, 7, seed));
+  }
+}
+
+TEST(SculptedSolid, QueriesMatchInsertionOnSmoothSurfaces) {
+  expect_queries_match_insertion<3>(shapes::sphere(600));
+  expect_queries_match_insertion<3>(shapes::torus(2500));
+  expect_queries_match_insertion<3>(shapes::bumpy_sphere(1500));
+}
+
+TEST(SculptedSolid, QueriesMatchInsertionWhereThePaperFails) {
+  // Thin strands, a genus-3 shape and a one-sided undersampling: mislabelled poles, dangling
+  // facets and non-manifold skins, which must still agree cell for cell.
+  expect_queries_match_insertion<3>(shapes::torus_knot_tube(2500));
+  expect_queries_match_insertion<3>(shapes::three_holes(3000));
+  expect_queries_match_insertion<3>(shapes::thinned_on_one_side(shapes::torus(4000), 6));
+}
+
+TEST(SculptedSolid, QueriesMatchInsertionOnCosphericalPoints) {
+  expect_queries_match_insertion<3>(cube_lattice(8));
+  expect_queries_match_insertion<3>(lattice_sphere());
+  expect_queries_match_insertion<2>(square_lattice(12));
+}
+
+TEST(SculptedSolid, QueriesMatchInsertionOnCurves) {
+  expect_queries_match_insertion<2>(shapes::star(60).samples);
+  expect_queries_match_insertion<2>(shapes::star(35).samples);
+  expect_queries_match_insertion<2>(shapes::nested_circles(60, 30).samples);
+  expect_queries_match_insertion<2>(shapes::nonuniform_ellipse(80).samples);
+}
+
+}  // namespace
+}  // namespace sculpt
