@@ -177,6 +177,49 @@ TEST(Cli, UnknownOutputFormatFailsBeforeWork) {
   EXPECT_NE(run.err.find("known: .stl"), std::string::npos) << run.err;
 }
 
+// libOSMesa brings libLLVM (~50 MiB resident, tens of ms to load): only drawing may load it.
+TEST(Cli, OnlyRenderingLoadsTheRenderer) {
+  setenv("LD_DEBUG", "libs", 1);  // the dynamic loader lists every library it opens
+  const Command_result reconstruct =
+      run_sculpt("reconstruct --example star -q -o " + output_path("no-renderer.svg"));
+  const Command_result render = run_sculpt("render --example star --stage poles --size 64x64 -o " +
+                                           output_path("renderer.png"));
+  unsetenv("LD_DEBUG");
+  EXPECT_EQ(reconstruct.exit_code, 0);
+  EXPECT_NE(reconstruct.err.find("libc.so"), std::string::npos) << "LD_DEBUG listed nothing";
+  EXPECT_EQ(reconstruct.err.find("OSMesa"), std::string::npos);
+  EXPECT_EQ(reconstruct.err.find("LLVM"), std::string::npos);
+  EXPECT_EQ(render.exit_code, 0) << render.err.substr(render.err.size() - 500);
+  EXPECT_NE(render.err.find("libsculpt_osmesa.so"), std::string::npos);
+  EXPECT_NE(render.err.find("libOSMesa"), std::string::npos);
+}
+
+TEST(Cli, BenchMeasuresEachJobInAProcessOfItsOwn) {
+  const auto json = output_path("bench.json");
+  const Command_result run =
+      run_sculpt("bench --example sphere --example star --runs 2 --json " + json);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("x DT"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("CGAL adv. front"), std::string::npos) << run.out;
+  const auto rows = nlohmann::json::parse(read_file(json));
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) {
+    SCOPED_TRACE(row["input"].get<std::string>());
+    EXPECT_GT(double(row["delaunay_only"]["seconds"]), 0.0);
+    EXPECT_GT(double(row["delaunay_only"]["process"]["peak_mib"]), 1.0);
+    for (const char* method : {"paper", "robust"}) {
+      const auto& measured = row["methods"][method];
+      ASSERT_FALSE(measured.contains("error")) << measured;
+      EXPECT_GT(double(measured["process"]["cpu_seconds"]), 0.0);
+      EXPECT_GE(double(measured["process"]["cpu_seconds"]),
+                double(measured["total_seconds"]) * 0.5);
+      EXPECT_TRUE(measured["manifold"].get<bool>()) << measured["verdict"];
+    }
+  }
+  EXPECT_TRUE(rows[0]["advancing_front"]["manifold"].get<bool>());  // the sphere
+  EXPECT_FALSE(rows[1].contains("advancing_front"));                // a curve: no surface method
+}
+
 TEST(Cli, VersionAndHelp) {
   EXPECT_EQ(run_sculpt("--version").exit_code, 0);
   const Command_result help = run_sculpt("reconstruct --help");

@@ -91,6 +91,9 @@ struct Options {
   // Keep the cells of both triangulations in the result (the viewer and the tests read them);
   // the command line switches this off to save memory on large inputs.
   bool keep_triangulations = true;
+  // Keep the solid's cells (stage 7; the statistics count them either way): the command line
+  // keeps them only to write them (--solid).
+  bool keep_solid = true;
   std::function<bool(const Progress&)> progress;
 };
 
@@ -331,10 +334,13 @@ bool parse_rule(const std::string& name, Surface_rule& rule);  // auto, skin, ex
 Reconstruction<2> reconstruct(const std::vector<Point<2>>& samples, const Options& options = {});
 Reconstruction<3> reconstruct(const std::vector<Point<3>>& samples, const Options& options = {});
 
-// The baseline the benchmark compares every timing with: CGAL's Delaunay triangulation of the
-// same points (range insertion, spatially sorted), in seconds.
+// The yardsticks of the benchmark (src/yardsticks), on the same points:
+// CGAL's plain Delaunay triangulation (range insertion, spatially sorted), in seconds; every
+// timing is given as a ratio to it.
 double delaunay_seconds(const std::vector<Point<2>>& points);
 double delaunay_seconds(const std::vector<Point<3>>& points);
+// CGAL's Advancing Front Surface Reconstruction, default parameters: its triangles.
+std::vector<Facet<3>> cgal_advancing_front(const std::vector<Point<3>>& points);
 
 const char* to_string(Method method);
 const char* to_string(Carve_reason reason);

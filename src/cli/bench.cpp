@@ -5,11 +5,14 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <initializer_list>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
 
+#include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/point_reader.hpp"
@@ -58,46 +61,90 @@ nlohmann::json in_child_process(Work&& work) {
   return result;
 }
 
-// One row: CGAL's Delaunay of the points, then every method on the same points, each in a
-// process of its own; a mesh input's own triangles are the reference the results are compared
-// with (its topology, and the share of its triangles each method reproduces).
-template <int D>
-nlohmann::json measure(const std::string& name, const std::vector<Point<D>>& points, bool bordered,
-                       const std::vector<Facet<3>>& reference) {
-  nlohmann::json row;
-  row["input"] = name;
-  row["samples"] = points.size();
-  if constexpr (D == 3) {
-    if (!reference.empty()) {
-      const Statistics own = facet_topology(points.size(), reference);
-      row["reference"] = {{"triangles", reference.size()},
-                          {"euler_characteristic", own.euler_characteristic},
-                          {"components", own.components},
-                          {"boundary_loops", own.boundary_loops}};
+// Runs this executable as `sculpt bench-job ARGUMENTS...` and returns the JSON it prints, with
+// the process's CPU time (user + system), wall time and peak resident memory.
+nlohmann::json run_job_process(const std::vector<std::string>& arguments) {
+  std::vector<std::string> words = {"sculpt", "bench-job"};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (auto& word : words) argv.push_back(word.data());
+  argv.push_back(nullptr);
+  int channel[2];
+  if (pipe(channel) != 0) throw std::runtime_error("pipe failed");
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t child = fork();
+  if (child < 0) throw std::runtime_error("fork failed");
+  if (child == 0) {
+    dup2(channel[1], STDOUT_FILENO);
+    close(channel[0]);
+    close(channel[1]);
+    execv("/proc/self/exe", argv.data());
+    _exit(127);
+  }
+  close(channel[1]);
+  std::string text;
+  char buffer[65536];
+  for (ssize_t got; (got = read(channel[0], buffer, sizeof buffer)) > 0;) text.append(buffer, got);
+  close(channel[0]);
+  int status = 0;
+  rusage usage{};
+  wait4(child, &status, 0, &usage);
+  const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || text.empty()) {
+    return {{"error", "the measuring process died"}};
+  }
+  auto result = nlohmann::json::parse(text, nullptr, false);
+  if (result.is_discarded()) return {{"error", "the measuring process wrote no JSON"}};
+  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  result["process"] = {{"cpu_seconds", seconds(usage.ru_utime) + seconds(usage.ru_stime)},
+                       {"wall_seconds", wall},
+                       {"peak_mib", double(usage.ru_maxrss) / 1024.0}};
+  return result;
+}
+
+// Of several runs of one measurement, the one of median CPU time.
+nlohmann::json median_run(std::vector<nlohmann::json> runs) {
+  std::vector<nlohmann::json> good;
+  for (auto& run : runs) {
+    if (!run.contains("error")) good.push_back(std::move(run));
+  }
+  if (good.empty()) return runs.front();
+  std::sort(good.begin(), good.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return double(a["process"]["cpu_seconds"]) < double(b["process"]["cpu_seconds"]);
+  });
+  return good[(good.size() - 1) / 2];
+}
+
+// One row: CGAL's Delaunay of the points, CGAL's Advancing Front and every method on the same
+// points, each in a process of its own, `runs` times interleaved.
+nlohmann::json measure(const std::string& name, const std::vector<std::string>& source,
+                       const Bench_arguments& args) {
+  std::vector<std::string> methods = args.methods;
+  if (methods.empty()) methods.assign(method_names().begin(), method_names().end());
+  std::vector<std::pair<std::string, std::vector<std::string>>> jobs = {
+      {"delaunay", {"--job", "delaunay"}}};
+  if (args.advancing_front) jobs.push_back({"advancing-front", {"--job", "advancing-front"}});
+  for (const auto& method : methods)
+    jobs.push_back({method, {"--job", "method", "--method", method}});
+
+  std::map<std::string, std::vector<nlohmann::json>> runs;
+  for (int run = 0; run < std::max(1, args.runs); ++run) {
+    for (auto [label, arguments] : jobs) {
+      if (label == "advancing-front" && !runs["delaunay"].empty() &&
+          runs["delaunay"].front().value("dimension", 3) != 3) {
+        continue;  // a surface method: no 2D
+      }
+      arguments.insert(arguments.end(), source.begin(), source.end());
+      runs[label].push_back(run_job_process(arguments));
     }
   }
-  row["delaunay_only"] = in_child_process([&] {
-    return nlohmann::json{{"seconds", delaunay_seconds(points)}};
-  });
-  for (const char* method_name : method_names()) {
-    row["methods"][method_name] = in_child_process([&] {
-      Options options;
-      parse_method(method_name, options.method);
-      options.kind = bordered ? Surface_kind::bordered : Surface_kind::closed;
-      options.keep_triangulations = false;
-      Run_description run;
-      run.input = name;
-      run.kind = to_string(options.kind);
-      run.rule = to_string(resolved_rule(options));
-      const auto result = reconstruct(points, options);
-      nlohmann::json json = report_json(result.stats, run);
-      if constexpr (D == 3) {
-        if (!reference.empty())
-          json["reproduced"] = triangles_reproduced(reference, result.surface);
-      }
-      return json;
-    });
-  }
+  nlohmann::json row;
+  row["input"] = name;
+  row["delaunay_only"] = median_run(runs["delaunay"]);
+  row["samples"] = row["delaunay_only"].value("samples", 0);
+  for (const auto& method : methods) row["methods"][method] = median_run(runs[method]);
+  if (runs.count("advancing-front")) row["advancing_front"] = median_run(runs["advancing-front"]);
   return row;
 }
 
@@ -109,56 +156,136 @@ double stage_seconds(const nlohmann::json& stats, std::initializer_list<const ch
   return sum;
 }
 
+// The stages every method has, then the method's own, summed under one heading.
+const std::initializer_list<const char*> own_stages = {
+    "seeds", "propagation", "labelling", "insertion", "queries", "carving", "solid", "surface"};
+
 void print_rows(const std::vector<nlohmann::json>& rows) {
-  std::cout << fmt::format("\n{:<22}{:>9}{:>9}{:>8}{:>9}{:>9}{:>9}{:>9}{:>9}{:>8}{:>8}\n",
-                           "time (s)", "n", "CGAL DT", "method", "ours:DT", "poles", "label",
-                           "sculpt", "total", "/ DT", "MiB/DT");
+  std::cout << "\nWhole process: CPU seconds and peak memory of a process that reads the input and "
+               "runs one job.\nx DT: against the process that reads the same input and builds "
+               "CGAL's Delaunay triangulation of it.\n";
+  std::cout << fmt::format("\n{:<20}{:>9}{:>17}{:>17}{:>8}{:>8}{:>8}{:>8}{:>8}{:>9}{:>7}{:>8}\n",
+                           "input", "n", "method", "DT core / whole", "delaun.", "poles", "method",
+                           "topol.", "read", "whole s", "x DT", "MiB xDT");
   for (const auto& row : rows) {
-    if (row["delaunay_only"].contains("error")) {
-      std::cout << fmt::format("{:<22} failed: {}\n", row["input"].get<std::string>(),
-                               row["delaunay_only"]["error"].get<std::string>());
+    const auto& dt = row["delaunay_only"];
+    const std::string input = row["input"].get<std::string>();
+    if (dt.contains("error")) {
+      std::cout << fmt::format("{:<20} failed: {}\n", input, dt["error"].get<std::string>());
       continue;
     }
-    const double dt = row["delaunay_only"]["seconds"];
-    const double dt_mib = row["delaunay_only"]["process_peak_mib"];
-    for (const auto& [method, s] : row["methods"].items()) {
+    const double dt_whole = dt["process"]["cpu_seconds"];
+    const double dt_mib = dt["process"]["peak_mib"];
+    const std::string dt_text = fmt::format("{:.3f} / {:.3f}", double(dt["seconds"]), dt_whole);
+    const auto print = [&](const std::string& label, const nlohmann::json& s) {
       if (s.contains("error")) {
-        std::cout << fmt::format("{:<22} {} failed: {}\n", row["input"].get<std::string>(), method,
+        std::cout << fmt::format("{:<20}{:>9}{:>17}  failed: {}\n", input, "", label,
                                  s["error"].get<std::string>());
-        continue;
+        return;
       }
-      const double total = s["total_seconds"];
+      const double whole = s["process"]["cpu_seconds"];
+      const bool staged = s.contains("stages") && !s["stages"].empty();
+      const auto cell = [&](std::initializer_list<const char*> names) {
+        return staged ? fmt::format("{:.3f}", stage_seconds(s, names)) : std::string("");
+      };
       std::cout << fmt::format(
-          "{:<22}{:>9}{:>9.3f}{:>8}{:>9.3f}{:>9.3f}{:>9.3f}{:>9.3f}{:>9.3f}{:>8.2f}{:>8.2f}\n",
-          row["input"].get<std::string>(), s["samples"].get<std::size_t>(), dt, method,
-          stage_seconds(s, {"delaunay"}), stage_seconds(s, {"poles"}),
-          stage_seconds(s, {"seeds", "propagation", "labelling"}),
-          stage_seconds(s, {"insertion", "carving", "solid", "surface"}), total, total / dt,
-          double(s["process_peak_mib"]) / dt_mib);
-    }
+          "{:<20}{:>9}{:>17}{:>17}{:>8}{:>8}{:>8}{:>8}{:>8.3f}{:>9.3f}{:>7.2f}{:>8.2f}\n", input,
+          row["samples"].get<std::size_t>(), label, dt_text, cell({"checks", "delaunay"}),
+          cell({"poles"}), cell(own_stages), cell({"topology"}),
+          double(s.value("read_seconds", 0.0)), whole, whole / dt_whole,
+          double(s["process"]["peak_mib"]) / dt_mib);
+    };
+    for (const auto& [method, s] : row["methods"].items()) print(method, s);
+    if (row.contains("advancing_front")) print("CGAL adv. front", row["advancing_front"]);
   }
-  std::cout << fmt::format("\n{:<22}{:>8}{:>10}{:>10}{:>9}{:>9}{:>8}{:>8}{:>11}{:>10}  {}\n",
+
+  std::cout << fmt::format("\n{:<20}{:>17}{:>10}{:>10}{:>9}{:>9}{:>8}{:>8}{:>11}{:>10}  {}\n",
                            "result", "method", "triangles", "non-man.", "n.-m. v", "border",
                            "unused", "pieces", "Euler(own)", "reproduced", "verdict");
   for (const auto& row : rows) {
-    const bool has_reference = row.contains("reference");
-    for (const auto& [method, s] : row["methods"].items()) {
-      if (s.contains("error")) continue;
+    const bool has_reference = row["delaunay_only"].contains("reference");
+    const auto print = [&](const std::string& label, const nlohmann::json& s) {
+      if (s.contains("error")) return;
       const std::string euler =
-          has_reference ? fmt::format("{}({})", s["euler_characteristic"].get<long>(),
-                                      row["reference"]["euler_characteristic"].get<long>())
-                        : std::to_string(s["euler_characteristic"].get<long>());
+          has_reference
+              ? fmt::format("{}({})", s["euler_characteristic"].get<long>(),
+                            row["delaunay_only"]["reference"]["euler_characteristic"].get<long>())
+              : std::to_string(s["euler_characteristic"].get<long>());
       const std::string reproduced =
           s.contains("reproduced") ? fmt::format("{:.1f}%", 100 * double(s["reproduced"])) : "";
       std::cout << fmt::format(
-          "{:<22}{:>8}{:>10}{:>10}{:>9}{:>9}{:>8}{:>8}{:>11}{:>10}  {}\n",
-          row["input"].get<std::string>(), method, s["facets"].get<std::size_t>(),
+          "{:<20}{:>17}{:>10}{:>10}{:>9}{:>9}{:>8}{:>8}{:>11}{:>10}  {}\n",
+          row["input"].get<std::string>(), label, s["facets"].get<std::size_t>(),
           s["non_manifold_ridges"].get<std::size_t>(),
           s["non_manifold_vertices"].get<std::size_t>(), s["boundary_ridges"].get<std::size_t>(),
           s["unused_samples"].get<std::size_t>(), s["components"].get<std::size_t>(), euler,
           reproduced, s["manifold"].get<bool>() ? "manifold" : "DEFECTIVE");
-    }
+    };
+    for (const auto& [method, s] : row["methods"].items()) print(method, s);
+    if (row.contains("advancing_front")) print("CGAL adv. front", row["advancing_front"]);
   }
+}
+
+template <int D>
+nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::Input& input,
+                          const Bench_job& job) {
+  nlohmann::json out;
+  const auto add_reproduced = [&](const std::vector<Facet<D>>& facets) {
+    if constexpr (D == 3) {
+      if (!input.reference_triangles.empty())
+        out["reproduced"] = triangles_reproduced(input.reference_triangles, facets);
+    }
+  };
+  if (job.job == "delaunay") {
+    out["seconds"] = delaunay_seconds(points);
+    if constexpr (D == 3) {
+      if (!input.reference_triangles.empty()) {
+        const Statistics own = facet_topology(points.size(), input.reference_triangles);
+        out["reference"] = {{"triangles", input.reference_triangles.size()},
+                            {"euler_characteristic", own.euler_characteristic},
+                            {"components", own.components},
+                            {"boundary_loops", own.boundary_loops}};
+      }
+    }
+  } else if (job.job == "advancing-front") {
+    if constexpr (D == 3) {
+      const auto start = std::chrono::steady_clock::now();
+      const auto facets = cgal_advancing_front(points);
+      const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      Statistics stats = facet_topology(points.size(), facets);
+      stats.dimension = 3;
+      stats.samples = points.size();
+      stats.facets = facets.size();
+      Run_description run;
+      run.input = input.description;
+      out = report_json(stats, run);
+      out["method"] = "advancing-front";
+      out["total_seconds"] = seconds;
+      add_reproduced(facets);
+    } else {
+      throw Input_error("the Advancing Front reconstructs surfaces only");
+    }
+  } else {
+    Options options;
+    if (!parse_method(job.method, options.method))
+      throw Input_error("unknown method " + job.method);
+    options.kind = job.bordered ? Surface_kind::bordered : Surface_kind::closed;
+    options.keep_triangulations = false;
+    options.keep_solid = false;  // as `sculpt reconstruct` without --solid
+    Run_description run;
+    run.input = input.description;
+    run.kind = to_string(options.kind);
+    run.rule = inserts_poles(options.method, options.kind) ? to_string(resolved_rule(options))
+                                                           : "manifold carve";
+    const auto result = reconstruct(points, options);
+    out = report_json(result.stats, run);
+    add_reproduced(result.surface);
+  }
+  out["samples"] = points.size();
+  out["dimension"] = D;
+  out["read_seconds"] = input.read_seconds;
+  return out;
 }
 
 // A torus surface of about `triangles` triangles (a closed torus has twice as many triangles as
@@ -204,7 +331,38 @@ void bench_rendering(int triangles) {
 
 }  // namespace
 
+int run_bench_job(const Bench_job& job) {
+  nlohmann::json out;
+  try {
+    frontend::Input input;
+    if (job.torus_points > 0) {
+      const auto start = std::chrono::steady_clock::now();
+      input.points = shapes::torus(job.torus_points);
+      input.description = fmt::format("torus {}", job.torus_points);
+      input.read_seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    } else {
+      input = frontend::load_input(job.input, job.example, 0, job.merge_duplicates);
+    }
+    out = std::visit(
+        [&](const auto& points) {
+          constexpr int D = std::tuple_size_v<typename std::decay_t<decltype(points)>::value_type>;
+          return run_job_on<D>(points, input, job);
+        },
+        input.points);
+  } catch (const std::exception& e) {
+    out = {{"error", e.what()}};
+  }
+  std::cout << out.dump() << '\n';
+  return 0;
+}
+
 int run_bench(const Bench_arguments& args) {
+  for (const auto& method : args.methods) {
+    Method parsed;
+    if (!parse_method(method, parsed))
+      throw frontend::Usage_error("unknown method '" + method + "'");
+  }
   std::vector<nlohmann::json> rows;
   const auto add = [&](nlohmann::json row) {
     if (isatty(STDERR_FILENO)) {  // progress for a person watching; never in a log
@@ -212,22 +370,24 @@ int run_bench(const Bench_arguments& args) {
     }
     rows.push_back(std::move(row));
   };
-  const auto measure_input = [&](const std::string& path, const std::string& example) {
-    const frontend::Input input = frontend::load_input(path, example, 0, args.merge_duplicates);
-    const std::string name = example.empty() ? path.substr(path.find_last_of('/') + 1) : example;
-    const bool bordered = example.empty() ? args.bordered : shapes::find_example(example)->bordered;
-    std::visit(
-        [&](const auto& points) {
-          constexpr int D = std::tuple_size_v<typename std::decay_t<decltype(points)>::value_type>;
-          add(measure<D>(name, points, bordered, input.reference_triangles));
-        },
-        input.points);
-  };
-  for (const auto& path : args.inputs) measure_input(path, "");
-  for (const auto& example : args.examples) measure_input("", example);
+  std::vector<std::string> common;
+  if (args.merge_duplicates) common.push_back("--merge-duplicates");
+  for (const auto& path : args.inputs) {
+    std::vector<std::string> source = {"--input", path};
+    if (args.bordered) source.push_back("--bordered");
+    source.insert(source.end(), common.begin(), common.end());
+    add(measure(path.substr(path.find_last_of('/') + 1), source, args));
+  }
+  for (const auto& example : args.examples) {
+    const auto* known = shapes::find_example(example);
+    if (!known) throw frontend::Usage_error("unknown example '" + example + "'");
+    std::vector<std::string> source = {"--example", example};
+    if (known->bordered) source.push_back("--bordered");
+    add(measure(example, source, args));
+  }
   if (args.torus_points > 0) {
-    add(measure<3>(fmt::format("torus {}", args.torus_points), shapes::torus(args.torus_points),
-                   false, {}));
+    add(measure(fmt::format("torus {}", args.torus_points),
+                {"--torus", std::to_string(args.torus_points)}, args));
   }
   print_rows(rows);
   if (args.render_triangles > 0) bench_rendering(args.render_triangles);

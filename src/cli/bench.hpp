@@ -1,5 +1,7 @@
-// `sculpt bench`: time and memory of every stage next to CGAL's Delaunay triangulation of the
-// same points, each measured in a process of its own so that peak memory is the run's own.
+// `sculpt bench`: every method next to CGAL's Delaunay triangulation and CGAL's Advancing Front
+// on the same points. Each measurement is a process of its own (`sculpt bench-job`, started
+// afresh, not forked), so its CPU time and peak memory are the whole process's, reading the
+// input included, as a user would measure `sculpt reconstruct` with /usr/bin/time.
 #pragma once
 
 #include <string>
@@ -12,11 +14,26 @@ struct Bench_arguments {
   std::vector<std::string> examples;  // built-in example names
   int torus_points = 0;               // also random points on a torus, if > 0
   int render_triangles = 0;           // also time a headless render of a surface this large
+  int runs = 1;                       // each measurement this many times, interleaved: the median
+  std::vector<std::string> methods;   // empty: every method
+  bool advancing_front = true;        // also CGAL's Advancing Front (3D)
   bool bordered = false;
   bool merge_duplicates = false;
   std::string json;  // write the rows as JSON too
 };
 
 int run_bench(const Bench_arguments& args);
+
+// One measurement, in the process `sculpt bench` starts: prints its JSON on standard output.
+struct Bench_job {
+  std::string job;  // "delaunay", "method" or "advancing-front"
+  std::string method;
+  std::string input, example;
+  int torus_points = 0;
+  bool bordered = false;
+  bool merge_duplicates = false;
+};
+
+int run_bench_job(const Bench_job& job);
 
 }  // namespace sculpt::cli

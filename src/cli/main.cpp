@@ -56,13 +56,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The stage being run, on a terminal, for runs long enough to wonder about.
+// The stage being run and how far it is, on a terminal, for runs long enough to wonder about.
 std::function<bool(const Progress&)> progress_printer(std::size_t samples, bool quiet) {
   if (quiet || !isatty(STDERR_FILENO) || samples < 20000) return {};
-  return [last = std::string()](const Progress& progress) mutable {
-    if (progress.stage && last != progress.stage) {
+  return [last = std::string(), percent = -1](const Progress& progress) mutable {
+    if (!progress.stage) return true;
+    const int now = static_cast<int>(100 * progress.fraction);
+    if (last != progress.stage || now != percent) {
       last = progress.stage;
-      show_status("sculpt: " + last + "...");
+      percent = now;
+      show_status(now > 0 ? fmt::format("sculpt: {} {}%", last, now) : "sculpt: " + last + "...");
     }
     return true;
   };
@@ -101,6 +104,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   options.box_factor = args.box_factor;
   options.bordered_seed_sample = args.seed_sample;
   options.keep_triangulations = false;
+  options.keep_solid = !args.solid.empty();
   options.progress = progress_printer(samples.size(), args.quiet);
 
   const Reconstruction<D> result = reconstruct(samples, options);
@@ -252,6 +256,26 @@ int main(int argc, char** argv) {
   bench->add_flag("--merge-duplicates", bench_args.merge_duplicates,
                   "Remove repeated points of the files instead of refusing them");
   bench->add_option("--json", bench_args.json, "Also write the measurements as JSON");
+  bench
+      ->add_option("--runs", bench_args.runs, "Run every measurement N times, interleaved: medians")
+      ->check(CLI::Range(1, 99))
+      ->capture_default_str();
+  bench->add_option("--methods", bench_args.methods, "Only these methods (default: all)")
+      ->delimiter(',');
+  bench->add_flag("!--no-advancing-front", bench_args.advancing_front,
+                  "Leave out CGAL's Advancing Front");
+
+  // One measurement of the benchmark, in a process of its own; not for people (no help entry).
+  Bench_job bench_job;
+  auto* bench_job_command = app.add_subcommand("bench-job", "");
+  bench_job_command->group("");
+  bench_job_command->add_option("--job", bench_job.job)->required();
+  bench_job_command->add_option("--method", bench_job.method);
+  bench_job_command->add_option("--input", bench_job.input);
+  bench_job_command->add_option("--example", bench_job.example);
+  bench_job_command->add_option("--torus", bench_job.torus_points);
+  bench_job_command->add_flag("--bordered", bench_job.bordered);
+  bench_job_command->add_flag("--merge-duplicates", bench_job.merge_duplicates);
 
   app.footer(sculpt::frontend::exit_codes_help);
   for (CLI::App* command : app.get_subcommands({}))
@@ -268,6 +292,7 @@ int main(int argc, char** argv) {
   try {
     if (examples->parsed()) return run_examples();
     if (bench->parsed()) return run_bench(bench_args);
+    if (bench_job_command->parsed()) return run_bench_job(bench_job);
     if (render->parsed()) return run_render(render_args);
     if (figures_command->parsed()) return sculpt::figures::generate(figure_options) > 0 ? 0 : 1;
     if (args.input.empty() && args.example.empty()) {

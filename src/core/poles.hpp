@@ -16,11 +16,13 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "stage_clock.hpp"
+
 namespace sculpt {
 
 template <class Traits>
 void find_poles(const typename Traits::Triangulation& triangulation,
-                Reconstruction<Traits::dimension>& result) {
+                Reconstruction<Traits::dimension>& result, const Stage_clock& clock) {
   constexpr int D = Traits::dimension;
   using Cell_handle = typename Traits::Cell_handle;
   using Cgal_point = typename Traits::Cgal_point;
@@ -38,7 +40,10 @@ void find_poles(const typename Traits::Triangulation& triangulation,
   // Pass 1: p+ of every sample.
   std::vector<double> plus_radius2(n, -1.0);
   std::vector<Cell_handle> plus_cell(n);
+  const double cells = 2.0 * static_cast<double>(result.delaunay.cell_count);
+  std::size_t done = 0;
   for (auto cell : Traits::finite_cells(triangulation)) {
+    if (++done % 262144 == 0) clock.report(double(done) / cells);
     const double r2 = squared_radius(cell, Traits::circumcenter(triangulation, cell));
     for (int i = 0; i <= D; ++i) {
       const int s = cell->vertex(i)->info();
@@ -55,6 +60,7 @@ void find_poles(const typename Traits::Triangulation& triangulation,
   std::vector<double> minus_radius2(n, -1.0);
   std::vector<Cell_handle> minus_cell(n);
   for (auto cell : Traits::finite_cells(triangulation)) {
+    if (++done % 262144 == 0) clock.report(double(done) / cells);
     const auto center = Traits::circumcenter(triangulation, cell);
     const double r2 = squared_radius(cell, center);
     for (int i = 0; i <= D; ++i) {

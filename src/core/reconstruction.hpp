@@ -5,7 +5,6 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
 #include "../methods/paper/paper_method.hpp"
@@ -19,19 +18,6 @@
 #include "stage_clock.hpp"
 
 namespace sculpt {
-
-// CGAL's Delaunay triangulation of the points alone, timed: the benchmark's yardstick.
-template <class Traits>
-double time_plain_delaunay(const std::vector<Point<Traits::dimension>>& points) {
-  std::vector<typename Traits::Cgal_point> cgal_points;
-  cgal_points.reserve(points.size());
-  for (const auto& p : points) cgal_points.push_back(Traits::to_cgal(p));
-  const auto start = std::chrono::steady_clock::now();
-  typename Traits::Triangulation triangulation(cgal_points.begin(), cgal_points.end());
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return triangulation.number_of_vertices() > 0 ? seconds : 0.0;
-}
 
 template <class Traits>
 Reconstruction<Traits::dimension> reconstruct_with(
@@ -60,7 +46,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   result.stats.delaunay_cells = result.delaunay.cell_count;
 
   clock.start("poles");
-  find_poles<Traits>(triangulation, result);
+  find_poles<Traits>(triangulation, result, clock);
 
   clock.start("seeds");
   select_seeds(result);
@@ -73,7 +59,6 @@ Reconstruction<Traits::dimension> reconstruct_with(
       run_robust_method<Traits>(triangulation, result, clock);
       break;
   }
-  result.stats.solid_cells = result.solid.size();
 
   clock.start("topology");
   measure_topology<Traits::dimension>(samples.size(), result.surface, result.stats);

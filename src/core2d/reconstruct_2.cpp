@@ -8,8 +8,4 @@ Reconstruction<2> reconstruct(const std::vector<Point<2>>& samples, const Option
   return reconstruct_with<Traits_2>(samples, options);
 }
 
-double delaunay_seconds(const std::vector<Point<2>>& points) {
-  return time_plain_delaunay<Traits_2>(points);
-}
-
 }  // namespace sculpt

@@ -8,8 +8,4 @@ Reconstruction<3> reconstruct(const std::vector<Point<3>>& samples, const Option
   return reconstruct_with<Traits_3>(samples, options);
 }
 
-double delaunay_seconds(const std::vector<Point<3>>& points) {
-  return time_plain_delaunay<Traits_3>(points);
-}
-
 }  // namespace sculpt

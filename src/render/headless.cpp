@@ -1,110 +1,64 @@
 #include "headless.hpp"
 
-// gl.hpp first: osmesa.h includes GL/gl.h, which must see GL_GLEXT_PROTOTYPES.
-#include "render/gl.hpp"
-// clang-format off
-#include <GL/osmesa.h>
-// clang-format on
+#include <dlfcn.h>
+#include <unistd.h>
 
-#include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 #include <vector>
 
+#include "render/offscreen.hpp"
+
 namespace sculpt::render {
+namespace {
 
-struct Headless_renderer::Context {
-  OSMesaContext context = nullptr;
-  std::vector<unsigned char> dummy =
-      std::vector<unsigned char>(16 * 16 * 4);  // OSMesa's own buffer; we draw to FBOs
-
-  Context() {
-    // llvmpipe, whatever else Mesa finds: pictures must not depend on the machine.
-    setenv("GALLIUM_DRIVER", "llvmpipe", 0);
-    const int attributes[] = {OSMESA_FORMAT,
-                              OSMESA_RGBA,
-                              OSMESA_DEPTH_BITS,
-                              24,
-                              OSMESA_PROFILE,
-                              OSMESA_CORE_PROFILE,
-                              OSMESA_CONTEXT_MAJOR_VERSION,
-                              3,
-                              OSMESA_CONTEXT_MINOR_VERSION,
-                              3,
-                              0};
-    context = OSMesaCreateContextAttribs(attributes, nullptr);
-    if (!context) throw std::runtime_error("OSMesa cannot create an OpenGL 3.3 core context");
-    if (!OSMesaMakeCurrent(context, dummy.data(), GL_UNSIGNED_BYTE, 16, 16)) {
-      OSMesaDestroyContext(context);
-      throw std::runtime_error("OSMesa cannot make its context current");
+// The module beside the executable (build tree, or an installed bin/), in ../lib/sculpt (an
+// installed tree), or where the build put it (the tests run from their own folder).
+Make_offscreen_renderer load_module() {
+  static Make_offscreen_renderer make = nullptr;
+  if (make) return make;
+  std::vector<std::filesystem::path> places;
+  std::error_code error;
+  const auto executable = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) {
+    places.push_back(executable.parent_path() / offscreen_module_name);
+    places.push_back(executable.parent_path() / "../lib/sculpt" / offscreen_module_name);
+  }
+  places.push_back(std::filesystem::path(SCULPT_MODULE_DIR) / offscreen_module_name);
+  std::string failures;
+  for (const auto& place : places) {
+    if (!std::filesystem::exists(place, error)) continue;
+    void* module = dlopen(place.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!module) {
+      failures += std::string(" ") + dlerror();
+      continue;
     }
+    make = reinterpret_cast<Make_offscreen_renderer>(dlsym(module, make_offscreen_renderer_symbol));
+    if (make) return make;
+    failures += " " + place.string() + " has no " + make_offscreen_renderer_symbol;
   }
-  ~Context() { OSMesaDestroyContext(context); }
-};
-
-// A framebuffer of one or several samples with colour and depth renderbuffers.
-class Framebuffer {
- public:
-  Framebuffer(int width, int height, int samples) {
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glGenRenderbuffers(2, renderbuffers_);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                              renderbuffers_[0]);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                              renderbuffers_[1]);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw std::runtime_error("cannot make a " + std::to_string(width) + "x" +
-                               std::to_string(height) + " offscreen framebuffer");
-    }
-  }
-  ~Framebuffer() {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteRenderbuffers(2, renderbuffers_);
-    glDeleteFramebuffers(1, &framebuffer_);
-  }
-  GLuint id() const { return framebuffer_; }
-
- private:
-  GLuint framebuffer_ = 0;
-  GLuint renderbuffers_[2] = {0, 0};
-};
-
-Headless_renderer::Headless_renderer()
-    : context_(std::make_unique<Context>()), renderer_(std::make_unique<Renderer>()) {}
-
-Headless_renderer::~Headless_renderer() {
-  renderer_.reset();  // its GL objects go while the context still exists
+  throw std::runtime_error(
+      std::string("cannot load the headless renderer ") + offscreen_module_name +
+      (failures.empty() ? " (not found beside the executable)" : ":" + failures));
 }
 
+}  // namespace
+
+Headless_renderer::Headless_renderer() {
+  std::string error;
+  offscreen_.reset(load_module()(&error));
+  if (!offscreen_) throw std::runtime_error(error);
+}
+
+Headless_renderer::~Headless_renderer() = default;
+
 const char* Headless_renderer::gl_renderer() const {
-  return reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return offscreen_->gl_renderer();
 }
 
 Image Headless_renderer::render(const scene::Scene& scene, const Camera& camera, int width,
                                 int height, const Draw_options& options) {
-  if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
-    throw std::runtime_error("image size out of range: " + std::to_string(width) + "x" +
-                             std::to_string(height));
-  }
-  const Framebuffer multisampled(width, height, 4);
-  const Framebuffer resolved(width, height, 0);
-  glBindFramebuffer(GL_FRAMEBUFFER, multisampled.id());
-  renderer_->set_scene(scene);
-  renderer_->draw(camera, width, height, options);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled.id());
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved.id());
-  glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved.id());
-
-  Image image = read_pixels(width, height);
-  renderer_->set_scene({});
-  if (glGetError() != GL_NO_ERROR)
-    throw std::runtime_error("OpenGL reported an error while rendering");
-  return image;
+  return offscreen_->render(scene, camera, width, height, options);
 }
 
 }  // namespace sculpt::render

@@ -1,5 +1,7 @@
 // Rendering without a display: an OSMesa OpenGL 3.3 core context (Mesa's llvmpipe) drawing into
 // a 4x multisampled offscreen framebuffer, read back as an Image. The renderer is the viewer's.
+// The GL side lives in a module (offscreen.hpp) loaded by the first Headless_renderer, so that a
+// program that never renders never loads libOSMesa.
 #pragma once
 
 #include <memory>
@@ -11,7 +13,8 @@ namespace sculpt::render {
 
 class Headless_renderer {
  public:
-  Headless_renderer();  // throws std::runtime_error if no GL 3.3 context can be made
+  // Throws std::runtime_error if the module cannot be loaded or no GL 3.3 context can be made.
+  Headless_renderer();
   ~Headless_renderer();
   Headless_renderer(const Headless_renderer&) = delete;
   Headless_renderer& operator=(const Headless_renderer&) = delete;
@@ -22,9 +25,7 @@ class Headless_renderer {
   const char* gl_renderer() const;  // e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
 
  private:
-  struct Context;
-  std::unique_ptr<Context> context_;
-  std::unique_ptr<Renderer> renderer_;
+  std::unique_ptr<class Offscreen_renderer> offscreen_;
 };
 
 }  // namespace sculpt::render

@@ -58,6 +58,8 @@ void solid_and_skin(const typename Traits::Triangulation& triangulation,
   clock.start("solid");
   for (auto cell : Traits::finite_cells(triangulation)) {
     if (!solid[cell->info()]) continue;
+    ++result.stats.solid_cells;
+    if (!result.options.keep_solid) continue;
     Cell<D> sites;
     for (int i = 0; i <= D; ++i) sites[i] = cell->vertex(i)->info();
     result.solid.push_back(sites);

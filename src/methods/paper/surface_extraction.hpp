@@ -55,7 +55,9 @@ void sculpt_solid(const typename Traits::Triangulation& triangulation,
       all_samples = all_samples && sides.is_sample(cell->vertex(i));
       sites[i] = cell->vertex(i)->info();
     }
-    if (all_samples) result.solid.push_back(sites);
+    if (!all_samples) continue;
+    ++result.stats.solid_cells;
+    if (result.options.keep_solid) result.solid.push_back(sites);
   }
 }
 

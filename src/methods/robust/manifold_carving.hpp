@@ -82,6 +82,8 @@ class Manifold_carving {
   void collect_solid() const {
     for (auto cell : Traits::finite_cells(triangulation_)) {
       if (is_outside(cell)) continue;
+      ++result_.stats.solid_cells;
+      if (!result_.options.keep_solid) continue;
       Cell<D> sites;
       for (int i = 0; i <= D; ++i) sites[i] = cell->vertex(i)->info();
       result_.solid.push_back(sites);
