@@ -1,6 +1,7 @@
 #include "facet_topology.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
 
 namespace sculpt {
@@ -21,23 +22,38 @@ class Union_find {
   std::vector<std::size_t> parent_;
 };
 
-// A ridge is a facet less one vertex, as sorted vertex indices: an edge in 3D, a vertex in 2D.
+// A ridge is a facet less one vertex, its vertex indices sorted: an edge in 3D, a vertex in 2D.
+// Ridges are packed in 64-bit keys (the smaller index in the high half), which sort several
+// times faster than arrays of indices.
 template <int D>
 using Ridge = std::array<int, D - 1>;
 
 template <int D>
-std::vector<Ridge<D>> ridges_of(const std::vector<Facet<D>>& facets) {
-  std::vector<Ridge<D>> ridges;
+std::uint64_t ridge_key(const Facet<D>& facet, int skip) {
+  if constexpr (D == 2) {
+    return static_cast<std::uint32_t>(facet[1 - skip]);
+  } else {
+    const auto a = static_cast<std::uint32_t>(facet[(skip + 1) % 3]);
+    const auto b = static_cast<std::uint32_t>(facet[(skip + 2) % 3]);
+    return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
+  }
+}
+
+template <int D>
+Ridge<D> ridge_of(std::uint64_t key) {
+  if constexpr (D == 2) {
+    return {static_cast<int>(key)};
+  } else {
+    return {static_cast<int>(key >> 32), static_cast<int>(key & 0xffffffffu)};
+  }
+}
+
+template <int D>
+std::vector<std::uint64_t> ridges_of(const std::vector<Facet<D>>& facets) {
+  std::vector<std::uint64_t> ridges;
   ridges.reserve(facets.size() * D);
   for (const auto& facet : facets) {
-    for (int skip = 0; skip < D; ++skip) {
-      Ridge<D> ridge;
-      for (int j = 0, k = 0; j < D; ++j) {
-        if (j != skip) ridge[k++] = facet[j];
-      }
-      std::sort(ridge.begin(), ridge.end());
-      ridges.push_back(ridge);
-    }
+    for (int skip = 0; skip < D; ++skip) ridges.push_back(ridge_key<D>(facet, skip));
   }
   std::sort(ridges.begin(), ridges.end());
   return ridges;
@@ -112,7 +128,7 @@ void measure_topology(std::size_t sample_count, const std::vector<Facet<D>>& fac
     std::size_t j = i;
     while (j < ridges.size() && ridges[j] == ridges[i]) ++j;
     ++distinct;
-    if (j - i == 1) boundary.push_back(ridges[i]);
+    if (j - i == 1) boundary.push_back(ridge_of<D>(ridges[i]));
     if (j - i > 2) ++stats.non_manifold_ridges;
     i = j;
   }
