@@ -20,7 +20,9 @@
 //   3. seeds              convex poles (cells incident to a box corner) and the seed labels
 //   4. propagation        the ordered labelling events of the pole separation
 //   5. insertion          the poles inserted: OUP (closed) or UP (bordered)
-//   6. sculpted_delaunay  DT(S ∪ OUP), made by inserting those poles into the first DT
+//   6. sculpted_delaunay  DT(S ∪ OUP), made by inserting those poles into the first DT; for a
+//                         closed surface without keep_triangulations the solid is read off the
+//                         first DT by circumball queries instead, and this stays empty
 //   6b. carving           (robust) the all-sample cells removed, in order, with the reason
 //   7. solid              the cells whose vertices are all samples
 //   8. surface            the triangles (3D) or edges (2D) of the reconstruction
@@ -248,7 +250,7 @@ struct Statistics {
   std::size_t kept_outer_cells = 0;  // robust: judged outer, kept so the surface stays manifold
   std::size_t inserted_poles = 0;    // m (closed) or l (bordered), without the box corners
   std::size_t delaunay_cells = 0;    // cells of DT(S ∪ BBV)
-  std::size_t sculpted_cells = 0;    // cells of DT(S ∪ OUP)
+  std::size_t sculpted_cells = 0;    // cells of DT(S ∪ OUP); 0 when it was not built
   std::size_t solid_cells = 0;
   std::size_t facets = 0;  // triangles (3D) or edges (2D) of the result
   // Of the result's ridges (edges of the surface in 3D, vertices of the curve in 2D):

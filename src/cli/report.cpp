@@ -38,7 +38,11 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   if (inserted) {
     row(run.kind == "closed" ? "inserted poles (m - 2^D)" : "inserted poles (l - 2^D)",
         stats.inserted_poles);
-    row("cells of DT(S+OUP)", stats.sculpted_cells);
+    if (stats.sculpted_cells > 0) {
+      row("cells of DT(S+OUP)", stats.sculpted_cells);
+    } else {
+      row("cells of DT(S+OUP)", "not built (queries)");
+    }
   } else {
     row("carved cells", stats.carved_cells);
     row("outer cells kept (manifold)", stats.kept_outer_cells);

@@ -12,6 +12,7 @@
 // The cells themselves are not changed here; manifold_carving.hpp removes them.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <sculpt/sculpt.hpp>
@@ -33,27 +34,56 @@ std::vector<Point<D>> outer_pole_centers(const Reconstruction<D>& result) {
   return centers;
 }
 
-// The label of the polar ball of least power distance from x among the poles of `samples`.
-template <int D, class Samples>
-Label power_cell_label(const Reconstruction<D>& result, const Point<D>& x, const Samples& samples) {
-  const auto& poles = result.poles;
-  double least = std::numeric_limits<double>::infinity();
-  Label label = Label::unlabelled;
-  for (int s : samples) {
-    for (int q : {poles.positive_pole[s], poles.negative_pole[s]}) {
-      if (q < 0 || result.propagation.labels[q] == Label::unlabelled) continue;
-      const Pole<D>& pole = poles.poles[q];
-      double d2 = 0;
-      for (int k = 0; k < D; ++k) d2 += (x[k] - pole.center[k]) * (x[k] - pole.center[k]);
-      const double power = d2 - pole.radius * pole.radius;
-      if (power < least) {
-        least = power;
-        label = result.propagation.labels[q];
+// The two polar balls of every sample, packed together (one cache line in 3D): the power carve
+// reads those of the four samples of every cell, and the poles themselves lie scattered.
+template <int D>
+class Polar_balls {
+ public:
+  explicit Polar_balls(const Reconstruction<D>& result)
+      : balls_(result.sample_count()), labels_(result.sample_count()) {
+    const auto& poles = result.poles;
+    for (std::size_t s = 0; s < balls_.size(); ++s) {
+      const int pair[2] = {poles.positive_pole[s], poles.negative_pole[s]};
+      for (int j = 0; j < 2; ++j) {
+        const int q = pair[j];
+        labels_[s][j] = q < 0 ? Label::unlabelled : result.propagation.labels[q];
+        if (q < 0) continue;
+        balls_[s].center[j] = poles.poles[q].center;
+        balls_[s].radius2[j] = poles.poles[q].radius * poles.poles[q].radius;
       }
     }
   }
-  return label;
-}
+
+  // The label of the polar ball of least power distance |x - c|² - r² from x among the balls of
+  // `samples` (p+ before p- of each, the first of equal powers).
+  template <class Samples>
+  Label power_cell_label(const Point<D>& x, const Samples& samples) const {
+    double least = std::numeric_limits<double>::infinity();
+    Label label = Label::unlabelled;
+    for (int s : samples) {
+      const Pair& pair = balls_[s];
+      for (int j = 0; j < 2; ++j) {
+        if (labels_[s][j] == Label::unlabelled) continue;
+        double d2 = 0;
+        for (int k = 0; k < D; ++k) d2 += (x[k] - pair.center[j][k]) * (x[k] - pair.center[j][k]);
+        const double power = d2 - pair.radius2[j];
+        if (power < least) {
+          least = power;
+          label = labels_[s][j];
+        }
+      }
+    }
+    return label;
+  }
+
+ private:
+  struct alignas(64) Pair {
+    std::array<Point<D>, 2> center{};
+    std::array<double, 2> radius2{};
+  };
+  std::vector<Pair> balls_;
+  std::vector<std::array<Label, 2>> labels_;
+};
 
 template <class Traits>
 Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
@@ -63,6 +93,7 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
   // Strictly inside, decided exactly: the poles on the sphere (those of neighbouring cells can
   // be) do not destroy it.
   const Circumball_query<Traits> outer_poles(triangulation, outer_pole_centers(result), false);
+  const Polar_balls<D> polar_balls(result);
   const int n = static_cast<int>(result.sample_count());
   Cell_judgement judgement;
   judgement.outer.assign(result.delaunay.cell_count, 0);
@@ -87,13 +118,13 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
     }
     if (!all_samples) continue;
     const Point<D> x = Traits::from_cgal(Traits::circumcenter(triangulation, cell));
-    const Point<D>& corner = result.sites[samples[0]];
+    const Point<D> corner = Traits::from_cgal(cell->vertex(0)->point());
     double r2 = 0;
     for (int k = 0; k < D; ++k) r2 += (x[k] - corner[k]) * (x[k] - corner[k]);
     judgement.radius2[cell->info()] = static_cast<float>(r2);
     if (outer_poles.holds_point(cell, x)) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_pole_inside);
-    } else if (power_cell_label<D>(result, x, samples) == Label::outer) {
+    } else if (polar_balls.power_cell_label(x, samples) == Label::outer) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_power_cell);
     }
   }

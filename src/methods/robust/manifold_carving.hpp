@@ -53,6 +53,7 @@ class Manifold_carving {
         judgement_(judgement),
         sample_count_(static_cast<int>(result.sample_count())),
         outside_(result.delaunay.cell_count, 0),
+        queued_(result.delaunay.cell_count, 0),
         solid_cells_at_(sample_count_, 0),
         outside_cells_at_(sample_count_, 0) {}
 
@@ -179,8 +180,11 @@ class Manifold_carving {
     result_.carving.events.push_back({cell->info(), reason});
   }
 
+  // A cell is queued at most once at a time: a removal next to a queued cell changes what its
+  // pending entry will find, so a second entry would only be popped and tried again.
   void push_if_outer(Cell_handle cell) {
-    if (!is_outside(cell) && judged_outer(cell)) {
+    if (!is_outside(cell) && judged_outer(cell) && !queued_[cell->info()]) {
+      queued_[cell->info()] = 1;
       queue_.push({judgement_.radius2[cell->info()], cell});
     }
   }
@@ -202,6 +206,7 @@ class Manifold_carving {
     while (!queue_.empty()) {
       const Cell_handle cell = queue_.top().cell;
       queue_.pop();
+      queued_[cell->info()] = 0;
       if (is_outside(cell) || !can_remove(cell)) continue;
       remove(cell, judged_reason(cell));
       for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
@@ -513,6 +518,7 @@ class Manifold_carving {
   const Cell_judgement& judgement_;
   int sample_count_;
   std::vector<std::uint8_t> outside_;
+  std::vector<std::uint8_t> queued_;   // per cell: an entry of it is in the queue
   std::vector<int> solid_cells_at_;    // per sample: incident cells still in the solid
   std::vector<int> outside_cells_at_;  // per sample: incident cells outside
   std::priority_queue<Entry> queue_;
