@@ -189,7 +189,8 @@ TEST(Cli, OnlyRenderingLoadsTheRenderer) {
   EXPECT_NE(reconstruct.err.find("libc.so"), std::string::npos) << "LD_DEBUG listed nothing";
   EXPECT_EQ(reconstruct.err.find("OSMesa"), std::string::npos);
   EXPECT_EQ(reconstruct.err.find("LLVM"), std::string::npos);
-  EXPECT_EQ(render.exit_code, 0) << render.err.substr(render.err.size() - 500);
+  EXPECT_EQ(render.exit_code, 0) << render.err.substr(
+      render.err.size() - std::min<std::size_t>(500, render.err.size()));
   EXPECT_NE(render.err.find("libsculpt_osmesa.so"), std::string::npos);
   EXPECT_NE(render.err.find("libOSMesa"), std::string::npos);
 }

@@ -43,8 +43,8 @@ void expect_queries_match_insertion(const std::vector<Point<D>>& samples) {
   EXPECT_EQ(queried.stats.euler_characteristic, inserted.stats.euler_characteristic);
 }
 
-// Integer points on the boundary of a cube (3D) or square (2D), slightly sheared so that no
-// two share a coordinate plane exactly, but still with many four-point (three-point) circles.
+// Integer points on the boundary of a cube (3D) or square (2D): many cospherical (cocircular)
+// and coplanar subsets.
 std::vector<Point<3>> cube_lattice(int side) {
   std::vector<Point<3>> points;
   for (int x = 0; x <= side; ++x)
@@ -64,8 +64,8 @@ std::vector<Point<2>> square_lattice(int side) {
   return points;
 }
 
-// Points of an integer sphere x² + y² + z² = 49 (and 2D circle x² + y² = 25²): every sample on
-// one sphere, so the first triangulation's cells are all cospherical inside.
+// Integer points on two nested spheres, x² + y² + z² = 49 and 50: many samples on each sphere,
+// so many cells of the first triangulation share their circumsphere.
 std::vector<Point<3>> lattice_sphere() {
   std::vector<Point<3>> points;
   for (int x = -7; x <= 7; ++x)

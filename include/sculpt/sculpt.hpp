@@ -21,8 +21,9 @@
 //   4. propagation        the ordered labelling events of the pole separation
 //   5. insertion          the poles inserted: OUP (closed) or UP (bordered)
 //   6. sculpted_delaunay  DT(S ∪ OUP), made by inserting those poles into the first DT; for a
-//                         closed surface without keep_triangulations the solid is read off the
-//                         first DT by circumball queries instead, and this stays empty
+//                         closed surface with the skin rule and without keep_triangulations,
+//                         the solid is read off the first DT by circumball queries instead, and
+//                         this stays empty
 //   6b. carving           (robust) the all-sample cells removed, in order, with the reason
 //   7. solid              the cells whose vertices are all samples
 //   8. surface            the triangles (3D) or edges (2D) of the reconstruction

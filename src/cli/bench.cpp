@@ -23,44 +23,6 @@
 namespace sculpt::cli {
 namespace {
 
-// Runs `work` in a child process and returns the JSON it produced, with the child's peak memory.
-template <class Work>
-nlohmann::json in_child_process(Work&& work) {
-  int channel[2];
-  if (pipe(channel) != 0) throw std::runtime_error("pipe failed");
-  const pid_t child = fork();
-  if (child < 0) throw std::runtime_error("fork failed");
-  if (child == 0) {
-    close(channel[0]);
-    std::string text;
-    try {
-      text = work().dump();
-    } catch (const std::exception& e) {
-      text = nlohmann::json{{"error", e.what()}}.dump();
-    }
-    const char* data = text.data();
-    for (std::size_t left = text.size(); left > 0;) {
-      const auto written = write(channel[1], data, left);
-      if (written <= 0) break;
-      data += written;
-      left -= static_cast<std::size_t>(written);
-    }
-    _exit(0);
-  }
-  close(channel[1]);
-  std::string text;
-  char buffer[65536];
-  for (ssize_t got; (got = read(channel[0], buffer, sizeof buffer)) > 0;) text.append(buffer, got);
-  close(channel[0]);
-  int status = 0;
-  rusage usage{};
-  wait4(child, &status, 0, &usage);
-  if (text.empty()) return {{"error", "the measuring process died"}};
-  auto result = nlohmann::json::parse(text);
-  result["process_peak_mib"] = static_cast<double>(usage.ru_maxrss) / 1024.0;
-  return result;
-}
-
 // Runs this executable as `sculpt bench-job ARGUMENTS...` and returns the JSON it prints, with
 // the process's CPU time (user + system), wall time and peak resident memory.
 nlohmann::json run_job_process(const std::vector<std::string>& arguments) {
@@ -73,7 +35,11 @@ nlohmann::json run_job_process(const std::vector<std::string>& arguments) {
   if (pipe(channel) != 0) throw std::runtime_error("pipe failed");
   const auto start = std::chrono::steady_clock::now();
   const pid_t child = fork();
-  if (child < 0) throw std::runtime_error("fork failed");
+  if (child < 0) {
+    close(channel[0]);
+    close(channel[1]);
+    throw std::runtime_error("fork failed");
+  }
   if (child == 0) {
     dup2(channel[1], STDOUT_FILENO);
     close(channel[0]);
@@ -131,9 +97,8 @@ nlohmann::json measure(const std::string& name, const std::vector<std::string>& 
   std::map<std::string, std::vector<nlohmann::json>> runs;
   for (int run = 0; run < std::max(1, args.runs); ++run) {
     for (auto [label, arguments] : jobs) {
-      if (label == "advancing-front" && !runs["delaunay"].empty() &&
-          runs["delaunay"].front().value("dimension", 3) != 3) {
-        continue;  // a surface method: no 2D
+      if (label == "advancing-front" && runs["delaunay"].front().value("dimension", 0) != 3) {
+        continue;  // a surface method: not for curves (nor for an input nothing could read)
       }
       arguments.insert(arguments.end(), source.begin(), source.end());
       runs[label].push_back(run_job_process(arguments));
@@ -288,45 +253,48 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
   return out;
 }
 
-// A torus surface of about `triangles` triangles (a closed torus has twice as many triangles as
-// samples), rendered headless at 1600x1200: building its scene, then two renders (the first
-// also makes the context and compiles the shaders).
-void bench_rendering(int triangles) {
+// The render job: a torus surface of about `triangles` triangles (a closed torus has twice as
+// many triangles as samples) drawn headless at 1600x1200: building its scene, then two renders
+// (the first also loads the module, makes the context and compiles the shaders).
+nlohmann::json render_job(int triangles) {
   const auto samples = shapes::torus(triangles / 2);
   Options options;
   options.keep_triangulations = false;
   const auto result = reconstruct(samples, options);
-  const auto measured = in_child_process([&] {
-    using Clock = std::chrono::steady_clock;
-    const auto seconds = [](Clock::time_point since) {
-      return std::chrono::duration<double>(Clock::now() - since).count();
-    };
-    auto start = Clock::now();
-    scene::Request request;
-    request.stage = scene::Stage::surface;
-    const auto scene = scene::build_scene(result, request);
-    const double build = seconds(start);
-    start = Clock::now();
-    render::Headless_renderer renderer;
-    const auto camera = render::fit(scene, 1600.0f / 1200.0f);
-    renderer.render(scene, camera, 1600, 1200);
-    const double first = seconds(start);
-    start = Clock::now();
-    renderer.render(scene, camera, 1600, 1200);
-    return nlohmann::json{{"scene", build},
-                          {"first", first},
-                          {"second", seconds(start)},
-                          {"renderer", renderer.gl_renderer()}};
-  });
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point since) {
+    return std::chrono::duration<double>(Clock::now() - since).count();
+  };
+  auto start = Clock::now();
+  scene::Request request;
+  request.stage = scene::Stage::surface;
+  const auto scene = scene::build_scene(result, request);
+  const double build = seconds(start);
+  start = Clock::now();
+  render::Headless_renderer renderer;
+  const auto camera = render::fit(scene, 1600.0f / 1200.0f);
+  renderer.render(scene, camera, 1600, 1200);
+  const double first = seconds(start);
+  start = Clock::now();
+  renderer.render(scene, camera, 1600, 1200);
+  return {{"triangles", result.surface.size()},
+          {"scene", build},
+          {"first", first},
+          {"second", seconds(start)},
+          {"renderer", renderer.gl_renderer()}};
+}
+
+void print_rendering(const nlohmann::json& measured) {
   if (measured.contains("error")) {
     std::cout << "rendering failed: " << measured["error"].get<std::string>() << '\n';
     return;
   }
   std::cout << fmt::format(
       "\nheadless render, {} triangles at 1600x1200 ({}): scene {:.2f} s, first render {:.2f} s "
-      "(context, shaders, upload, draw), next render {:.2f} s, peak {:.0f} MiB\n",
-      result.surface.size(), measured["renderer"].get<std::string>(), double(measured["scene"]),
-      double(measured["first"]), double(measured["second"]), double(measured["process_peak_mib"]));
+      "(module, context, shaders, upload, draw), next render {:.2f} s, peak {:.0f} MiB\n",
+      measured["triangles"].get<std::size_t>(), measured["renderer"].get<std::string>(),
+      double(measured["scene"]), double(measured["first"]), double(measured["second"]),
+      double(measured["process"]["peak_mib"]));
 }
 
 }  // namespace
@@ -334,6 +302,10 @@ void bench_rendering(int triangles) {
 int run_bench_job(const Bench_job& job) {
   nlohmann::json out;
   try {
+    if (job.job == "render") {
+      std::cout << render_job(job.torus_points).dump() << '\n';
+      return 0;
+    }
     frontend::Input input;
     if (job.torus_points > 0) {
       const auto start = std::chrono::steady_clock::now();
@@ -390,7 +362,10 @@ int run_bench(const Bench_arguments& args) {
                 {"--torus", std::to_string(args.torus_points)}, args));
   }
   print_rows(rows);
-  if (args.render_triangles > 0) bench_rendering(args.render_triangles);
+  if (args.render_triangles > 0) {
+    print_rendering(
+        run_job_process({"--job", "render", "--torus", std::to_string(args.render_triangles)}));
+  }
   if (!args.json.empty()) {
     io::Atomic_file file(args.json, false);
     file.stream() << nlohmann::json(rows).dump(2) << '\n';

@@ -26,7 +26,7 @@ int run_bench(const Bench_arguments& args);
 
 // One measurement, in the process `sculpt bench` starts: prints its JSON on standard output.
 struct Bench_job {
-  std::string job;  // "delaunay", "method" or "advancing-front"
+  std::string job;  // "delaunay", "method", "advancing-front" or "render" (a torus of N triangles)
   std::string method;
   std::string input, example;
   int torus_points = 0;

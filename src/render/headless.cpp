@@ -14,9 +14,7 @@ namespace {
 
 // The module beside the executable (build tree, or an installed bin/), in ../lib/sculpt (an
 // installed tree), or where the build put it (the tests run from their own folder).
-Make_offscreen_renderer load_module() {
-  static Make_offscreen_renderer make = nullptr;
-  if (make) return make;
+Make_offscreen_renderer find_module() {
   std::vector<std::filesystem::path> places;
   std::error_code error;
   const auto executable = std::filesystem::read_symlink("/proc/self/exe", error);
@@ -33,20 +31,30 @@ Make_offscreen_renderer load_module() {
       failures += std::string(" ") + dlerror();
       continue;
     }
-    make = reinterpret_cast<Make_offscreen_renderer>(dlsym(module, make_offscreen_renderer_symbol));
-    if (make) return make;
+    const auto make =
+        reinterpret_cast<Make_offscreen_renderer>(dlsym(module, make_offscreen_renderer_symbol));
+    if (make) return make;  // the module stays loaded for the life of the process
     failures += " " + place.string() + " has no " + make_offscreen_renderer_symbol;
+    dlclose(module);
   }
-  throw std::runtime_error(
-      std::string("cannot load the headless renderer ") + offscreen_module_name +
-      (failures.empty() ? " (not found beside the executable)" : ":" + failures));
+  std::string searched;
+  for (const auto& place : places) searched += " " + place.string();
+  throw std::runtime_error(std::string("cannot load the headless renderer ") +
+                           offscreen_module_name +
+                           (failures.empty() ? " (looked for" + searched + ")" : ":" + failures));
+}
+
+// Loaded once per process, whichever thread asks first.
+Make_offscreen_renderer load_module() {
+  static const Make_offscreen_renderer make = find_module();
+  return make;
 }
 
 }  // namespace
 
 Headless_renderer::Headless_renderer() {
   std::string error;
-  offscreen_.reset(load_module()(&error));
+  offscreen_.reset(load_module()(offscreen_interface_version, &error));
   if (!offscreen_) throw std::runtime_error(error);
 }
 

@@ -20,8 +20,11 @@ class Offscreen_renderer {
   virtual const char* gl_renderer() const = 0;
 };
 
-// The module's one entry point: a renderer, or null with the reason in `error`.
-using Make_offscreen_renderer = Offscreen_renderer* (*)(std::string* error);
+// The module's one entry point: a renderer, or null with the reason in `error`. Scenes, cameras
+// and images cross the boundary as C++ objects, and exceptions from render() too (both sides
+// share libstdc++): a module built from other sources refuses a caller of another version.
+inline constexpr int offscreen_interface_version = 1;
+using Make_offscreen_renderer = Offscreen_renderer* (*)(int interface_version, std::string* error);
 inline constexpr const char* make_offscreen_renderer_symbol = "sculpt_make_offscreen_renderer";
 inline constexpr const char* offscreen_module_name = "libsculpt_osmesa.so";
 

@@ -124,7 +124,11 @@ class Osmesa_offscreen : public Offscreen_renderer {
 }  // namespace sculpt::render
 
 extern "C" __attribute__((visibility("default"))) sculpt::render::Offscreen_renderer*
-sculpt_make_offscreen_renderer(std::string* error) {
+sculpt_make_offscreen_renderer(int interface_version, std::string* error) {
+  if (interface_version != sculpt::render::offscreen_interface_version) {
+    *error = "the headless renderer module was built from other sources than this program";
+    return nullptr;
+  }
   try {
     return new sculpt::render::Osmesa_offscreen();
   } catch (const std::exception& e) {

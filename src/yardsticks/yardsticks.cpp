@@ -25,26 +25,32 @@ double time_triangulation(const Points& points) {
   return triangulation.number_of_vertices() > 0 ? seconds : 0.0;
 }
 
-}  // namespace
-
-double delaunay_seconds(const std::vector<Point<2>>& points) {
+std::vector<Kernel::Point_2> to_cgal(const std::vector<Point<2>>& points) {
   std::vector<Kernel::Point_2> cgal_points;
   cgal_points.reserve(points.size());
   for (const auto& p : points) cgal_points.emplace_back(p[0], p[1]);
-  return time_triangulation<CGAL::Delaunay_triangulation_2<Kernel>>(cgal_points);
+  return cgal_points;
+}
+
+std::vector<Kernel::Point_3> to_cgal(const std::vector<Point<3>>& points) {
+  std::vector<Kernel::Point_3> cgal_points;
+  cgal_points.reserve(points.size());
+  for (const auto& p : points) cgal_points.emplace_back(p[0], p[1], p[2]);
+  return cgal_points;
+}
+
+}  // namespace
+
+double delaunay_seconds(const std::vector<Point<2>>& points) {
+  return time_triangulation<CGAL::Delaunay_triangulation_2<Kernel>>(to_cgal(points));
 }
 
 double delaunay_seconds(const std::vector<Point<3>>& points) {
-  std::vector<Kernel::Point_3> cgal_points;
-  cgal_points.reserve(points.size());
-  for (const auto& p : points) cgal_points.emplace_back(p[0], p[1], p[2]);
-  return time_triangulation<CGAL::Delaunay_triangulation_3<Kernel>>(cgal_points);
+  return time_triangulation<CGAL::Delaunay_triangulation_3<Kernel>>(to_cgal(points));
 }
 
 std::vector<Facet<3>> cgal_advancing_front(const std::vector<Point<3>>& points) {
-  std::vector<Kernel::Point_3> cgal_points;
-  cgal_points.reserve(points.size());
-  for (const auto& p : points) cgal_points.emplace_back(p[0], p[1], p[2]);
+  const auto cgal_points = to_cgal(points);
   std::vector<std::array<std::size_t, 3>> triangles;
   CGAL::advancing_front_surface_reconstruction(cgal_points.begin(), cgal_points.end(),
                                                std::back_inserter(triangles));

@@ -105,10 +105,15 @@ class Manifold_carving {
   }
 
  private:
+  // Largest circumball first; among equal ones (cospherical samples) the lowest cell index, so
+  // that the order does not depend on the queue's history.
   struct Entry {
     float radius2;
+    int index;
     Cell_handle cell;
-    bool operator<(const Entry& other) const { return radius2 < other.radius2; }
+    bool operator<(const Entry& other) const {
+      return radius2 < other.radius2 || (radius2 == other.radius2 && index > other.index);
+    }
   };
 
   bool is_sample(Vertex_handle v) const {
@@ -185,7 +190,7 @@ class Manifold_carving {
   void push_if_outer(Cell_handle cell) {
     if (!is_outside(cell) && judged_outer(cell) && !queued_[cell->info()]) {
       queued_[cell->info()] = 1;
-      queue_.push({judgement_.radius2[cell->info()], cell});
+      queue_.push({judgement_.radius2[cell->info()], cell->info(), cell});
     }
   }
 
