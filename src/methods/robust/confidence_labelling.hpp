@@ -59,58 +59,54 @@ Pole_evidence pole_evidence(const Reconstruction<D>& result) {
   const auto& stage = result.poles;
   const int n = static_cast<int>(stage.positive_pole.size());
   const int pole_count = static_cast<int>(stage.poles.size());
-  // Each piece of evidence once, as found; then both directions in compressed rows.
-  struct Found {
-    int p, q;
-    float weight;
-    bool opposite;
-  };
-  std::vector<Found> found;
-  found.reserve(static_cast<std::size_t>(pole_count) * 2 * (D + 1));
-  for (int p = 0; p < pole_count; ++p) {
-    for (int s : stage.poles[p].sites) {
-      if (s >= n) continue;  // a box corner
-      for (int q : {stage.positive_pole[s], stage.negative_pole[s]}) {
-        if (q < 0 || q == p) continue;
-        const auto& sample = result.sites[s];
-        double dot = 0, a2 = 0, b2 = 0;
-        for (int k = 0; k < D; ++k) {
-          const double a = stage.poles[p].center[k] - sample[k];
-          const double b = stage.poles[q].center[k] - sample[k];
-          dot += a * b;
-          a2 += a * a;
-          b2 += b * b;
-        }
-        if (a2 <= 0 || b2 <= 0) continue;
-        const double cosine = dot / std::sqrt(a2 * b2);
-        const int plus = stage.positive_pole[s], minus = stage.negative_pole[s];
-        const bool pair = (p == plus && q == minus) || (p == minus && q == plus);
-        if (pair && cosine <= antipodal_pair_cosine) {
-          found.push_back({p, q, float(-cosine), true});
-        } else if (!pair && cosine > 0) {
-          found.push_back({p, q, float(cosine), false});
+  // Each piece of evidence, found twice (cheap: a cosine): once to count the links of every
+  // pole, once to file them in compressed rows, both directions. Keeping the list between the
+  // two would cost more memory than the links themselves.
+  const auto for_each_evidence = [&](auto&& use) {
+    for (int p = 0; p < pole_count; ++p) {
+      for (int s : stage.poles[p].sites) {
+        if (s >= n) continue;  // a box corner
+        for (int q : {stage.positive_pole[s], stage.negative_pole[s]}) {
+          if (q < 0 || q == p) continue;
+          const auto& sample = result.sites[s];
+          double dot = 0, a2 = 0, b2 = 0;
+          for (int k = 0; k < D; ++k) {
+            const double a = stage.poles[p].center[k] - sample[k];
+            const double b = stage.poles[q].center[k] - sample[k];
+            dot += a * b;
+            a2 += a * a;
+            b2 += b * b;
+          }
+          if (a2 <= 0 || b2 <= 0) continue;
+          const double cosine = dot / std::sqrt(a2 * b2);
+          const int plus = stage.positive_pole[s], minus = stage.negative_pole[s];
+          const bool pair = (p == plus && q == minus) || (p == minus && q == plus);
+          if (pair && cosine <= antipodal_pair_cosine) {
+            use(p, q, float(-cosine), true);
+          } else if (!pair && cosine > 0) {
+            use(p, q, float(cosine), false);
+          }
         }
       }
     }
-  }
+  };
   Pole_evidence evidence;
   auto& offsets = evidence.offsets;
   offsets.assign(pole_count + 1, 0);
-  for (const Found& f : found) {
-    ++offsets[f.p + 1];
-    ++offsets[f.q + 1];
-  }
+  for_each_evidence([&](int p, int q, float, bool) {
+    ++offsets[p + 1];
+    ++offsets[q + 1];
+  });
   for (int p = 0; p < pole_count; ++p) offsets[p + 1] += offsets[p];
   using Link = Pole_evidence::Link;
   std::vector<Link> links(offsets.back());
   {
     std::vector<int> fill(offsets.begin(), offsets.end() - 1);
-    for (const Found& f : found) {
-      links[fill[f.p]++] = {f.q, f.weight, f.opposite};
-      links[fill[f.q]++] = {f.p, f.weight, f.opposite};
-    }
+    for_each_evidence([&](int p, int q, float weight, bool opposite) {
+      links[fill[p]++] = {q, weight, opposite};
+      links[fill[q]++] = {p, weight, opposite};
+    });
   }
-  found = {};
   // Per pole, one link per (neighbour, kind), with the strongest weight, in that order.
   const auto before = [](const Link& a, const Link& b) {
     if (a.pole != b.pole) return a.pole < b.pole;
