@@ -246,7 +246,9 @@ int main(int argc, char** argv) {
 
   Bench_arguments bench_args;
   auto* bench = app.add_subcommand(
-      "bench", "Time every stage and its peak memory next to CGAL's Delaunay of the same points");
+      "bench",
+      "Every method and CGAL's Advancing Front next to CGAL's Delaunay of the same points, each "
+      "run in a process of its own: whole-process CPU time and peak memory, and stage times");
   bench->add_option("inputs", bench_args.inputs, "Point files");
   bench->add_option("--example", bench_args.examples, "Built-in examples");
   bench->add_option("--torus", bench_args.torus_points, "Also N random points on a torus");
