@@ -35,7 +35,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   const Normalisation<Traits::dimension> normalisation =
       normalisation_of<Traits::dimension>(samples);
   // Checked even when nothing moves: a coordinate too small against the others is refused.
-  const std::vector<Point<Traits::dimension>> work =
+  std::vector<Point<Traits::dimension>> work =
       normalised<Traits::dimension>(samples, normalisation);
   result.stats.scale_exponent = normalisation.exponent;
   for (int k = 0; k < Traits::dimension; ++k) result.stats.translation[k] = normalisation.offset[k];
@@ -43,6 +43,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   typename Traits::Triangulation triangulation;
   clock.start("delaunay");
   build_delaunay<Traits>(work, options, triangulation, result, clock);
+  std::vector<Point<Traits::dimension>>().swap(work);  // the sites hold them now
   result.stats.delaunay_cells = result.delaunay.cell_count;
 
   clock.start("poles");

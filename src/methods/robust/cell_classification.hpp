@@ -97,16 +97,6 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
   const int n = static_cast<int>(result.sample_count());
   Cell_judgement judgement;
   judgement.outer.assign(result.delaunay.cell_count, 0);
-  judgement.radius2.assign(result.delaunay.cell_count, 0.0f);
-  // Per cell, the samples that have it as an outer pole.
-  judgement.outer_pole_of.assign(result.delaunay.cell_count, 0);
-  for (std::size_t s = 0; s < result.sample_count(); ++s) {
-    for (int q : {result.poles.positive_pole[s], result.poles.negative_pole[s]}) {
-      if (q < 0 || result.propagation.labels[q] != Label::outer) continue;
-      auto& count = judgement.outer_pole_of[result.poles.poles[q].cell];
-      if (count < UINT16_MAX) ++count;
-    }
-  }
   std::size_t done = 0;
   for (auto cell : Traits::finite_cells(triangulation)) {
     if (++done % 262144 == 0) clock.report(double(done) / double(result.delaunay.cell_count));
@@ -118,10 +108,6 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
     }
     if (!all_samples) continue;
     const Point<D> x = Traits::from_cgal(Traits::circumcenter(triangulation, cell));
-    const Point<D> corner = Traits::from_cgal(cell->vertex(0)->point());
-    double r2 = 0;
-    for (int k = 0; k < D; ++k) r2 += (x[k] - corner[k]) * (x[k] - corner[k]);
-    judgement.radius2[cell->info()] = static_cast<float>(r2);
     if (outer_poles.holds_point(cell, x)) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_pole_inside);
     } else if (polar_balls.power_cell_label(x, samples) == Label::outer) {

@@ -31,11 +31,11 @@
 
 namespace sculpt {
 
-// What cell_classification.hpp says of every finite cell of DT(S ∪ BBV), by cell index.
+// What cell_classification.hpp says of every finite cell of DT(S ∪ BBV), by cell index. One
+// byte a cell: whatever else the carving needs of a cell (its circumradius, the samples whose
+// outer pole it is) is computed when asked, for the few cells that are asked about.
 struct Cell_judgement {
-  std::vector<std::uint8_t> outer;           // 0: inner; else 1 + Carve_reason
-  std::vector<float> radius2;                // squared circumradius (all-sample cells)
-  std::vector<std::uint16_t> outer_pole_of;  // samples whose outer pole is this cell
+  std::vector<std::uint8_t> outer;  // 0: inner; else 1 + Carve_reason
 };
 
 template <class Traits>
@@ -120,6 +120,30 @@ class Manifold_carving {
     return !triangulation_.is_infinite(v) && v->info() < sample_count_;
   }
   bool judged_outer(Cell_handle cell) const { return judgement_.outer[cell->info()] != 0; }
+
+  // The squared circumradius, rounded to a float: the carving order.
+  float radius2(Cell_handle cell) const {
+    const Point<D> x = Traits::from_cgal(Traits::circumcenter(triangulation_, cell));
+    const Point<D> corner = Traits::from_cgal(cell->vertex(0)->point());
+    double r2 = 0;
+    for (int k = 0; k < D; ++k) r2 += (x[k] - corner[k]) * (x[k] - corner[k]);
+    return static_cast<float>(r2);
+  }
+
+  // How many samples have this cell as their outer pole: a sample's poles are cells around it,
+  // so only the cell's own vertices can.
+  int outer_pole_of(Cell_handle cell) const {
+    int count = 0;
+    for (int i = 0; i <= D; ++i) {
+      const int s = cell->vertex(i)->info();
+      if (s >= sample_count_) continue;
+      for (int q : {result_.poles.positive_pole[s], result_.poles.negative_pole[s]}) {
+        count += q >= 0 && result_.propagation.labels[q] == Label::outer &&
+                 static_cast<int>(result_.poles.poles[q].cell) == cell->info();
+      }
+    }
+    return count;
+  }
   Carve_reason judged_reason(Cell_handle cell) const {
     return static_cast<Carve_reason>(judgement_.outer[cell->info()] - 1);
   }
@@ -190,7 +214,7 @@ class Manifold_carving {
   void push_if_outer(Cell_handle cell) {
     if (!is_outside(cell) && judged_outer(cell) && !queued_[cell->info()]) {
       queued_[cell->info()] = 1;
-      queue_.push({judgement_.radius2[cell->info()], cell->info(), cell});
+      queue_.push({radius2(cell), cell->info(), cell});
     }
   }
 
@@ -326,7 +350,7 @@ class Manifold_carving {
       samples.clear();
       Cell_handle opening = start;
       for (Cell_handle cell : group) {
-        if (judgement_.outer_pole_of[cell->info()] > judgement_.outer_pole_of[opening->info()]) {
+        if (outer_pole_of(cell) > outer_pole_of(opening)) {
           opening = cell;
         }
         for (int i = 0; i <= D; ++i) samples.push_back(cell->vertex(i)->info());
@@ -424,26 +448,34 @@ class Manifold_carving {
         if (!is_outside(cell->neighbor(i))) neighbours.push_back(cell->neighbor(i));
       }
     }
-    if (stamp_.size() != outside_.size()) stamp_.assign(outside_.size(), 0);
+    if (reached_.size() != outside_.size()) reached_.assign(outside_.size(), 0);
+    const auto forget = [&] {  // the marks of the last search: only its cells carry them
+      for (Cell_handle cell : piece_) reached_[cell->info()] = 0;
+      piece_.clear();
+    };
     for (Cell_handle from : neighbours) {
-      const int mark = ++stamp_counter_;
+      forget();
       piece_.assign(1, from);
-      stamp_[from->info()] = mark;
+      reached_[from->info()] = 1;
       bool large = false;
       for (std::size_t next = 0; next < piece_.size() && !large; ++next) {
         large = piece_.size() >= small_piece;
         for (int i = 0; i <= D && !large; ++i) {
           const Cell_handle neighbour = piece_[next]->neighbor(i);
-          if (is_outside(neighbour) || stamp_[neighbour->info()] == mark) continue;
-          stamp_[neighbour->info()] = mark;
+          if (is_outside(neighbour) || reached_[neighbour->info()]) continue;
+          reached_[neighbour->info()] = 1;
           piece_.push_back(neighbour);
         }
       }
       if (large) continue;
       for (Cell_handle other : neighbours) {
-        if (stamp_[other->info()] != mark) return true;  // `from` is in a small piece alone
+        if (!reached_[other->info()]) {
+          forget();
+          return true;  // `from` is in a small piece alone
+        }
       }
     }
+    forget();
     return false;
   }
 
@@ -493,7 +525,7 @@ class Manifold_carving {
         float best_radius2 = -1;
         for (Cell_handle cell : star_) {
           if (triangulation_.is_infinite(cell) || is_outside(cell) || !can_remove(cell)) continue;
-          const float r2 = judgement_.radius2[cell->info()];
+          const float r2 = radius2(cell);
           if (r2 > best_radius2) {
             best = cell;
             best_radius2 = r2;
@@ -528,8 +560,7 @@ class Manifold_carving {
   std::vector<int> outside_cells_at_;  // per sample: incident cells outside
   std::priority_queue<Entry> queue_;
   std::vector<Cell_handle> star_, piece_;
-  std::vector<int> stamp_;  // per cell: the search that last reached it
-  int stamp_counter_ = 0;
+  std::vector<std::uint8_t> reached_;  // per cell: reached by the search under way (piece_)
   std::vector<std::array<int, 2>> link_;
   std::vector<std::pair<int, int>> link_ends_;
   std::vector<Cell_handle> outer_left_;  // judged outer and in the solid after the first carve
