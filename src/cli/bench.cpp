@@ -126,9 +126,11 @@ const std::initializer_list<const char*> own_stages = {
     "seeds", "propagation", "labelling", "insertion", "queries", "carving", "solid", "surface"};
 
 void print_rows(const std::vector<nlohmann::json>& rows) {
-  std::cout << "\nWhole process: CPU seconds and peak memory of a process that reads the input and "
-               "runs one job.\nx DT: against the process that reads the same input and builds "
-               "CGAL's Delaunay triangulation of it.\n";
+  std::cout
+      << "\nWhole process: CPU seconds and peak memory of a process that reads the input and "
+         "runs one job.\nx DT: against the process that reads the same input and builds "
+         "CGAL's Delaunay triangulation of it.\nThe stage columns (and DT core) are wall-clock "
+         "seconds inside the process.\n";
   std::cout << fmt::format("\n{:<20}{:>9}{:>17}{:>17}{:>8}{:>8}{:>8}{:>8}{:>8}{:>9}{:>7}{:>8}\n",
                            "input", "n", "method", "DT core / whole", "delaun.", "poles", "method",
                            "topol.", "read", "whole s", "x DT", "MiB xDT");
