@@ -2,11 +2,15 @@
 // once failed (tests/fuzz_regressions_test.cpp), so a regression fails in every build.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <sculpt/sculpt.hpp>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "io/point_reader.hpp"
 
@@ -42,7 +46,32 @@ inline std::string check_reader(std::string_view bytes, const std::string& forma
 // method, kind and whether the triangulations are kept; then each point is D signed bytes on a
 // coarse grid (duplicates, collinear, coplanar, cocircular and cospherical sets are common) or,
 // with the top bit of the first byte, D raw doubles (any bits: NaN, infinities, denormals).
-// A result or an Input_error, never a crash, undefined behaviour or another exception.
+// A result or an Input_error, never a crash, undefined behaviour or another exception. For the
+// paper method's closed surfaces, the solid and surface read off DT(S ∪ BBV) by circumball
+// queries (triangulations not kept) must be the insertion's (kept), cell for cell.
+template <int D>
+void expect_queries_match_insertion(const std::vector<Point<D>>& points, Options options,
+                                    const Reconstruction<D>& first) {
+  options.keep_triangulations = !options.keep_triangulations;
+  const Reconstruction<D> second = reconstruct(points, options);
+  const auto cells = [](std::vector<Cell<D>> c) {
+    for (auto& cell : c) std::sort(cell.begin(), cell.end());
+    std::sort(c.begin(), c.end());
+    return c;
+  };
+  const auto facets = [](std::vector<Facet<D>> f) {
+    for (auto& facet : f)
+      std::rotate(facet.begin(), std::min_element(facet.begin(), facet.end()), facet.end());
+    std::sort(f.begin(), f.end());
+    return f;
+  };
+  if (cells(first.solid) != cells(second.solid) ||
+      facets(first.surface) != facets(second.surface)) {
+    std::fprintf(stderr, "the paper's solid by queries differs from the solid by insertion\n");
+    std::abort();
+  }
+}
+
 template <int D>
 void reconstruct_points(const std::uint8_t* data, std::size_t size, const Options& options,
                         bool raw) {
@@ -62,6 +91,9 @@ void reconstruct_points(const std::uint8_t* data, std::size_t size, const Option
   try {
     const Reconstruction<D> result = reconstruct(points, options);
     (void)verdict(result.stats);
+    if (options.method == Method::paper && options.kind == Surface_kind::closed) {
+      expect_queries_match_insertion<D>(points, options, result);
+    }
   } catch (const Input_error&) {
     // refused with a message: the contract for input that cannot be reconstructed
   }
