@@ -15,7 +15,6 @@
 #include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
-#include "io/point_reader.hpp"
 #include "render/headless.hpp"
 #include "report.hpp"
 #include "shapes/shapes.hpp"
@@ -220,10 +219,7 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
       const auto facets = cgal_advancing_front(points);
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      Statistics stats = facet_topology(points.size(), facets);
-      stats.dimension = 3;
-      stats.samples = points.size();
-      stats.facets = facets.size();
+      const Statistics stats = facet_topology(points.size(), facets);
       Run_description run;
       run.input = input.description;
       out = report_json(stats, run);
@@ -243,8 +239,7 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
     Run_description run;
     run.input = input.description;
     run.kind = to_string(options.kind);
-    run.rule = inserts_poles(options.method, options.kind) ? to_string(resolved_rule(options))
-                                                           : "manifold carve";
+    run.rule = surface_rule_name(options);
     const auto result = reconstruct(points, options);
     out = report_json(result.stats, run);
     add_reproduced(result.surface);
@@ -344,12 +339,10 @@ int run_bench(const Bench_arguments& args) {
     }
     rows.push_back(std::move(row));
   };
-  std::vector<std::string> common;
-  if (args.merge_duplicates) common.push_back("--merge-duplicates");
   for (const auto& path : args.inputs) {
     std::vector<std::string> source = {"--input", path};
     if (args.bordered) source.push_back("--bordered");
-    source.insert(source.end(), common.begin(), common.end());
+    if (args.merge_duplicates) source.push_back("--merge-duplicates");
     add(measure(path.substr(path.find_last_of('/') + 1), source, args));
   }
   for (const auto& example : args.examples) {

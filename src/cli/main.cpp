@@ -109,9 +109,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 
   const Reconstruction<D> result = reconstruct(samples, options);
   clear_status();
-  // A carved surface comes from no surface rule.
-  run.rule = inserts_poles(options.method, options.kind) ? to_string(resolved_rule(options))
-                                                         : "manifold carve";
+  run.rule = surface_rule_name(options);
 
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();

@@ -58,6 +58,11 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   row("unused samples", stats.unused_samples);
 }
 
+std::string surface_rule_name(const Options& options) {
+  return inserts_poles(options.method, options.kind) ? to_string(resolved_rule(options))
+                                                     : "manifold carve";
+}
+
 nlohmann::json report_json(const Statistics& stats, const Run_description& run) {
   nlohmann::json stages = nlohmann::json::array();
   for (const auto& stage : stats.stages) {

@@ -18,6 +18,10 @@ struct Run_description {
   double write_seconds = 0;
 };
 
+// The rule that made the surface, for the report: a surface rule, or the robust method's carve
+// (a carved surface comes from no surface rule).
+std::string surface_rule_name(const Options& options);
+
 void print_report(std::ostream& out, const Statistics& stats, const Run_description& run);
 nlohmann::json report_json(const Statistics& stats, const Run_description& run);
 

@@ -24,6 +24,18 @@
 
 namespace sculpt {
 
+// The squared distance from a cell's circumcentre (as Traits::circumcenter gives it) to its
+// first vertex.
+template <class Traits>
+double squared_circumradius(typename Traits::Cell_handle cell,
+                            const Point<Traits::dimension>& center) {
+  const Point<Traits::dimension> corner = Traits::from_cgal(cell->vertex(0)->point());
+  double r2 = 0;
+  for (int k = 0; k < Traits::dimension; ++k)
+    r2 += (center[k] - corner[k]) * (center[k] - corner[k]);
+  return r2;
+}
+
 template <class Traits>
 class Circumball_query {
   static constexpr int D = Traits::dimension;
@@ -31,11 +43,12 @@ class Circumball_query {
   using Cell_handle = typename Traits::Cell_handle;
 
  public:
-  Circumball_query(const Triangulation& triangulation, const std::vector<Point<D>>& points,
+  // The points [first, last) are copied.
+  Circumball_query(const Triangulation& triangulation, const Point<D>* first, const Point<D>* last,
                    bool perturbed)
       : triangulation_(triangulation),
-        tree_(points),
-        empty_(points.empty()),
+        tree_(first, last),
+        empty_(first == last),
         perturbed_(perturbed) {}
 
   // Whether a point lies in the circumball of `cell`, whose circumcentre Traits::circumcenter
@@ -43,13 +56,9 @@ class Circumball_query {
   bool holds_point(Cell_handle cell, const Point<D>& center) const {
     if (empty_) return false;
     const Point<D> search_center = well_conditioned(cell) ? center : exact_center(cell);
-    const Point<D> corner = Traits::from_cgal(cell->vertex(0)->point());
-    double r2 = 0, size = 0;
-    for (int k = 0; k < D; ++k) {
-      r2 += (search_center[k] - corner[k]) * (search_center[k] - corner[k]);
-      size = std::max(size, std::abs(search_center[k]));
-    }
-    const double r = std::sqrt(r2);
+    double size = 0;
+    for (int k = 0; k < D; ++k) size = std::max(size, std::abs(search_center[k]));
+    const double r = std::sqrt(squared_circumradius<Traits>(cell, search_center));
     const double widened = r + 1e-6 * r + 1e-14 * size;
     return tree_.any_within(search_center, widened * widened, [&](const Point<D>& p) {
       return Traits::in_circumball(triangulation_, cell, Traits::to_cgal(p), perturbed_);

@@ -55,17 +55,19 @@ void number_cells(typename Traits::Triangulation& triangulation, bool keep_cells
   stage.cell_count = static_cast<std::size_t>(next);
 }
 
-// Inserts points into the triangulation, point k with site index first_site + k, in CGAL's
-// spatial order (a Hilbert sort of random batches), each located from the one inserted before:
-// what CGAL's own range insertion does, here in steps so that the stage's progress is known.
+// Inserts the sites from `first` on into the triangulation, each vertex knowing its site index,
+// in CGAL's spatial order (a Hilbert sort of random batches), each located from the one inserted
+// before: what CGAL's own range insertion does, here in steps so that the stage's progress is
+// known.
 template <class Traits>
 void insert_in_spatial_order(typename Traits::Triangulation& triangulation,
-                             const std::vector<Point<Traits::dimension>>& points, int first_site,
+                             const std::vector<Point<Traits::dimension>>& sites, std::size_t first,
                              const Stage_clock& clock) {
   std::vector<typename Traits::Cgal_point> cgal_points;
-  cgal_points.reserve(points.size());
-  for (const auto& p : points) cgal_points.push_back(Traits::to_cgal(p));
-  std::vector<std::size_t> order(points.size());
+  cgal_points.reserve(sites.size() - first);
+  for (std::size_t i = first; i < sites.size(); ++i)
+    cgal_points.push_back(Traits::to_cgal(sites[i]));
+  std::vector<std::size_t> order(cgal_points.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   CGAL::spatial_sort(order.begin(), order.end(),
                      typename Traits::Spatial_sort_traits(CGAL::make_property_map(cgal_points)));
@@ -73,18 +75,17 @@ void insert_in_spatial_order(typename Traits::Triangulation& triangulation,
   for (std::size_t k = 0; k < order.size(); ++k) {
     if (k % 16384 == 0) clock.report(double(k) / double(order.size()));
     hint = Traits::insert_near(triangulation, cgal_points[order[k]], hint);
-    hint->info() = first_site + static_cast<int>(order[k]);
+    hint->info() = static_cast<int>(first + order[k]);
   }
 }
 
 template <class Traits>
-void build_delaunay(const std::vector<Point<Traits::dimension>>& samples, const Options& options,
+void build_delaunay(std::vector<Point<Traits::dimension>> samples, const Options& options,
                     typename Traits::Triangulation& triangulation,
                     Reconstruction<Traits::dimension>& result, const Stage_clock& clock) {
-  result.sites = samples;
-  for (const auto& corner : box_corners<Traits::dimension>(samples, options.box_factor)) {
-    result.sites.push_back(corner);
-  }
+  const auto corners = box_corners<Traits::dimension>(samples, options.box_factor);
+  result.sites = std::move(samples);
+  result.sites.insert(result.sites.end(), corners.begin(), corners.end());
   insert_in_spatial_order<Traits>(triangulation, result.sites, 0, clock);
   number_cells<Traits>(triangulation, options.keep_triangulations, result.delaunay);
 }

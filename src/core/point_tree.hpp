@@ -16,12 +16,14 @@ namespace sculpt {
 template <int D>
 class Point_tree {
  public:
-  explicit Point_tree(const std::vector<Point<D>>& points) {
-    std::vector<int> order(points.size());
+  // The points [first, last), which are copied.
+  Point_tree(const Point<D>* first, const Point<D>* last) {
+    const int count = static_cast<int>(last - first);
+    std::vector<int> order(count);
     std::iota(order.begin(), order.end(), 0);
-    if (!points.empty()) build(points, order, 0, static_cast<int>(points.size()));
-    points_.reserve(points.size());
-    for (int i : order) points_.push_back(points[i]);
+    if (count > 0) build(first, order, 0, count);
+    points_.reserve(count);
+    for (int i : order) points_.push_back(first[i]);
   }
 
   // Whether some point p at squared distance below r2 from x has accept(p) true.
@@ -70,7 +72,7 @@ class Point_tree {
   };
 
   // Depth is at most log2(n / leaf_size) + 1 < 64: medians halve every range.
-  int build(const std::vector<Point<D>>& points, std::vector<int>& order, int begin, int end) {
+  int build(const Point<D>* points, std::vector<int>& order, int begin, int end) {
     const int id = static_cast<int>(nodes_.size());
     nodes_.push_back({});
     Node node;

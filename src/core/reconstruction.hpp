@@ -35,6 +35,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   const Normalisation<Traits::dimension> normalisation =
       normalisation_of<Traits::dimension>(samples);
   // Checked even when nothing moves: a coordinate too small against the others is refused.
+  // The sites start as these (build_delaunay takes them over).
   std::vector<Point<Traits::dimension>> work =
       normalised<Traits::dimension>(samples, normalisation);
   result.stats.scale_exponent = normalisation.exponent;
@@ -42,8 +43,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
 
   typename Traits::Triangulation triangulation;
   clock.start("delaunay");
-  build_delaunay<Traits>(work, options, triangulation, result, clock);
-  std::vector<Point<Traits::dimension>>().swap(work);  // the sites hold them now
+  build_delaunay<Traits>(std::move(work), options, triangulation, result, clock);
   result.stats.delaunay_cells = result.delaunay.cell_count;
 
   clock.start("poles");

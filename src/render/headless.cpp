@@ -1,7 +1,6 @@
 #include "headless.hpp"
 
 #include <dlfcn.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <stdexcept>

@@ -13,6 +13,7 @@
 #include <sculpt/sculpt.hpp>
 
 #include "../../core/label_statistics.hpp"
+#include "../../core/solid_and_skin.hpp"
 #include "../../core/stage_clock.hpp"
 #include "pole_insertion.hpp"
 #include "pole_separation.hpp"
@@ -35,17 +36,19 @@ void sculpt_with_poles(typename Traits::Triangulation& triangulation,
   if (!builds_sculpted_delaunay(result.options)) {
     clock.start("queries");
     choose_inserted_poles(result);
-    for (int pole : result.insertion.inserted_poles)
-      result.sites.push_back(result.poles.poles[pole].center);
-    result.stats.inserted_poles = result.insertion.inserted_poles.size();
     const auto solid = solid_cells_by_queries<Traits>(triangulation, result, clock);
-    solid_and_skin<Traits>(triangulation, solid, result, clock);
+    const auto in_solid = [&](typename Traits::Cell_handle cell) {
+      return solid[cell->info()] != 0;
+    };
+    clock.start("solid");
+    collect_solid<Traits>(triangulation, in_solid, result);
+    clock.start("surface");
+    collect_skin<Traits>(triangulation, in_solid, result);
     return;
   }
   clock.start("insertion");
   choose_inserted_poles(result);
   insert_poles<Traits>(triangulation, result, clock);
-  result.stats.inserted_poles = result.insertion.inserted_poles.size();
   result.stats.sculpted_cells = result.sculpted_delaunay.cell_count;
 
   clock.start("solid");

@@ -1,4 +1,5 @@
-// Stages 5 and 6: choose the poles that sculpt, and insert them into the first triangulation,
+// Stages 5 and 6: choose the poles that sculpt (they become the last sites, after the samples
+// and the box corners), and insert them into the first triangulation,
 // as the paper's implementation does (section 6), which turns DT(S ∪ BBV) into DT(S ∪ OUP).
 //   closed:   OUP = the outer poles that are not convex (the box corners are already there);
 //   bordered: UP  = every labelled pole that is not convex, on either side (section 4).
@@ -20,18 +21,20 @@ void choose_inserted_poles(Reconstruction<D>& result) {
     if (result.poles.poles[p].convex || labels[p] == Label::unlabelled) continue;
     if (bordered || labels[p] == Label::outer) inserted.push_back(p);
   }
+  for (int pole : inserted) result.sites.push_back(result.poles.poles[pole].center);
+  result.stats.inserted_poles = inserted.size();
+}
+
+// The sites of the chosen poles: the last of all sites.
+template <int D>
+std::size_t first_inserted_site(const Reconstruction<D>& result) {
+  return result.sites.size() - result.insertion.inserted_poles.size();
 }
 
 template <class Traits>
 void insert_poles(typename Traits::Triangulation& triangulation,
                   Reconstruction<Traits::dimension>& result, const Stage_clock& clock) {
-  std::vector<Point<Traits::dimension>> centers;
-  centers.reserve(result.insertion.inserted_poles.size());
-  for (int pole : result.insertion.inserted_poles)
-    centers.push_back(result.poles.poles[pole].center);
-  const int first_site = static_cast<int>(result.sites.size());
-  result.sites.insert(result.sites.end(), centers.begin(), centers.end());
-  insert_in_spatial_order<Traits>(triangulation, centers, first_site, clock);
+  insert_in_spatial_order<Traits>(triangulation, result.sites, first_inserted_site(result), clock);
   number_cells<Traits>(triangulation, result.options.keep_triangulations, result.sculpted_delaunay);
 }
 

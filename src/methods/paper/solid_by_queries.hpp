@@ -1,4 +1,5 @@
-// Stages 6-8 of the paper's method for a closed surface, without building DT(S ∪ OUP).
+// Stages 6-7 of the paper's method for a closed surface, without building DT(S ∪ OUP); the
+// surface (stage 8) is then the solid's skin (core/solid_and_skin.hpp).
 //
 // The sculpted solid is the all-sample cells of DT(S ∪ OUP) (section 3.2); they are exactly the
 // all-sample cells of DT(S ∪ BBV) whose circumballs hold no outer concave pole
@@ -17,6 +18,7 @@
 
 #include "../../core/circumball_query.hpp"
 #include "../../core/stage_clock.hpp"
+#include "pole_insertion.hpp"
 
 namespace sculpt {
 
@@ -26,11 +28,9 @@ std::vector<std::uint8_t> solid_cells_by_queries(
     const typename Traits::Triangulation& triangulation,
     const Reconstruction<Traits::dimension>& result, const Stage_clock& clock) {
   constexpr int D = Traits::dimension;
-  std::vector<Point<D>> inserted;
-  inserted.reserve(result.insertion.inserted_poles.size());
-  for (int pole : result.insertion.inserted_poles)
-    inserted.push_back(result.poles.poles[pole].center);
-  const Circumball_query<Traits> query(triangulation, inserted, true);
+  const Point<D>* sites = result.sites.data();
+  const Circumball_query<Traits> query(triangulation, sites + first_inserted_site(result),
+                                       sites + result.sites.size(), true);
 
   const int n = static_cast<int>(result.sample_count());
   std::vector<std::uint8_t> solid(result.delaunay.cell_count, 0);
@@ -44,36 +44,6 @@ std::vector<std::uint8_t> solid_cells_by_queries(
     solid[cell->info()] = !query.holds_point(cell, center);
   }
   return solid;
-}
-
-// The solid's cells and its skin, each facet facing away from the solid.
-template <class Traits>
-void solid_and_skin(const typename Traits::Triangulation& triangulation,
-                    const std::vector<std::uint8_t>& solid,
-                    Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
-  constexpr int D = Traits::dimension;
-  const auto in_solid = [&](typename Traits::Cell_handle cell) {
-    return !triangulation.is_infinite(cell) && solid[cell->info()];
-  };
-  clock.start("solid");
-  for (auto cell : Traits::finite_cells(triangulation)) {
-    if (!solid[cell->info()]) continue;
-    ++result.stats.solid_cells;
-    if (!result.options.keep_solid) continue;
-    Cell<D> sites;
-    for (int i = 0; i <= D; ++i) sites[i] = cell->vertex(i)->info();
-    result.solid.push_back(sites);
-  }
-  clock.start("surface");
-  for (auto cell : Traits::finite_cells(triangulation)) {
-    if (!solid[cell->info()]) continue;
-    for (int i = 0; i <= D; ++i) {
-      if (in_solid(cell->neighbor(i))) continue;
-      Facet<D> facet;
-      for (int j = 0; j < D; ++j) facet[j] = cell->vertex(Traits::facet_vertex[i][j])->info();
-      result.surface.push_back(facet);
-    }
-  }
 }
 
 }  // namespace sculpt

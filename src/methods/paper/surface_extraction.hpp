@@ -13,6 +13,8 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "../../core/solid_and_skin.hpp"
+
 namespace sculpt {
 
 template <class Traits>
@@ -48,17 +50,13 @@ template <class Traits>
 void sculpt_solid(const typename Traits::Triangulation& triangulation,
                   Reconstruction<Traits::dimension>& result) {
   const Apex_sides<Traits> sides(result);
-  for (auto cell : Traits::finite_cells(triangulation)) {
-    Cell<Traits::dimension> sites;
-    bool all_samples = true;
+  const auto all_samples = [&](typename Traits::Cell_handle cell) {
     for (int i = 0; i <= Traits::dimension; ++i) {
-      all_samples = all_samples && sides.is_sample(cell->vertex(i));
-      sites[i] = cell->vertex(i)->info();
+      if (!sides.is_sample(cell->vertex(i))) return false;
     }
-    if (!all_samples) continue;
-    ++result.stats.solid_cells;
-    if (result.options.keep_solid) result.solid.push_back(sites);
-  }
+    return true;
+  };
+  collect_solid<Traits>(triangulation, all_samples, result);
 }
 
 template <class Traits>

@@ -92,7 +92,9 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
   constexpr int D = Traits::dimension;
   // Strictly inside, decided exactly: the poles on the sphere (those of neighbouring cells can
   // be) do not destroy it.
-  const Circumball_query<Traits> outer_poles(triangulation, outer_pole_centers(result), false);
+  const std::vector<Point<D>> outer_centers = outer_pole_centers(result);
+  const Circumball_query<Traits> outer_poles(triangulation, outer_centers.data(),
+                                             outer_centers.data() + outer_centers.size(), false);
   const Polar_balls<D> polar_balls(result);
   const int n = static_cast<int>(result.sample_count());
   Cell_judgement judgement;

@@ -29,6 +29,9 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/circumball_query.hpp"
+#include "../../core/solid_and_skin.hpp"
+
 namespace sculpt {
 
 // What cell_classification.hpp says of every finite cell of DT(S ∪ BBV), by cell index. One
@@ -81,27 +84,14 @@ class Manifold_carving {
 
   // Stage 7: the cells left in the solid.
   void collect_solid() const {
-    for (auto cell : Traits::finite_cells(triangulation_)) {
-      if (is_outside(cell)) continue;
-      ++result_.stats.solid_cells;
-      if (!result_.options.keep_solid) continue;
-      Cell<D> sites;
-      for (int i = 0; i <= D; ++i) sites[i] = cell->vertex(i)->info();
-      result_.solid.push_back(sites);
-    }
+    sculpt::collect_solid<Traits>(
+        triangulation_, [&](Cell_handle cell) { return !is_outside(cell); }, result_);
   }
 
   // Stage 8: the facets between the solid and the outside, facing the outside.
   void collect_surface() const {
-    for (auto cell : Traits::finite_cells(triangulation_)) {
-      if (is_outside(cell)) continue;
-      for (int i = 0; i <= D; ++i) {
-        if (!is_outside(cell->neighbor(i))) continue;
-        Facet<D> facet;
-        for (int j = 0; j < D; ++j) facet[j] = cell->vertex(Traits::facet_vertex[i][j])->info();
-        result_.surface.push_back(facet);
-      }
-    }
+    sculpt::collect_skin<Traits>(
+        triangulation_, [&](Cell_handle cell) { return !is_outside(cell); }, result_);
   }
 
  private:
@@ -123,11 +113,8 @@ class Manifold_carving {
 
   // The squared circumradius, rounded to a float: the carving order.
   float radius2(Cell_handle cell) const {
-    const Point<D> x = Traits::from_cgal(Traits::circumcenter(triangulation_, cell));
-    const Point<D> corner = Traits::from_cgal(cell->vertex(0)->point());
-    double r2 = 0;
-    for (int k = 0; k < D; ++k) r2 += (x[k] - corner[k]) * (x[k] - corner[k]);
-    return static_cast<float>(r2);
+    return static_cast<float>(squared_circumradius<Traits>(
+        cell, Traits::from_cgal(Traits::circumcenter(triangulation_, cell))));
   }
 
   // How many samples have this cell as their outer pole: a sample's poles are cells around it,
