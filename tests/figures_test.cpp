@@ -1,7 +1,5 @@
 // `sculpt figures`: the list covers every figure of the paper, each image is written, shows
 // something, and every layer it was drawn with has content; the tables and gallery are there.
-#include "figures/figures.hpp"
-
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -10,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "figures/gallery.hpp"
 #include "file_support.hpp"
 #include "render/image.hpp"
 
@@ -23,6 +22,12 @@ TEST(Figures, TheListCoversEveryFigureOfThePaper) {
     EXPECT_FALSE(figure.images.empty()) << figure.id;
     EXPECT_EQ(figure.caption.rfind("Fig. ", 0), 0u) << figure.id;
     EXPECT_FALSE(figure.data.empty()) << figure.id;
+    EXPECT_NE(figure.sentence.find("Fig"), std::string::npos)
+        << figure.id << ": the paper's sentence names the figure";
+    for (const auto& image : figure.images) {
+      EXPECT_FALSE(image.what.empty()) << figure.id << image.suffix;
+      EXPECT_GT(image.why.size(), 20u) << figure.id << image.suffix << ": say what changed";
+    }
   }
   for (int n = 1; n <= 15; ++n) {
     const std::string id = (n < 10 ? "fig0" : "fig") + std::to_string(n);

@@ -13,31 +13,14 @@
 #include "render/image.hpp"
 #include "scene/scene.hpp"
 #include "shapes/shapes.hpp"
+#include "viewer_support.hpp"
 
 namespace sculpt {
 namespace {
 
-constexpr int panel_width = 360;  // the viewer's panel, on the left
-
-int run(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-// Runs the viewer on a script in a virtual X display; returns its exit code.
-int run_viewer_script(const std::string& name, const std::string& script) {
-  if (run("command -v xvfb-run >/dev/null") != 0) {
-    ADD_FAILURE() << "xvfb-run is missing: install xvfb and xauth (scripts/install-dependencies)";
-    return -1;
-  }
-  const std::string path = testing::write_file(name + ".script", script);
-  const std::string log = testing::output_path(name + ".log");
-  const int code =
-      run("xvfb-run -a -s '-screen 0 1280x1024x24' " + std::string(SCULPT_VIEW_EXECUTABLE) +
-          " --script " + path + " >" + log + " 2>&1");
-  if (code != 0) std::cerr << testing::read_file(log);
-  return code;
-}
+using testing::panel_width;
+using testing::run;
+using testing::run_viewer_script;
 
 std::size_t dark_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
   std::size_t count = 0;

@@ -8,7 +8,7 @@
 #include <iostream>
 
 #include "bench.hpp"
-#include "figures/figures.hpp"
+#include "figures/gallery.hpp"
 #include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"

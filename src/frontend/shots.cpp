@@ -105,8 +105,8 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   } catch (const std::invalid_argument& e) {
     throw io::Error(e.what());
   }
-  render::Camera camera = render::fit(scene, float(width) / float(height));
-  camera.zoom(shot.zoom);
+  render::Camera camera =
+      render::fit(scene, float(width) / float(height), shot.zoom, shot.yaw, shot.pitch);
   if (inline_camera) camera = camera_or_error(*inline_camera);
   if (!shot.camera_file.empty()) camera = camera_or_error(read_json(shot.camera_file));
   if (!shot.save_camera.empty()) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <stdexcept>
 
@@ -70,6 +71,27 @@ Camera fit(const scene::Scene& scene, float aspect) {
     camera.distance = 1.05f * radius / std::sin(half_angle);
   }
   return camera;
+}
+
+Camera fit(const scene::Scene& scene, float aspect, float zoom, float yaw, float pitch) {
+  Camera camera = fit(scene, aspect);
+  camera.yaw = yaw;
+  camera.pitch = pitch;
+  camera.zoom(zoom);
+  return camera;
+}
+
+Camera interpolate(const Camera& a, const Camera& b, float t) {
+  const auto geometric = [t](float x, float y) { return x * std::pow(y / x, t); };
+  Camera c = b;
+  c.center = glm::mix(a.center, b.center, t);
+  c.half_height = geometric(a.half_height, b.half_height);
+  c.target = glm::mix(a.target, b.target, t);
+  c.distance = geometric(a.distance, b.distance);
+  const float turn = std::remainder(b.yaw - a.yaw, 2.0f * glm::pi<float>());
+  c.yaw = a.yaw + t * turn;
+  c.pitch = glm::mix(a.pitch, b.pitch, t);
+  return c;
 }
 
 nlohmann::json to_json(const Camera& c) {

@@ -33,6 +33,12 @@ struct Camera {
 
 // A camera that shows the whole of the scene's bounds with a small margin.
 Camera fit(const scene::Scene& scene, float aspect = 1.0f);
+// The same, looking from (yaw, pitch) in 3D and zoomed by `zoom` (< 1 zooms in): a shot's camera.
+Camera fit(const scene::Scene& scene, float aspect, float zoom, float yaw, float pitch);
+
+// The camera a fraction t in [0, 1] of the way from a to b (same dimension): centres and targets
+// move linearly, scale and distance geometrically, the orbit along the shorter way round.
+Camera interpolate(const Camera& a, const Camera& b, float t);
 
 nlohmann::json to_json(const Camera& camera);
 Camera camera_from_json(const nlohmann::json& json);  // throws std::invalid_argument

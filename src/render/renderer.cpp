@@ -132,7 +132,7 @@ void Renderer::set_scene(const scene::Scene& scene) {
 }
 
 void Renderer::draw(const Camera& camera, int width, int height, const Draw_options& options) {
-  glViewport(options.viewport_x, 0, width, height);
+  glViewport(options.viewport_x, options.viewport_y, width, height);
   const auto& bg = options.background;
   glClearColor(bg.r, bg.g, bg.b, bg.a);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

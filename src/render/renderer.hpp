@@ -19,6 +19,7 @@ struct Draw_options {
   scene::Color background{1, 1, 1, 1};
   std::vector<std::string> hidden_layers;  // layer ids not to draw (nor list in the legend)
   int viewport_x = 0;  // left edge of the drawing area in the framebuffer (the viewer's panel)
+  int viewport_y = 0;  // its bottom edge (the viewer's figure caption below the picture)
 };
 
 // Reads the bound framebuffer's colour into an image (rows from the top).

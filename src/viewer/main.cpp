@@ -13,6 +13,7 @@
 #include <iostream>
 #include <optional>
 
+#include "figures/paper_figures.hpp"
 #include "frontend/command_line.hpp"
 #include "io/atomic_file.hpp"
 #include "render/image.hpp"
@@ -47,6 +48,18 @@ int main(int argc, char** argv) {
   app.add_option("--method", method, "Reconstruction method: robust or paper")
       ->capture_default_str()
       ->check(CLI::IsMember(sculpt::method_names()));
+  std::string figure, panel;
+  bool no_animation = false;
+  app.add_option("--figure", figure,
+                 "Open a figure of the paper (fig01 ... fig15) and tour it panel by panel")
+      ->check([](const std::string& id) {
+        return sculpt::figures::find_figure(id) ? std::string()
+                                                : "no figure '" + id + "' (fig01 ... fig15)";
+      });
+  app.add_option("--panel", panel, "With --figure: start at this panel (a, b, ... or 1, 2, ...)")
+      ->needs("--figure");
+  app.add_flag("--no-animation", no_animation,
+               "Jump to tour panels instead of moving the stage and camera there");
   app.add_option("--script", script_path, "Run the commands of a script file, then quit");
   app.add_option("--frames", frames, "Draw this many frames, then quit");
   app.add_option("--screenshot", screenshot,
@@ -106,7 +119,14 @@ int main(int argc, char** argv) {
     sculpt::Method chosen = sculpt::Options{}.method;
     sculpt::parse_method(method, chosen);
     viewer.set_method(chosen);
-    if (!file.empty()) {
+    viewer.set_animation(!no_animation);
+    if (!figure.empty()) {
+      viewer.open_figure(figure);
+      if (!panel.empty() && !viewer.go_to_panel(panel)) {
+        std::cerr << "sculpt-view: " << viewer.message() << '\n';
+        return 2;
+      }
+    } else if (!file.empty()) {
       viewer.set_bordered(bordered);
       viewer.open_file(file);
     } else {

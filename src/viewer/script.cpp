@@ -1,11 +1,37 @@
 #include "script.hpp"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 
 namespace sculpt::viewer {
+namespace {
+
+// The keys a script can press, by the names the viewer's help uses.
+int key_code(const std::string& name) {
+  static const std::map<std::string, int> keys = {{"pagedown", GLFW_KEY_PAGE_DOWN},
+                                                  {"pageup", GLFW_KEY_PAGE_UP},
+                                                  {"]", GLFW_KEY_RIGHT_BRACKET},
+                                                  {"[", GLFW_KEY_LEFT_BRACKET},
+                                                  {"t", GLFW_KEY_T},
+                                                  {"escape", GLFW_KEY_ESCAPE},
+                                                  {"right", GLFW_KEY_RIGHT},
+                                                  {"left", GLFW_KEY_LEFT},
+                                                  {"space", GLFW_KEY_SPACE},
+                                                  {".", GLFW_KEY_PERIOD},
+                                                  {",", GLFW_KEY_COMMA},
+                                                  {"r", GLFW_KEY_R},
+                                                  {"h", GLFW_KEY_H}};
+  const auto found = keys.find(name);
+  return found == keys.end() ? -1 : found->second;
+}
+
+}  // namespace
 
 Script Script::from_file(const std::string& path) {
   std::ifstream in(path);
@@ -67,6 +93,26 @@ std::string Script::before_frame(Viewer& viewer) {
       viewer.pick_sample(std::stoi(argument));
     } else if (command == "pick-pole") {
       viewer.pick_pole(std::stoi(argument));
+    } else if (command == "figure") {
+      failed_ = !viewer.open_figure(argument) || failed_;
+    } else if (command == "panel") {
+      failed_ = !viewer.go_to_panel(argument) || failed_;
+    } else if (command == "expect-panel") {
+      if (viewer.panel_on_screen() != argument) {
+        std::cerr << "sculpt-view: script: expected panel " << argument << " on screen, not '"
+                  << viewer.panel_on_screen() << "' (" << viewer.message() << ")\n";
+        failed_ = true;
+      }
+    } else if (command == "key") {
+      const int key = key_code(argument);
+      if (key < 0) {
+        std::cerr << "sculpt-view: script: no key '" << argument << "'\n";
+        failed_ = true;
+      } else {
+        viewer.press_key(key);
+      }
+    } else if (command == "animation") {
+      viewer.set_animation(argument != "off");
     } else if (command == "frames") {
       frames_to_wait_ = std::max(0, std::stoi(argument) - 1);
       return "";

@@ -1,7 +1,8 @@
 // Scripted runs of the viewer, for tests and demonstrations: one command a line, run in order
 // between frames, e.g.
 //   example star        open a built-in example (open PATH for a file; bordered on|off before)
-//   wait                until the reconstruction has finished (and fail if it failed)
+//   wait                until the reconstruction has finished and any move to a tour panel
+//                       has ended (fail if the reconstruction failed)
 //   wait-idle           until no reconstruction runs, whatever its outcome
 //   cancel              ask the running reconstruction to stop
 //   expect-busy         fail unless a reconstruction is running (the UI is not blocked)
@@ -11,6 +12,11 @@
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included
 //   export b.png 800x600  save a picture through the headless renderer
+//   figure fig06        open a figure of the paper at its first panel
+//   panel next          the tour: next, previous, 3 (1-based) or c
+//   expect-panel fig06c fail unless that panel is on screen as the figure shows it
+//   key pagedown        press a key (pagedown, pageup, ], [, t, escape, right, left, space, ...)
+//   animation off       jump to tour panels instead of moving there
 //   quit
 #pragma once
 

@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frontend/pseudo_code.hpp"
+#include "frontend/shot.hpp"
 #include "io/atomic_file.hpp"
 #include "picking.hpp"
 #include "shapes/shapes.hpp"
@@ -24,6 +25,10 @@ namespace sculpt::viewer {
 namespace {
 
 constexpr float panel_width = 360.0f;
+constexpr double stage_dwell_seconds = 0.25;      // each stage walked through on the way to a panel
+constexpr float camera_move_seconds = 0.7f;       // the camera's flight to a panel's
+constexpr double propagation_play_seconds = 1.5;  // playing the labelling up to a panel's step
+constexpr std::size_t recent_reconstructions = 4;
 
 const char* rule_names[] = {"auto", "skin", "extraction"};
 // The methods in the order of method_names() (the default first).
@@ -41,6 +46,33 @@ int view_width(int window_width) {
   return std::max(1, window_width - int(panel_width));
 }
 
+// What makes two reconstructions the same: their input and options.
+std::string request_key(const Job_request& r) {
+  return r.path + "|" + r.example + "|" + std::to_string(r.dimension) + "|" +
+         to_string(r.options.method) + "|" + to_string(r.options.kind) + "|" +
+         std::to_string(r.options.box_factor) + "|" + to_string(r.options.rule);
+}
+
+int rule_index(const std::string& name) {
+  for (int i = 0; i < 3; ++i) {
+    if (name == rule_names[i]) return i;
+  }
+  return 0;
+}
+
+// A stage as it shows by default: no selection, every layer.
+scene::Request default_view(scene::Stage stage) {
+  scene::Request request;
+  request.stage = stage;
+  return request;
+}
+
+// Eases in and out, so the camera does not jerk at either end of its flight.
+float smoothstep(float t) {
+  t = std::clamp(t, 0.0f, 1.0f);
+  return t * t * (3 - 2 * t);
+}
+
 }  // namespace
 
 Viewer::Viewer() : renderer_(std::make_unique<render::Renderer>()) {}
@@ -49,6 +81,7 @@ Viewer::Viewer() : renderer_(std::make_unique<render::Renderer>()) {}
 // Reconstructions
 
 void Viewer::open_example(const std::string& name) {
+  close_tour();
   Job_request request;
   request.example = name;
   if (const auto* example = shapes::find_example(name)) bordered_ = example->bordered;
@@ -56,6 +89,7 @@ void Viewer::open_example(const std::string& name) {
 }
 
 void Viewer::open_file(const std::string& path) {
+  close_tour();
   Job_request request;
   request.path = path;
   std::snprintf(path_field_, sizeof path_field_, "%s", path.c_str());
@@ -63,16 +97,22 @@ void Viewer::open_file(const std::string& path) {
 }
 
 void Viewer::rerun() {
+  explore();
   start_job(last_request_);
 }
 
-void Viewer::start_job(Job_request request) {
+Job_request Viewer::with_options(Job_request request) const {
   request.options.method = method_at(method_);
   request.options.kind = bordered_ ? Surface_kind::bordered : Surface_kind::closed;
   request.options.box_factor = box_factor_;
   request.options.rule = rule_ == 1   ? Surface_rule::skin
                          : rule_ == 2 ? Surface_rule::extraction
                                       : Surface_rule::automatic;
+  return request;
+}
+
+void Viewer::start_job(Job_request request) {
+  request = with_options(std::move(request));
   last_request_ = request;
   message_ =
       "reconstructing " + (request.example.empty() ? request.path : "example " + request.example);
@@ -84,15 +124,26 @@ void Viewer::take_finished_job() {
   if (!outcome) return;
   if (!outcome->error.empty()) {
     message_ = outcome->error == "cancelled" ? "cancelled" : "error: " + outcome->error;
+    panel_pending_ = false;
     return;
   }
+  auto reconstruction =
+      std::make_shared<const Any_reconstruction>(std::move(*outcome->reconstruction));
+  recent_.push_front({request_key(last_request_), reconstruction, outcome->description});
+  if (recent_.size() > recent_reconstructions) recent_.pop_back();
+  show(std::move(reconstruction), outcome->description);
+  if (panel_pending_) move_to_panel_view();
+}
+
+void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
+                  std::string description) {
   const bool same_dimension =
-      reconstruction_ && reconstruction_->index() == outcome->reconstruction->index();
-  reconstruction_ = std::move(outcome->reconstruction);
-  description_ = outcome->description;
+      reconstruction_ && reconstruction_->index() == reconstruction->index();
+  reconstruction_ = std::move(reconstruction);
+  description_ = std::move(description);
+  shown_request_ = last_request_;
   message_ = "showing " + description_;
-  request_.focus_sample = request_.focus_pole = -1;
-  request_.step = -1;
+  request_ = default_view(request_.stage);
   playing_ = false;
   if (!same_dimension) camera_fitted_ = false;
   scene_dirty_ = true;
@@ -102,6 +153,7 @@ void Viewer::take_finished_job() {
 // What is shown
 
 void Viewer::set_stage(scene::Stage stage) {
+  explore();
   request_.stage = stage;
   scene_dirty_ = true;
 }
@@ -115,17 +167,20 @@ void Viewer::step_stage(int delta) {
 }
 
 void Viewer::set_step(long events) {
+  explore();
   request_.step = events < 0 ? -1 : std::min(events, event_count());
   scene_dirty_ = true;
 }
 
 void Viewer::pick_sample(int sample) {
+  explore();
   request_.focus_sample = sample;
   request_.focus_pole = -1;
   scene_dirty_ = true;
 }
 
 void Viewer::pick_pole(int pole) {
+  explore();
   request_.focus_pole = pole;
   request_.focus_sample = -1;
   scene_dirty_ = true;
@@ -133,6 +188,196 @@ void Viewer::pick_pole(int pole) {
 
 void Viewer::reset_camera() {
   camera_fitted_ = false;
+  camera_move_.reset();
+  // On a tour panel, the panel's own camera.
+  panel_camera_pending_ = tour_.active() && !tour_.exploring();
+}
+
+// ---------------------------------------------------------------------------------------------
+// The tour of the paper's figures
+
+bool Viewer::open_figure(const std::string& id, std::size_t panel) {
+  const figures::Figure* figure = figures::find_figure(id);
+  if (!figure || !tour_.open(*figure, panel)) {
+    message_ = "no figure '" + id + "'" + (figure ? " panel " + std::to_string(panel + 1) : "") +
+               " (figures are fig01 ... fig15)";
+    return false;
+  }
+  show_tour_panel();
+  return true;
+}
+
+bool Viewer::go_to_panel(const std::string& panel) {
+  if (!tour_.go_to(panel)) {
+    message_ = tour_.active() ? "no panel '" + panel + "' in " + tour_.figure().id
+                              : "no figure is open (Paper menu)";
+    return false;
+  }
+  show_tour_panel();
+  return true;
+}
+
+bool Viewer::next_figure() {
+  if (!tour_.next_figure()) return false;
+  show_tour_panel();
+  return true;
+}
+
+bool Viewer::previous_figure() {
+  if (!tour_.previous_figure()) return false;
+  show_tour_panel();
+  return true;
+}
+
+void Viewer::return_to_panel() {
+  if (!tour_.active()) return;
+  tour_.return_to_panel();
+  show_tour_panel();
+}
+
+void Viewer::close_tour() {
+  tour_.close();
+  panel_pending_ = panel_camera_pending_ = camera_is_panel_camera_ = false;
+  stage_walk_.clear();
+  play_until_ = -1;
+  camera_move_.reset();
+}
+
+std::string Viewer::panel_on_screen() const {
+  if (!tour_.active() || tour_.exploring() || moving_to_panel() || !reconstruction_) return "";
+  return tour_.panel_id();
+}
+
+// The panel's reconstruction: the one shown, a recent one, or a new job.
+void Viewer::show_tour_panel() {
+  frontend::Shot shot;
+  try {
+    shot = cgal_meshes_.resolve(tour_.image().shot);
+  } catch (const std::exception& e) {
+    message_ = std::string("error: ") + e.what();
+    close_tour();
+    return;
+  }
+  // The panel's options become the viewer's, so the options panel and a rerun show them.
+  Method method = Options{}.method;
+  parse_method(shot.method, method);
+  set_method(method);
+  bordered_ = shot.bordered;
+  box_factor_ = static_cast<float>(shot.box_factor);
+  rule_ = rule_index(shot.rule);
+  Job_request request;
+  request.path = shot.input;
+  request.example = shot.example;
+  request.dimension = shot.dimension;
+  stage_walk_.clear();
+  play_until_ = -1;
+  const std::string key = request_key(with_options(request));
+  walk_stages_ = animate_ && reconstruction_ && key == request_key(shown_request_);
+  if (reconstruction_ && key == request_key(shown_request_)) {
+    move_to_panel_view();
+    return;
+  }
+  for (const Recent& recent : recent_) {
+    if (recent.key != key) continue;
+    last_request_ = with_options(request);
+    const auto reconstruction = recent.reconstruction;  // `recent` may not outlive show()
+    show(reconstruction, recent.description);
+    move_to_panel_view();
+    return;
+  }
+  panel_pending_ = true;
+  start_job(request);
+}
+
+// The stage, step, focus, layers and camera of the panel: at once, or walking through the
+// stages between the one shown and the panel's while the camera flies to the panel's.
+void Viewer::move_to_panel_view() {
+  panel_pending_ = false;
+  camera_move_.reset();
+  const frontend::Shot& shot = tour_.image().shot;
+  scene::Stage target = scene::Stage::surface;
+  scene::parse_stage(shot.stage, target);
+  const auto& stages = scene::all_stages();
+  const auto at = [&](scene::Stage stage) {
+    return std::find(stages.begin(), stages.end(), stage) - stages.begin();
+  };
+  stage_walk_.clear();
+  if (walk_stages_) {
+    const auto from = at(request_.stage), to = at(target);
+    for (auto i = from; i != to;) {
+      i += to > from ? 1 : -1;
+      stage_walk_.push_back(stages[i]);
+    }
+    // On the way, each stage as it shows by default.
+    request_ = default_view(request_.stage);
+  }
+  walk_clock_ = 0;
+  if (stage_walk_.empty()) arrive_at_panel();
+  hidden_layers_.clear();
+  panel_camera_pending_ = true;
+  scene_dirty_ = true;
+  message_ = "showing " + tour_.panel_name() + ": " + tour_.image().what;
+}
+
+void Viewer::arrive_at_panel() {
+  const frontend::Shot& shot = tour_.image().shot;
+  scene::Request request;
+  scene::parse_stage(shot.stage, request.stage);
+  request.step = shot.step;
+  request.focus_sample = shot.focus_sample;
+  request.focus_pole = shot.focus_pole;
+  request.wireframe = shot.wireframe;
+  request.smooth = shot.smooth;
+  request.ball_every = shot.ball_every;
+  request.layers = shot.layers;
+  request_ = request;
+  // A panel in the middle of the labelling: play it up to there.
+  if (walk_stages_ && request.stage == scene::Stage::propagation && shot.step > 0) {
+    play_until_ = std::min(shot.step, event_count());
+    play_clock_ = 0;
+    request_.step = 0;
+  }
+  scene_dirty_ = true;
+}
+
+void Viewer::advance_move_to_panel(double seconds) {
+  if (!stage_walk_.empty()) {
+    walk_clock_ += seconds;
+    if (walk_clock_ >= stage_dwell_seconds) {
+      walk_clock_ = 0;
+      const scene::Stage next = stage_walk_.front();
+      stage_walk_.pop_front();
+      if (stage_walk_.empty()) {
+        arrive_at_panel();
+      } else {
+        request_.stage = next;
+        scene_dirty_ = true;
+      }
+    }
+  } else if (play_until_ >= 0) {
+    play_clock_ += seconds * std::max(20.0, double(play_until_) / propagation_play_seconds);
+    request_.step = std::min(play_until_, long(play_clock_));
+    if (request_.step >= play_until_) play_until_ = -1;
+    scene_dirty_ = true;
+  }
+  if (camera_move_) {
+    camera_move_->t = std::min(1.0f, camera_move_->t + float(seconds) / camera_move_seconds);
+    camera_ =
+        render::interpolate(camera_move_->from, camera_move_->to, smoothstep(camera_move_->t));
+    if (camera_move_->t >= 1.0f) camera_move_.reset();
+  }
+}
+
+void Viewer::explore() {
+  if (!tour_.active() || tour_.exploring()) return;
+  tour_.explore();
+  stage_walk_.clear();
+  play_until_ = -1;
+  camera_move_.reset();
+  // Every layer of every stage, and all polar balls, are the student's to show or hide again.
+  request_.layers.clear();
+  request_.ball_every = 1;
+  scene_dirty_ = true;
 }
 
 long Viewer::event_count() const {
@@ -158,9 +403,23 @@ void Viewer::rebuild_scene() {
     scene::Scene scene = std::visit([&](const auto& r) { return scene::build_scene(r, request_); },
                                     *reconstruction_);
     renderer_->set_scene(scene);
-    if (!camera_fitted_) {
-      camera_ = render::fit(
-          scene, frame_height_ > 0 ? float(view_width(frame_width_)) / frame_height_ : 1.0f);
+    const float aspect = frame_height_ > 0
+                             ? float(view_width(frame_width_)) / float(view_height(frame_height_))
+                             : 1.0f;
+    if (panel_camera_pending_) {
+      // The panel's camera, as the gallery frames it (fitted to the samples, which every stage
+      // shares), flown to when the reconstruction stays the same.
+      const frontend::Shot& shot = tour_.image().shot;
+      const render::Camera target = render::fit(scene, aspect, shot.zoom, shot.yaw, shot.pitch);
+      if (walk_stages_ && camera_fitted_ && camera_.dimension == target.dimension) {
+        camera_move_ = Camera_move{camera_, target, 0.0f};
+      } else {
+        camera_ = target;
+      }
+      panel_camera_pending_ = false;
+      camera_is_panel_camera_ = camera_fitted_ = true;
+    } else if (!camera_fitted_) {
+      camera_ = render::fit(scene, aspect);
       camera_fitted_ = true;
     }
   } catch (const std::exception& e) {
@@ -176,24 +435,31 @@ void Viewer::frame(int width, int height, double seconds) {
   frame_height_ = height;
   take_finished_job();
   advance_playback(seconds);
+  advance_move_to_panel(seconds);
   handle_input(width, height);
   draw_menu();
   draw_panel(height);
+  draw_caption(width, height);
   if (show_help_) draw_help();
   rebuild_scene();
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, width, height);
+  glClearColor(1, 1, 1, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (reconstruction_) {
     render::Draw_options options;
     options.legend = options.title = false;  // the panel shows both
     options.hidden_layers = hidden_layers_;
-    options.viewport_x = int(panel_width);  // the picture takes the window right of the panel
-    renderer_->draw(camera_, view_width(width), height, options);
-  } else {
-    glViewport(0, 0, width, height);
-    glClearColor(1, 1, 1, 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // The picture takes the window right of the panel, above the figure's caption.
+    options.viewport_x = int(panel_width);
+    options.viewport_y = caption_height_;
+    renderer_->draw(camera_, view_width(width), view_height(height), options);
   }
+}
+
+int Viewer::view_height(int window_height) const {
+  return std::max(1, window_height - caption_height_);
 }
 
 void Viewer::advance_playback(double seconds) {
@@ -213,26 +479,24 @@ void Viewer::advance_playback(double seconds) {
 void Viewer::handle_input(int width, int height) {
   ImGuiIO& io = ImGui::GetIO();
   if (!io.WantCaptureKeyboard) {
-    if (ImGui::IsKeyPressed(GLFW_KEY_R) || ImGui::IsKeyPressed(GLFW_KEY_F))
-      reset_camera(), scene_dirty_ = true;
-    if (ImGui::IsKeyPressed(GLFW_KEY_H)) show_help_ = !show_help_;
-    if (ImGui::IsKeyPressed(GLFW_KEY_RIGHT)) step_stage(+1);
-    if (ImGui::IsKeyPressed(GLFW_KEY_LEFT)) step_stage(-1);
-    if (ImGui::IsKeyPressed(GLFW_KEY_SPACE) && request_.stage == scene::Stage::propagation)
-      playing_ = !playing_;
-    if (ImGui::IsKeyPressed(GLFW_KEY_PERIOD))
-      set_step((request_.step < 0 ? event_count() : request_.step) + 1);
-    if (ImGui::IsKeyPressed(GLFW_KEY_COMMA))
-      set_step(std::max(0L, (request_.step < 0 ? event_count() : request_.step) - 1));
-    if (ImGui::IsKeyPressed(GLFW_KEY_P))
-      export_picture(picture_field_, picture_size_[0], picture_size_[1]);
+    for (int key :
+         {GLFW_KEY_R, GLFW_KEY_F, GLFW_KEY_H, GLFW_KEY_RIGHT, GLFW_KEY_LEFT, GLFW_KEY_SPACE,
+          GLFW_KEY_PERIOD, GLFW_KEY_COMMA, GLFW_KEY_P, GLFW_KEY_PAGE_DOWN, GLFW_KEY_PAGE_UP,
+          GLFW_KEY_RIGHT_BRACKET, GLFW_KEY_LEFT_BRACKET, GLFW_KEY_T, GLFW_KEY_ESCAPE}) {
+      if (ImGui::IsKeyPressed(key)) on_key(key);
+    }
   }
   if (io.WantCaptureMouse || !reconstruction_) return;
 
   const glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
-  const float scale = 2.0f / float(std::max(height, 1));
+  const float scale = 2.0f / float(view_height(height));
   const bool three = camera_.dimension == 3;
+  const auto moved_by_hand = [&] {
+    camera_move_.reset();
+    camera_is_panel_camera_ = false;
+  };
   if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+    moved_by_hand();
     if (three) {
       camera_.orbit(-delta.x * 0.01f, delta.y * 0.01f);
     } else {
@@ -241,14 +505,74 @@ void Viewer::handle_input(int width, int height) {
   }
   if (ImGui::IsMouseDragging(ImGuiMouseButton_Right) ||
       ImGui::IsMouseDragging(ImGuiMouseButton_Middle)) {
+    moved_by_hand();
     camera_.pan(-delta.x * scale, delta.y * scale);
   }
-  if (io.MouseWheel != 0) camera_.zoom(std::pow(0.88f, io.MouseWheel));
+  if (io.MouseWheel != 0) {
+    moved_by_hand();
+    camera_.zoom(std::pow(0.88f, io.MouseWheel));
+  }
   if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
     const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
     if (drag.x * drag.x + drag.y * drag.y < 9.0f) {
-      click({io.MousePos.x - panel_width, io.MousePos.y}, view_width(width), height);
+      click({io.MousePos.x - panel_width, io.MousePos.y}, view_width(width), view_height(height));
     }
+  }
+}
+
+void Viewer::press_key(int key) {
+  on_key(key);
+}
+
+void Viewer::on_key(int key) {
+  const long shown = request_.step < 0 ? event_count() : request_.step;
+  switch (key) {
+    case GLFW_KEY_R:
+    case GLFW_KEY_F:
+      reset_camera(), scene_dirty_ = true;
+      break;
+    case GLFW_KEY_H:
+      show_help_ = !show_help_;
+      break;
+    case GLFW_KEY_RIGHT:
+      step_stage(+1);
+      break;
+    case GLFW_KEY_LEFT:
+      step_stage(-1);
+      break;
+    case GLFW_KEY_SPACE:
+      if (request_.stage == scene::Stage::propagation) explore(), playing_ = !playing_;
+      break;
+    case GLFW_KEY_PERIOD:
+      set_step(shown + 1);
+      break;
+    case GLFW_KEY_COMMA:
+      set_step(std::max(0L, shown - 1));
+      break;
+    case GLFW_KEY_P:
+      export_picture(picture_field_, picture_size_[0], picture_size_[1]);
+      break;
+    // The tour; page keys are what presentation remotes send.
+    case GLFW_KEY_PAGE_DOWN:
+      go_to_panel("next");
+      break;
+    case GLFW_KEY_PAGE_UP:
+      go_to_panel("previous");
+      break;
+    case GLFW_KEY_RIGHT_BRACKET:
+      next_figure();
+      break;
+    case GLFW_KEY_LEFT_BRACKET:
+      previous_figure();
+      break;
+    case GLFW_KEY_T:
+      return_to_panel();
+      break;
+    case GLFW_KEY_ESCAPE:
+      close_tour();
+      break;
+    default:
+      break;
   }
 }
 
@@ -288,20 +612,35 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
   // The figures' own renderer: `sculpt render`, next to this program, with this view's shot.
   const auto self = std::filesystem::read_symlink("/proc/self/exe");
   const auto sculpt = self.parent_path() / "sculpt";
+  if (!reconstruction_) {
+    message_ = "nothing to save yet";
+    return false;
+  }
+  // The shown reconstruction's input and options (not those chosen for the next run).
+  const Job_request& shown = shown_request_;
   nlohmann::json shot = {{"stage", scene::stage_id(request_.stage)},
                          {"step", request_.step},
                          {"focus_sample", request_.focus_sample},
                          {"focus_pole", request_.focus_pole},
-                         {"bordered", bordered_},
-                         {"box_factor", last_request_.options.box_factor},
-                         {"rule", rule_names[rule_]},
-                         {"method", method_names()[method_]},
-                         {"camera", render::to_json(camera_)},
+                         {"wireframe", request_.wireframe},
+                         {"smooth", request_.smooth},
+                         {"ball_every", request_.ball_every},
+                         {"bordered", shown.options.kind == Surface_kind::bordered},
+                         {"box_factor", shown.options.box_factor},
+                         {"rule", to_string(shown.options.rule)},
+                         {"method", to_string(shown.options.method)},
+                         {"dimension", shown.dimension},
                          {"size", std::to_string(width) + "x" + std::to_string(height)},
                          {"output", std::filesystem::absolute(path).string()}};
-  if (!last_request_.example.empty()) shot["example"] = last_request_.example;
-  if (!last_request_.path.empty())
-    shot["input"] = std::filesystem::absolute(last_request_.path).string();
+  if (camera_is_panel_camera_ && !panel_on_screen().empty()) {
+    // The panel's framing, refitted to the picture's size as the gallery does.
+    const frontend::Shot& panel = tour_.image().shot;
+    shot.update({{"zoom", panel.zoom}, {"yaw", panel.yaw}, {"pitch", panel.pitch}});
+  } else {
+    shot["camera"] = render::to_json(camera_);
+  }
+  if (!shown.example.empty()) shot["example"] = shown.example;
+  if (!shown.path.empty()) shot["input"] = std::filesystem::absolute(shown.path).string();
   std::vector<std::string> visible;
   for (const auto& layer : renderer_->scene().layers) {
     if (std::find(hidden_layers_.begin(), hidden_layers_.end(), layer.id) == hidden_layers_.end()) {
@@ -382,12 +721,103 @@ void Viewer::draw_menu() {
     }
     ImGui::EndMenu();
   }
+  draw_paper_menu();
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Fit / reset camera", "R")) reset_camera(), scene_dirty_ = true;
     if (ImGui::MenuItem("Controls", "H", show_help_)) show_help_ = !show_help_;
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();
+}
+
+// Every figure by number and caption, each with its panels.
+void Viewer::draw_paper_menu() {
+  if (!ImGui::BeginMenu("Paper")) return;
+  if (ImGui::MenuItem("Start the tour at Fig. 1", "PgDn", false, !tour_.active()))
+    open_figure("fig01");
+  ImGui::Separator();
+  for (const auto& figure : figures::paper_figures()) {
+    std::string label = figure.caption;
+    if (label.size() > 72) label = label.substr(0, label.rfind(' ', 69)) + " ...";
+    const bool current = tour_.active() && &tour_.figure() == &figure;
+    if (ImGui::BeginMenu(label.c_str())) {
+      for (std::size_t i = 0; i < figure.images.size(); ++i) {
+        const auto& image = figure.images[i];
+        const std::string item = figures::panel_name(figure, i) + "  " + image.what;
+        if (ImGui::MenuItem(item.c_str(), nullptr, current && tour_.panel() == i))
+          open_figure(figure.id, i);
+      }
+      ImGui::EndMenu();
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", ("Data: " + figure.data).c_str());
+  }
+  ImGui::Separator();
+  if (ImGui::MenuItem("Close the tour", "Esc", false, tour_.active())) close_tour();
+  ImGui::EndMenu();
+}
+
+// Under the picture, as in the paper: the figure's caption, the paper's own sentence about it,
+// and what this panel shows and why; with the buttons that walk the tour.
+void Viewer::draw_caption(int width, int height) {
+  if (!tour_.active()) {
+    caption_height_ = 0;
+    return;
+  }
+  const float caption_width = float(view_width(width));
+  ImGui::SetNextWindowPos(ImVec2(panel_width, float(height)), ImGuiCond_Always, ImVec2(0, 1));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(caption_width, 0),
+                                      ImVec2(caption_width, 0.45f * float(height)));
+  ImGui::Begin("Paper", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize |
+                   ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PushTextWrapPos(caption_width - ImGui::GetStyle().WindowPadding.x);
+  const figures::Figure& figure = tour_.figure();
+  const figures::Figure_image& image = tour_.image();
+
+  const std::size_t count = figure.images.size();
+  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "%s", tour_.panel_name().c_str());
+  ImGui::SameLine();
+  ImGui::TextDisabled("panel %zu of %zu", tour_.panel() + 1, count);
+  ImGui::SameLine();
+  if (ImGui::SmallButton("< previous")) go_to_panel("previous");
+  ImGui::SameLine();
+  if (ImGui::SmallButton("next >")) go_to_panel("next");
+  ImGui::SameLine();
+  if (tour_.exploring()) {
+    if (ImGui::SmallButton(("back to " + tour_.panel_name() + " (T)").c_str())) return_to_panel();
+  } else if (ImGui::SmallButton("explore")) {
+    explore();
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton("close")) close_tour();
+
+  ImGui::TextUnformatted(figure.caption.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.7f, 0.75f, 0.85f, 1.0f));
+  ImGui::TextWrapped("Paper: \"%s\"", figure.sentence.c_str());
+  ImGui::PopStyleColor();
+  if (tour_.exploring()) {
+    ImGui::TextWrapped(
+        "Exploring from %s: every tool of the viewer works on this "
+        "reconstruction. T (or the button above) returns to the panel.",
+        tour_.panel_name().c_str());
+  } else {
+    ImGui::TextWrapped("%s%s. %s", image.suffix.empty() ? "" : ("(" + image.suffix + ") ").c_str(),
+                       image.what.c_str(), image.why.c_str());
+  }
+  if (!figure.differences.empty()) {
+    ImGui::TextDisabled("Differs from the paper (hover)");
+    if (ImGui::IsItemHovered()) {
+      ImGui::BeginTooltip();
+      ImGui::PushTextWrapPos(420);
+      ImGui::TextUnformatted(("Data: " + figure.data + ". " + figure.differences).c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndTooltip();
+    }
+  }
+  ImGui::PopTextWrapPos();
+  caption_height_ = int(ImGui::GetWindowHeight());
+  ImGui::End();
 }
 
 void Viewer::draw_panel(int height) {
@@ -494,6 +924,7 @@ void Viewer::draw_layers() {
     bool visible =
         std::find(hidden_layers_.begin(), hidden_layers_.end(), layer.id) == hidden_layers_.end();
     if (ImGui::Checkbox(layer.label.c_str(), &visible)) {
+      explore();
       if (visible) {
         hidden_layers_.erase(std::remove(hidden_layers_.begin(), hidden_layers_.end(), layer.id),
                              hidden_layers_.end());
@@ -586,6 +1017,10 @@ void Viewer::draw_help() {
       "wheel                zoom\n"
       "click                pick a sample or a pole\n"
       "R or F               fit and reset the camera\n"
+      "Page Down / Page Up  paper tour: next / previous panel\n"
+      "] and [              paper tour: next / previous figure\n"
+      "T                    paper tour: back to the panel after exploring\n"
+      "Esc                  close the paper tour\n"
       "P                    save a picture (File menu: path and size)\n"
       "H                    this help");
   ImGui::End();

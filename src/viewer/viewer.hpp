@@ -1,18 +1,21 @@
 // The viewer's state and one frame of it: the reconstruction being shown, the stage and
-// propagation step, the camera, layer visibility, the selection, and the ImGui panels.
-// Scripted runs (tests) drive the same object through Script.
+// propagation step, the camera, layer visibility, the selection, the tour of the paper's
+// figures, and the ImGui panels. Scripted runs (tests) drive the same object through Script.
 #pragma once
 
 #include <algorithm>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "figures/cgal_meshes.hpp"
 #include "reconstruction_job.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
+#include "tour.hpp"
 
 namespace sculpt::viewer {
 
@@ -33,6 +36,7 @@ class Viewer {
         names.begin());
   }
 
+  // What the student changes by hand; during the tour, each leaves the panel to explore.
   void set_stage(scene::Stage stage);
   void step_stage(int delta);
   void set_step(long events);  // propagation events shown; -1 = all
@@ -40,11 +44,26 @@ class Viewer {
   void pick_pole(int pole);
   void reset_camera();
 
-  // A reconstruction runs, or has ended and its result is not shown yet.
-  bool busy() const { return job_.running() || job_.outcome_waiting(); }
+  // The tour of the paper's figures (Paper menu, --figure, script commands). Each returns false,
+  // with a message, when there is no such figure or panel.
+  bool open_figure(const std::string& id, std::size_t panel = 0);
+  bool go_to_panel(const std::string& panel);  // "next", "previous", "3" (1-based), "c"
+  bool next_figure();
+  bool previous_figure();
+  void return_to_panel();  // after exploring: the panel as the figure shows it
+  void close_tour();
+  // "fig06c" while that panel is on screen as the figure shows it; "" otherwise.
+  std::string panel_on_screen() const;
+  void set_animation(bool on) { animate_ = on; }  // camera and stage moves between panels
+
+  void press_key(int key);  // a GLFW key, as if pressed (scripts)
+
+  // A reconstruction runs, has ended and its result is not shown yet, or the view is still
+  // moving to a tour panel.
+  bool busy() const { return job_.running() || job_.outcome_waiting() || moving_to_panel(); }
   void cancel() { job_.request_cancel(); }
   const std::string& message() const { return message_; }
-  bool has_reconstruction() const { return reconstruction_.has_value(); }
+  bool has_reconstruction() const { return reconstruction_ != nullptr; }
   scene::Stage stage() const { return request_.stage; }
 
   // One frame: take a finished job, handle the mouse and keys, build the panels, draw.
@@ -59,14 +78,31 @@ class Viewer {
   bool animating() const { return playing_ || job_.running(); }
 
  private:
+  Job_request with_options(Job_request request) const;  // the options chosen in the panel
   void start_job(Job_request request);
   void take_finished_job();
+  void show(std::shared_ptr<const Any_reconstruction> reconstruction, std::string description);
   void rebuild_scene();
   void handle_input(int width, int height);
+  void on_key(int key);
   void advance_playback(double seconds);
   void click(glm::vec2 mouse, int width, int height);
+  int view_height(int window_height) const;
+
+  // The tour: load the panel's reconstruction (a job, unless it is shown or recent), then move
+  // the stage, step and camera to the panel's.
+  void show_tour_panel();
+  void move_to_panel_view();
+  void arrive_at_panel();
+  void explore();  // the student changed the view by hand
+  void advance_move_to_panel(double seconds);
+  bool moving_to_panel() const {
+    return panel_pending_ || !stage_walk_.empty() || camera_move_ || play_until_ >= 0;
+  }
 
   void draw_menu();
+  void draw_paper_menu();
+  void draw_caption(int width, int height);
   void draw_panel(int height);
   void draw_stepper();
   void draw_propagation_controls();
@@ -82,8 +118,16 @@ class Viewer {
   std::unique_ptr<render::Renderer> renderer_;
   Reconstruction_job job_;
   Job_request last_request_;
-  std::optional<Any_reconstruction> reconstruction_;
+  std::shared_ptr<const Any_reconstruction> reconstruction_;
   std::string description_;
+  Job_request shown_request_;  // the input and options of the reconstruction shown
+  // The last few reconstructions, so a tour can go back and forth without recomputing.
+  struct Recent {
+    std::string key;
+    std::shared_ptr<const Any_reconstruction> reconstruction;
+    std::string description;
+  };
+  std::deque<Recent> recent_;
   scene::Request request_;
   bool scene_dirty_ = true;
   render::Camera camera_;
@@ -101,6 +145,26 @@ class Viewer {
   bool playing_ = false;
   float events_per_second_ = 20.0f;
   double playback_clock_ = 0;
+
+  // The tour and the move to its panel: stages walked through one after another, the
+  // propagation played up to the panel's step, the camera flown to the panel's.
+  Tour tour_;
+  figures::Cgal_meshes cgal_meshes_;
+  bool animate_ = true;
+  bool panel_pending_ = false;           // waiting for the panel's reconstruction
+  bool walk_stages_ = false;             // same reconstruction as before: walk to the panel
+  bool panel_camera_pending_ = false;    // fit the panel's camera once its scene is built
+  bool camera_is_panel_camera_ = false;  // untouched since: pictures refit it to their size
+  std::deque<scene::Stage> stage_walk_;
+  double walk_clock_ = 0;
+  long play_until_ = -1;
+  double play_clock_ = 0;
+  struct Camera_move {
+    render::Camera from, to;
+    float t = 0;
+  };
+  std::optional<Camera_move> camera_move_;
+  int caption_height_ = 0;
 
   // Panels.
   char path_field_[1024] = "";
