@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 #include "file_support.hpp"
 #include "render/image.hpp"
@@ -100,6 +102,40 @@ TEST(Viewer, SavesPicturesThroughTheHeadlessRenderer) {
   const render::Image image = render::read_png(picture);
   EXPECT_EQ(image.width, 400);
   EXPECT_EQ(image.height, 300);
+}
+
+// A script is input too: each malformed command gets its own line and the run fails, without
+// a crash, and the viewer goes on to the next command (the last one still takes effect).
+TEST(Viewer, AMalformedScriptCommandIsOneLineAndAFailureNotACrash) {
+  const std::vector<std::pair<std::string, std::string>> commands = {
+      {"pick-sample 99999", "no sample 99999"},
+      {"pick-pole 5000000", "no pole 5000000"},
+      {"step abc", "'step abc'"},
+      {"step 99999999999999999999999", "expected a number"},
+      {"frames x", "'frames x'"},
+      {"export", "needs a PNG path"},
+      {"export e.png 12xy", "WIDTHxHEIGHT"},
+      {"screenshot", "needs a PNG path"},
+      {"animation maybe", "on or off"},
+      {"figure fig99", "no figure 'fig99'"},
+      {"stage nowhere", "no stage 'nowhere'"}};
+  std::string script = "example star\nwait\n";
+  for (const auto& [command, _] : commands) script += command + "\n";
+  const std::string picture = testing::output_path("after-bad-commands.png");
+  script += "pick-sample 3\nframes 1\nexport " + picture + " 64x48\nquit\n";
+  EXPECT_EQ(run_viewer_script("malformed", script), 1);
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/malformed.log");
+  for (const auto& [command, says] : commands) {
+    EXPECT_NE(log.find(says), std::string::npos) << command << " should say " << says << ":\n"
+                                                 << log;
+  }
+  std::size_t complaints = 0;
+  for (std::size_t at = log.find("script:"); at != std::string::npos;
+       at = log.find("script:", at + 1)) {
+    ++complaints;
+  }
+  EXPECT_EQ(complaints, commands.size()) << log;
+  EXPECT_EQ(render::read_png(picture).width, 64);
 }
 
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {

@@ -16,7 +16,7 @@ void Reconstruction_job::cancel_and_join() {
 
 void Reconstruction_job::start(Job_request request) {
   cancel_and_join();
-  cancelled_ = false;
+  cancelled_ = abandoned_ = false;
   running_ = true;
   {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -36,6 +36,7 @@ std::optional<Reconstruction_job::Outcome> Reconstruction_job::take_outcome() {
   std::lock_guard<std::mutex> lock(mutex_);
   std::optional<Outcome> outcome;
   outcome.swap(outcome_);
+  if (abandoned_) return std::nullopt;
   return outcome;
 }
 
@@ -45,6 +46,9 @@ void Reconstruction_job::run(Job_request request) {
     const frontend::Input input =
         frontend::load_input(request.path, request.example, request.dimension);
     outcome.description = input.description;
+    if (!request.shown_as.empty() && input.description.rfind(request.path, 0) == 0) {
+      outcome.description = request.shown_as + input.description.substr(request.path.size());
+    }
     request.options.keep_triangulations = true;
     request.options.progress = [this](const Progress& progress) {
       std::lock_guard<std::mutex> lock(mutex_);

@@ -17,6 +17,7 @@ using Any_reconstruction = std::variant<Reconstruction<2>, Reconstruction<3>>;
 struct Job_request {
   std::string path, example;  // one of them
   int dimension = 0;          // 0: as the file says
+  std::string shown_as;  // how to name the input when not by its path (e.g. "CGAL's fandisk.off")
   Options options;
 };
 
@@ -27,11 +28,16 @@ class Reconstruction_job {
   void start(Job_request request);  // cancels and replaces a running job
   // Asks the job to stop at its next progress report; returns at once (the UI stays live).
   void request_cancel() { cancelled_ = true; }
+  // Cancels a running job and drops whatever it ends with: the viewer has moved on.
+  void abandon() {
+    abandoned_ = true;
+    cancelled_ = true;
+  }
   bool running() const { return running_; }
   // Ended, with an outcome nobody has taken yet.
   bool outcome_waiting() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return !running_ && outcome_.has_value();
+    return !running_ && outcome_.has_value() && !abandoned_;
   }
 
   struct Status {
@@ -55,6 +61,7 @@ class Reconstruction_job {
   std::thread thread_;
   std::atomic<bool> running_{false};
   std::atomic<bool> cancelled_{false};
+  std::atomic<bool> abandoned_{false};
   mutable std::mutex mutex_;
   Status status_;
   std::optional<Outcome> outcome_;

@@ -3,9 +3,11 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <charconv>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -31,7 +33,23 @@ int key_code(const std::string& name) {
   return found == keys.end() ? -1 : found->second;
 }
 
+// A whole word as a number in [low, high], or nothing.
+std::optional<long> number(const std::string& word, long low, long high) {
+  long value = 0;
+  const char* end = word.data() + word.size();
+  const auto [stop, error] = std::from_chars(word.data(), end, value);
+  if (word.empty() || error != std::errc() || stop != end || value < low || value > high) {
+    return std::nullopt;
+  }
+  return value;
+}
+
 }  // namespace
+
+void Script::fail(const std::string& why) {
+  std::cerr << "sculpt-view: script: " << why << '\n';
+  failed_ = true;
+}
 
 Script Script::from_file(const std::string& path) {
   std::ifstream in(path);
@@ -65,21 +83,42 @@ std::string Script::before_frame(Viewer& viewer) {
       if (viewer.busy()) return "";  // ask again next frame
       commands_.pop_front();
       if (command == "wait" && !viewer.has_reconstruction()) {
-        std::cerr << "sculpt-view: script: no reconstruction: " << viewer.message() << '\n';
-        failed_ = true;
+        fail("no reconstruction: " + viewer.message());
       }
       continue;
     }
+    const std::string line = commands_.front();
     commands_.pop_front();
+    std::string extra;
+    words >> extra;
+    // Each command: what it needs, one line on stderr when that is not what it got.
+    const auto needs_argument = [&](const char* what) {
+      if (!argument.empty()) return true;
+      fail("'" + command + "' needs " + what);
+      return false;
+    };
+    const auto count = [&](const char* what, long low, long high) -> std::optional<long> {
+      if (!needs_argument(what)) return std::nullopt;
+      const auto value = number(argument, low, high);
+      if (!value) fail("'" + line + "': expected " + what);
+      return value;
+    };
+    const auto done = [&](bool succeeded) {
+      if (!succeeded) fail("'" + line + "': " + viewer.message());
+    };
+    if (!extra.empty() && command != "export") {
+      fail("'" + line + "': one argument expected");
+      continue;
+    }
     if (command == "example") {
-      viewer.open_example(argument);
+      if (needs_argument("an example name")) viewer.open_example(argument);
     } else if (command == "open") {
-      viewer.open_file(argument);
+      if (needs_argument("a file")) viewer.open_file(argument);
     } else if (command == "stage") {
       scene::Stage stage;
+      if (!needs_argument("a stage")) continue;
       if (!scene::parse_stage(argument, stage)) {
-        std::cerr << "sculpt-view: script: no stage '" << argument << "'\n";
-        failed_ = true;
+        fail("no stage '" + argument + "'");
         continue;
       }
       viewer.set_stage(stage);
@@ -88,55 +127,74 @@ std::string Script::before_frame(Viewer& viewer) {
     } else if (command == "previous") {
       viewer.step_stage(-1);
     } else if (command == "step") {
-      viewer.set_step(std::stol(argument));
+      if (const auto events = count("a number of events (or -1 for all)", -1, 1L << 40)) {
+        viewer.set_step(*events);
+      }
     } else if (command == "pick-sample") {
-      viewer.pick_sample(std::stoi(argument));
+      if (const auto sample = count("a sample index (or -1)", -1, 1L << 31)) {
+        done(viewer.pick_sample(int(*sample)));
+      }
     } else if (command == "pick-pole") {
-      viewer.pick_pole(std::stoi(argument));
+      if (const auto pole = count("a pole index (or -1)", -1, 1L << 31)) {
+        done(viewer.pick_pole(int(*pole)));
+      }
     } else if (command == "figure") {
-      failed_ = !viewer.open_figure(argument) || failed_;
+      if (needs_argument("a figure (fig01 ... fig15)")) done(viewer.open_figure(argument));
     } else if (command == "panel") {
-      failed_ = !viewer.go_to_panel(argument) || failed_;
+      if (needs_argument("next, previous, a number or a letter")) {
+        done(viewer.go_to_panel(argument));
+      }
     } else if (command == "expect-panel") {
       if (viewer.panel_on_screen() != argument) {
-        std::cerr << "sculpt-view: script: expected panel " << argument << " on screen, not '"
-                  << viewer.panel_on_screen() << "' (" << viewer.message() << ")\n";
-        failed_ = true;
+        fail("expected panel " + (argument.empty() ? "none" : argument) + " on screen, not '" +
+             viewer.panel_on_screen() + "' (" + viewer.message() + ")");
       }
     } else if (command == "key") {
+      if (!needs_argument("a key name")) continue;
       const int key = key_code(argument);
       if (key < 0) {
-        std::cerr << "sculpt-view: script: no key '" << argument << "'\n";
-        failed_ = true;
+        fail("no key '" + argument + "'");
       } else {
         viewer.press_key(key);
       }
     } else if (command == "animation") {
-      viewer.set_animation(argument != "off");
+      if (argument == "on" || argument == "off") {
+        viewer.set_animation(argument == "on");
+      } else {
+        fail("'" + line + "': expected animation on or off");
+      }
     } else if (command == "frames") {
-      frames_to_wait_ = std::max(0, std::stoi(argument) - 1);
-      return "";
+      if (const auto frames = count("a number of frames (1 to 100000)", 1, 100000)) {
+        frames_to_wait_ = int(*frames) - 1;
+        return "";
+      }
     } else if (command == "screenshot") {
-      return argument;
+      if (needs_argument("a PNG path")) return argument;
     } else if (command == "export") {
-      std::string size;
-      words >> size;
+      if (!needs_argument("a PNG path")) continue;
       int width = 800, height = 600;
-      if (!size.empty()) std::sscanf(size.c_str(), "%dx%d", &width, &height);
-      failed_ = !viewer.export_picture(argument, width, height) || failed_;
+      if (!extra.empty()) {
+        const auto x = extra.find('x');
+        const auto w = number(extra.substr(0, x), 16, 8192);
+        const auto h =
+            x == std::string::npos ? std::nullopt : number(extra.substr(x + 1), 16, 8192);
+        if (!w || !h) {
+          fail("'" + line + "': expected a size WIDTHxHEIGHT, 16 to 8192 pixels each");
+          continue;
+        }
+        width = int(*w);
+        height = int(*h);
+      }
+      done(viewer.export_picture(argument, width, height));
     } else if (command == "cancel") {
       viewer.cancel();
     } else if (command == "expect-busy") {
-      if (!viewer.busy()) {
-        std::cerr << "sculpt-view: script: expected a reconstruction to be running\n";
-        failed_ = true;
-      }
+      if (!viewer.busy()) fail("expected a reconstruction to be running");
     } else if (command == "quit") {
       commands_.clear();
       return "";
     } else {
-      std::cerr << "sculpt-view: script: unknown command '" << command << "'\n";
-      failed_ = true;
+      fail("unknown command '" + command + "'");
     }
   }
   return "";

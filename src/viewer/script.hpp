@@ -18,6 +18,7 @@
 //   key pagedown        press a key (pagedown, pageup, ], [, t, escape, right, left, space, ...)
 //   animation off       jump to tour panels instead of moving there
 //   quit
+// A command with a missing or malformed argument prints one line and fails the script.
 #pragma once
 
 #include <deque>
@@ -39,6 +40,8 @@ class Script {
   bool failed() const { return failed_; }
 
  private:
+  void fail(const std::string& why);  // one line on stderr; the script will exit non-zero
+
   std::deque<std::string> commands_;
   int frames_to_wait_ = 0;
   bool failed_ = false;

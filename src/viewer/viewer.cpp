@@ -124,7 +124,8 @@ void Viewer::take_finished_job() {
   if (!outcome) return;
   if (!outcome->error.empty()) {
     message_ = outcome->error == "cancelled" ? "cancelled" : "error: " + outcome->error;
-    panel_pending_ = false;
+    // A panel whose reconstruction did not come cannot be shown: the tour ends there.
+    if (panel_pending_) close_tour();
     return;
   }
   auto reconstruction =
@@ -172,18 +173,52 @@ void Viewer::set_step(long events) {
   scene_dirty_ = true;
 }
 
-void Viewer::pick_sample(int sample) {
+// The samples and poles of the shown reconstruction, to refuse a pick of one that is not there.
+namespace {
+std::size_t sample_count(const Any_reconstruction& r) {
+  return std::visit([](const auto& x) { return x.stats.samples; }, r);
+}
+std::size_t pole_count(const Any_reconstruction& r) {
+  return std::visit([](const auto& x) { return x.poles.poles.size(); }, r);
+}
+int dimension_of(const Any_reconstruction& r) {
+  return std::visit([](const auto& x) { return x.stats.dimension; }, r);
+}
+// The paper's cube is a square in the plane.
+const char* reason_name(Label_reason reason, int dimension) {
+  return dimension == 2 && reason == Label_reason::inscribed_cube ? "inscribed square"
+                                                                  : to_string(reason);
+}
+}  // namespace
+
+bool Viewer::pick_sample(int sample) {
+  if (sample >= 0 && (!reconstruction_ || std::size_t(sample) >= sample_count(*reconstruction_))) {
+    message_ =
+        "no sample " + std::to_string(sample) +
+        (reconstruction_ ? " (the input has " + std::to_string(sample_count(*reconstruction_)) + ")"
+                         : " (nothing reconstructed yet)");
+    return false;
+  }
   explore();
   request_.focus_sample = sample;
   request_.focus_pole = -1;
   scene_dirty_ = true;
+  return true;
 }
 
-void Viewer::pick_pole(int pole) {
+bool Viewer::pick_pole(int pole) {
+  if (pole >= 0 && (!reconstruction_ || std::size_t(pole) >= pole_count(*reconstruction_))) {
+    message_ =
+        "no pole " + std::to_string(pole) +
+        (reconstruction_ ? " (there are " + std::to_string(pole_count(*reconstruction_)) + ")"
+                         : " (nothing reconstructed yet)");
+    return false;
+  }
   explore();
   request_.focus_pole = pole;
   request_.focus_sample = -1;
   scene_dirty_ = true;
+  return true;
 }
 
 void Viewer::reset_camera() {
@@ -236,6 +271,7 @@ void Viewer::return_to_panel() {
 }
 
 void Viewer::close_tour() {
+  if (tour_.active() && reconstruction_) message_ = "showing " + description_;
   tour_.close();
   panel_pending_ = panel_camera_pending_ = camera_is_panel_camera_ = false;
   stage_walk_.clear();
@@ -269,16 +305,20 @@ void Viewer::show_tour_panel() {
   request.path = shot.input;
   request.example = shot.example;
   request.dimension = shot.dimension;
+  const std::string& figure_input = tour_.image().shot.input;
+  if (figure_input.rfind("cgal:", 0) == 0) request.shown_as = "CGAL's " + figure_input.substr(5);
   stage_walk_.clear();
   play_until_ = -1;
   const std::string key = request_key(with_options(request));
   walk_stages_ = animate_ && reconstruction_ && key == request_key(shown_request_);
   if (reconstruction_ && key == request_key(shown_request_)) {
+    job_.abandon();  // a reconstruction for another panel is no longer wanted
     move_to_panel_view();
     return;
   }
   for (const Recent& recent : recent_) {
     if (recent.key != key) continue;
+    job_.abandon();
     last_request_ = with_options(request);
     const auto reconstruction = recent.reconstruction;  // `recent` may not outlive show()
     show(reconstruction, recent.description);
@@ -355,7 +395,10 @@ void Viewer::advance_move_to_panel(double seconds) {
       }
     }
   } else if (play_until_ >= 0) {
-    play_clock_ += seconds * std::max(20.0, double(play_until_) / propagation_play_seconds);
+    // At most a 30th of a second a frame: on a slow software renderer the play still shows
+    // its frames instead of jumping to the end.
+    play_clock_ += std::min(seconds, 1.0 / 30) *
+                   std::max(20.0, double(play_until_) / propagation_play_seconds);
     request_.step = std::min(play_until_, long(play_clock_));
     if (request_.step >= play_until_) play_until_ = -1;
     scene_dirty_ = true;
@@ -764,9 +807,16 @@ void Viewer::draw_caption(int width, int height) {
     return;
   }
   const float caption_width = float(view_width(width));
+  // The caption only grows within a figure, so the picture above it does not jump between panels.
+  if (caption_figure_ != tour_.figure().id) {
+    caption_figure_ = tour_.figure().id;
+    caption_min_height_ = 0;
+  }
   ImGui::SetNextWindowPos(ImVec2(panel_width, float(height)), ImGuiCond_Always, ImVec2(0, 1));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(caption_width, 0),
-                                      ImVec2(caption_width, 0.45f * float(height)));
+  const float caption_max_height = 0.45f * float(height);
+  ImGui::SetNextWindowSizeConstraints(
+      ImVec2(caption_width, std::min(caption_min_height_, caption_max_height)),
+      ImVec2(caption_width, caption_max_height));
   ImGui::Begin("Paper", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize |
@@ -817,6 +867,7 @@ void Viewer::draw_caption(int width, int height) {
   }
   ImGui::PopTextWrapPos();
   caption_height_ = int(ImGui::GetWindowHeight());
+  caption_min_height_ = std::max(caption_min_height_, ImGui::GetWindowHeight());
   ImGui::End();
 }
 
@@ -827,7 +878,7 @@ void Viewer::draw_panel(int height) {
   ImGui::Begin("Sculpt", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::TextWrapped("%s", message_.c_str());
-  if (busy()) {
+  if (job_.running()) {  // not while the view merely moves to a tour panel
     const auto status = job_.status();
     ImGui::ProgressBar(float(status.fraction), ImVec2(-70, 0), status.stage.c_str());
     ImGui::SameLine();
@@ -889,7 +940,8 @@ void Viewer::draw_propagation_controls() {
                      ImGuiSliderFlags_Logarithmic);
   if (ImGui::SliderInt("event", &shown, 0, int(total))) set_step(shown);
   if (const Labelling_event* e = latest_event()) {
-    ImGui::Text("pole %d <- %s (%s", e->pole, to_string(e->label), to_string(e->reason));
+    ImGui::Text("pole %d <- %s (%s", e->pole, to_string(e->label),
+                reason_name(e->reason, dimension_of(*reconstruction_)));
     ImGui::SameLine(0, 0);
     if (e->source >= 0) {
       ImGui::Text(" of pole %d)", e->source);
@@ -950,16 +1002,18 @@ void Viewer::draw_selection() {
             if (e.pole != pole) continue;
             if (e.source >= 0) {
               ImGui::Text("  labelled at event %zu by pole %d (%s)", i + 1, e.source,
-                          to_string(e.reason));
+                          reason_name(e.reason, r.stats.dimension));
             } else {
-              ImGui::Text("  labelled at event %zu: %s", i + 1, to_string(e.reason));
+              ImGui::Text("  labelled at event %zu: %s", i + 1,
+                          reason_name(e.reason, r.stats.dimension));
             }
           }
         };
         if (request_.focus_sample >= 0) {
           const int s = request_.focus_sample;
           ImGui::Text("sample %d", s);
-          ImGui::TextDisabled("its Voronoi cell, poles, polar balls and inscribed cubes are shown");
+          ImGui::TextDisabled("its Voronoi cell, poles, polar balls and inscribed %s are shown",
+                              r.stats.dimension == 2 ? "squares" : "cubes");
           ImGui::TextUnformatted("p+:");
           describe_pole(r.poles.positive_pole[s]);
           ImGui::TextUnformatted("p-:");

@@ -40,8 +40,9 @@ class Viewer {
   void set_stage(scene::Stage stage);
   void step_stage(int delta);
   void set_step(long events);  // propagation events shown; -1 = all
-  void pick_sample(int sample);
-  void pick_pole(int pole);
+  // Each returns false, with a message, when the shown reconstruction has no such sample or pole.
+  bool pick_sample(int sample);  // -1 clears the selection
+  bool pick_pole(int pole);
   void reset_camera();
 
   // The tour of the paper's figures (Paper menu, --figure, script commands). Each returns false,
@@ -165,6 +166,8 @@ class Viewer {
   };
   std::optional<Camera_move> camera_move_;
   int caption_height_ = 0;
+  std::string caption_figure_;  // the figure the caption's height was measured on
+  float caption_min_height_ = 0;
 
   // Panels.
   char path_field_[1024] = "";
