@@ -46,6 +46,35 @@ TEST(Scene, StagesHaveTheirLayers) {
   }
 }
 
+// Where a result ends and where it is not a manifold is drawn, not only counted: curve ends, a
+// surface's border edges (two end points each) and its non-manifold edges.
+TEST(Scene, TheSurfaceStageShowsBordersAndDefects) {
+  scene::Request surface;
+  surface.stage = scene::Stage::surface;
+  EXPECT_EQ(find(scene::build_scene(star(), surface), "border"), nullptr) << "a closed curve";
+
+  Options bordered;
+  bordered.kind = Surface_kind::bordered;
+  const auto strokes = reconstruct(shapes::two_strokes().samples, bordered);
+  const scene::Layer* ends = find(scene::build_scene(strokes, surface), "border");
+  ASSERT_NE(ends, nullptr);
+  EXPECT_EQ(ends->positions.size(), 4u) << "two strokes, four ends";
+  EXPECT_EQ(ends->label, "curve ends (4)");
+
+  const auto saddle = reconstruct(shapes::saddle(20), bordered);
+  const scene::Layer* border = find(scene::build_scene(saddle, surface), "border");
+  ASSERT_NE(border, nullptr);
+  EXPECT_EQ(border->positions.size(), 2 * saddle.stats.boundary_ridges);
+
+  Options closed;  // the saddle as if it were closed: the paper's rule leaves defects
+  closed.method = Method::paper;
+  const auto forced = reconstruct(shapes::saddle(20), closed);
+  ASSERT_GT(forced.stats.non_manifold_ridges, 0u);
+  const scene::Layer* defects = find(scene::build_scene(forced, surface), "non-manifold");
+  ASSERT_NE(defects, nullptr);
+  EXPECT_EQ(defects->positions.size(), 2 * forced.stats.non_manifold_ridges);
+}
+
 TEST(Scene, PropagationReplaysEventByEvent) {
   scene::Request request;
   request.stage = scene::Stage::propagation;

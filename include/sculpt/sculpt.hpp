@@ -305,8 +305,10 @@ struct Reconstruction {
 Surface_rule resolved_rule(const Options& options);
 
 // Whether the surface comes from inserting poles (stages 5-6, then a surface rule): the paper
-// method, and every bordered surface. Otherwise (robust, closed) it comes from carving (stage 6b).
-bool inserts_poles(Method method, Surface_kind kind);
+// method, and bordered surfaces in 3D. Otherwise the robust method carves (stage 6b, closed) or
+// joins nearest neighbours (bordered curves: joins_neighbours).
+bool inserts_poles(Method method, Surface_kind kind, int dimension);
+bool joins_neighbours(Method method, Surface_kind kind, int dimension);
 
 // The verdict on a result, from its statistics: a closed 2-manifold (closed curve in 2D), a
 // bordered one (open curves), or what is wrong with it.

@@ -239,7 +239,7 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
     Run_description run;
     run.input = input.description;
     run.kind = to_string(options.kind);
-    run.rule = surface_rule_name(options);
+    run.rule = surface_rule_name(options, D);
     const auto result = reconstruct(points, options);
     out = report_json(result.stats, run);
     add_reproduced(result.surface);

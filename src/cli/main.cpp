@@ -109,7 +109,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 
   const Reconstruction<D> result = reconstruct(samples, options);
   clear_status();
-  run.rule = surface_rule_name(options);
+  run.rule = surface_rule_name(options, D);
 
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();

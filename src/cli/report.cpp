@@ -7,10 +7,13 @@ namespace sculpt::cli {
 void print_report(std::ostream& out, const Statistics& stats, const Run_description& run) {
   const bool three = stats.dimension == 3;
   const bool paper = stats.method == Method::paper;
-  const bool inserted = inserts_poles(stats.method, stats.kind);
+  const bool inserted = inserts_poles(stats.method, stats.kind, stats.dimension);
   out << fmt::format("sculpt {} ({}D, {}, method {}, {}box factor {})\n", run.input,
                      stats.dimension, run.kind, to_string(stats.method),
-                     inserted ? "rule " + run.rule + ", " : "", run.box_factor);
+                     inserted || joins_neighbours(stats.method, stats.kind, stats.dimension)
+                         ? "rule " + run.rule + ", "
+                         : "",
+                     run.box_factor);
   out << fmt::format("  {:<14}{:>10}{:>12}\n", "stage", "seconds", "peak MiB");
   out << fmt::format("  {:<14}{:>10.3f}\n", "read", run.read_seconds);
   for (const auto& stage : stats.stages) {
@@ -58,9 +61,10 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   row("unused samples", stats.unused_samples);
 }
 
-std::string surface_rule_name(const Options& options) {
-  return inserts_poles(options.method, options.kind) ? to_string(resolved_rule(options))
-                                                     : "manifold carve";
+std::string surface_rule_name(const Options& options, int dimension) {
+  if (joins_neighbours(options.method, options.kind, dimension)) return "nearest neighbours";
+  return inserts_poles(options.method, options.kind, dimension) ? to_string(resolved_rule(options))
+                                                                : "manifold carve";
 }
 
 nlohmann::json report_json(const Statistics& stats, const Run_description& run) {

@@ -20,7 +20,7 @@ struct Run_description {
 
 // The rule that made the surface, for the report: a surface rule, or the robust method's carve
 // (a carved surface comes from no surface rule).
-std::string surface_rule_name(const Options& options);
+std::string surface_rule_name(const Options& options, int dimension);
 
 void print_report(std::ostream& out, const Statistics& stats, const Run_description& run);
 nlohmann::json report_json(const Statistics& stats, const Run_description& run);

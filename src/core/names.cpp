@@ -111,8 +111,12 @@ Surface_rule resolved_rule(const Options& options) {
   return options.kind == Surface_kind::closed ? Surface_rule::skin : Surface_rule::extraction;
 }
 
-bool inserts_poles(Method method, Surface_kind kind) {
-  return method == Method::paper || kind == Surface_kind::bordered;
+bool inserts_poles(Method method, Surface_kind kind, int dimension) {
+  return method == Method::paper || (kind == Surface_kind::bordered && dimension == 3);
+}
+
+bool joins_neighbours(Method method, Surface_kind kind, int dimension) {
+  return method == Method::robust && kind == Surface_kind::bordered && dimension == 2;
 }
 
 const char* to_string(Surface_kind kind) {

@@ -97,8 +97,42 @@ inline Pseudo_code robust_pseudo_code() {
   return code;
 }
 
-inline const Pseudo_code& pseudo_code(Method method) {
-  static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code();
+// The robust method's bordered curves (src/methods/robust/open_curves.hpp): the poles are
+// labelled as for a closed curve, for the stages to show, but the curve joins neighbours.
+inline Pseudo_code open_curves_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",
+      "OSP <- convex poles: outer, weight 1",
+      "label the poles by confidence (as closed)",
+      "for each sample s:   # NN-crust, with ends",
+      "    q <- nearest Delaunay neighbour of s",
+      "    r <- nearest at > 90 degrees from q",
+      "    offer sq; offer sr if |sr| <= 2.5 spacing",
+      "curve <- offers, shortest first, 2 per sample",
+  };
+  code.line_of_stage = common_stage_lines(2);
+  code.line_of_stage.insert({{Stage::seeds, 3},
+                             {Stage::outer_concave, 4},
+                             {Stage::sculpted_delaunay, 5},
+                             {Stage::solid, 9},
+                             {Stage::surface, 9}});
+  code.line_of_reason = {{Label_reason::convex_seed, 3},
+                         {Label_reason::ball_overlap, 4},
+                         {Label_reason::pairing, 4},
+                         {Label_reason::inscribed_cube, 4}};
+  code.before_any_event = 4;
+  return code;
+}
+
+inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface_kind::closed,
+                                      int dimension = 3) {
+  static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code(),
+                           open_curves = open_curves_pseudo_code();
+  if (joins_neighbours(method, kind, dimension)) return open_curves;
   return method == Method::paper ? paper : robust;
 }
 

@@ -27,6 +27,9 @@ inline constexpr Color solid{0.55f, 0.70f, 0.90f};
 inline constexpr Color surface{0.78f, 0.80f, 0.86f};
 inline constexpr Color wireframe{0.15f, 0.15f, 0.20f};
 inline constexpr Color curve{0.05f, 0.05f, 0.05f};
+// Where a result ends (border edges, curve ends) and where it is not a manifold.
+inline constexpr Color border{1.00f, 0.45f, 0.00f};
+inline constexpr Color non_manifold{0.90f, 0.00f, 0.00f};
 inline constexpr Color background{1.0f, 1.0f, 1.0f};
 
 inline Color outer_pole(int dimension) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <map>
 #include <stdexcept>
 
 #include "core/facet_orientation.hpp"
@@ -54,7 +55,11 @@ class Scene_builder {
         contradicted_poles(r_.propagation.labels);
         break;
       case Stage::sculpted_delaunay:
-        if (!inserts_poles(r_.options.method, r_.options.kind)) {
+        if (joins_neighbours(r_.options.method, r_.options.kind, D)) {
+          scene_.title = "No cells carved: open curves join each sample to its nearest neighbours";
+          break;
+        }
+        if (!inserts_poles(r_.options.method, r_.options.kind, D)) {
           // The robust method inserts no pole: it carves the hull's cells directly.
           scene_.title = "Carved hull: the cells left after carving (robust method)";
           edges_of(r_.solid, "carved-hull", "edges of the cells left", palette::delaunay_edge);
@@ -67,6 +72,10 @@ class Scene_builder {
         labelled_poles(r_.propagation.labels, /*only_inserted=*/true);
         break;
       case Stage::solid:
+        if (joins_neighbours(r_.options.method, r_.options.kind, D)) {
+          scene_.title = "No solid: open curves bound no region";
+          break;
+        }
         solid();
         break;
       case Stage::surface:
@@ -418,6 +427,7 @@ class Scene_builder {
         layer.positions.push_back(vec(r_.sites[edge[0]]));
         layer.positions.push_back(vec(r_.sites[edge[1]]));
       }
+      borders_and_defects();
     } else {
       Layer& layer =
           add("surface", "reconstructed surface", Primitive::triangles, palette::surface, 1.0f);
@@ -426,6 +436,7 @@ class Scene_builder {
         for (int v : t) layer.positions.push_back(vec(r_.sites[v]));
       }
       if (request_.smooth) layer.normals = vertex_normals(r_.sites, r_.surface, n_);
+      borders_and_defects();
       if (request_.wireframe) {
         Layer& wire = add("wireframe", "edges", Primitive::lines, palette::wireframe, 1.0f);
         wire.in_legend = false;
@@ -435,6 +446,46 @@ class Scene_builder {
             wire.positions.push_back(vec(r_.sites[t[(j + 1) % 3]]));
           }
         }
+      }
+    }
+  }
+
+  // The result's border (curve ends in 2D, border edges in 3D) and its non-manifold ridges
+  // (branching samples, edges on more than two triangles), each a layer when there are any.
+  void borders_and_defects() {
+    std::map<std::array<int, D - 1>, int> facets_on;
+    for (const auto& facet : r_.surface) {
+      for (int skip = 0; skip < D; ++skip) {
+        std::array<int, D - 1> ridge;
+        for (int j = 0, k = 0; j < D; ++j) {
+          if (j != skip) ridge[k++] = facet[j];
+        }
+        std::sort(ridge.begin(), ridge.end());
+        ++facets_on[ridge];
+      }
+    }
+    const auto layer_of = [&](bool border) -> Layer* {
+      std::size_t count = 0;
+      for (const auto& [ridge, facets] : facets_on) count += border ? facets == 1 : facets > 2;
+      if (count == 0) return nullptr;
+      const std::size_t loops = r_.stats.boundary_loops;
+      const std::string what =
+          D == 2 ? (border ? "curve ends (" + std::to_string(count) + ")"
+                           : "branching samples (" + std::to_string(count) + ")")
+                 : (border ? "border: " + std::to_string(loops) +
+                                 (loops == 1 ? " loop, " : " loops, ") + std::to_string(count) +
+                                 " edges"
+                           : "non-manifold edges (" + std::to_string(count) + ")");
+      return &add(border ? "border" : "non-manifold", what,
+                  D == 2 ? Primitive::points : Primitive::lines,
+                  border ? palette::border : palette::non_manifold, D == 2 ? 11.0f : 3.0f);
+    };
+    for (const bool border : {true, false}) {
+      Layer* layer = layer_of(border);
+      if (!layer) continue;
+      for (const auto& [ridge, facets] : facets_on) {
+        if (border ? facets != 1 : facets <= 2) continue;
+        for (int v : ridge) layer->positions.push_back(vec(r_.sites[v]));
       }
     }
   }

@@ -18,10 +18,12 @@ void close_polygon(Sampled_curve& curve, int first, int count) {
   for (int i = 0; i < count; ++i) curve.edges.push_back({first + i, first + (i + 1) % count});
 }
 
-}  // namespace
-
-Sampled_curve sample_closed_curve(const std::function<Point<2>(double)>& curve, int samples,
-                                  const std::function<double(double)>& density) {
+// Samples at equal shares of the density integrated along arc length: `samples` of them over
+// [0, 1), or over [0, 1] with both ends when `include_end`.
+std::vector<Point<2>> sample_by_arc_length(const std::function<Point<2>(double)>& curve,
+                                           int samples,
+                                           const std::function<double(double)>& density,
+                                           bool include_end) {
   // Integrate density along arc length on a fine polyline, then cut it into equal shares.
   const int steps = std::max(20000, samples * 50);
   std::vector<double> t(steps + 1), weight(steps + 1, 0.0);
@@ -34,14 +36,89 @@ Sampled_curve sample_closed_curve(const std::function<Point<2>(double)>& curve, 
     weight[i] = weight[i - 1] + length * w;
     previous = p;
   }
-  Sampled_curve result;
+  std::vector<Point<2>> points;
+  const int shares = include_end ? samples - 1 : samples;
   for (int k = 0; k < samples; ++k) {
-    const double target = weight.back() * k / samples;
+    const double target = weight.back() * k / shares;
     const auto i = std::lower_bound(weight.begin(), weight.end(), target) - weight.begin();
     const double a = i == 0 ? 0 : (target - weight[i - 1]) / (weight[i] - weight[i - 1]);
-    result.samples.push_back(curve(i == 0 ? 0.0 : t[i - 1] + a * (t[i] - t[i - 1])));
+    points.push_back(curve(i == 0 ? 0.0 : t[i - 1] + a * (t[i] - t[i - 1])));
   }
+  return points;
+}
+
+Point<2> on_blob(double angle) {
+  const double r = 1.0 + 0.25 * std::sin(2 * angle + 0.4) + 0.15 * std::cos(3 * angle) +
+                   0.08 * std::sin(5 * angle + 1.0);
+  return {1.3 * r * std::cos(angle), r * std::sin(angle)};
+}
+
+void join_in_order(Sampled_curve& curve, int first, int count) {
+  for (int i = 0; i + 1 < count; ++i) curve.edges.push_back({first + i, first + i + 1});
+}
+
+}  // namespace
+
+Sampled_curve sample_closed_curve(const std::function<Point<2>(double)>& curve, int samples,
+                                  const std::function<double(double)>& density) {
+  Sampled_curve result;
+  result.samples = sample_by_arc_length(curve, samples, density, /*include_end=*/false);
   close_polygon(result, 0, samples);
+  return result;
+}
+
+Sampled_curve sample_open_curve(const std::function<Point<2>(double)>& curve, int samples) {
+  Sampled_curve result;
+  result.samples = sample_by_arc_length(curve, samples, {}, /*include_end=*/true);
+  join_in_order(result, 0, samples);
+  return result;
+}
+
+Sampled_curve wavy_arc(double degrees, int samples_per_turn) {
+  const double span = degrees * pi / 180;
+  // The blob's samples are equally spaced by arc length; so are these, at the same spacing.
+  double length = 0, turn = 0;
+  Point<2> previous = on_blob(0);
+  for (int i = 1; i <= 20000; ++i) {
+    const double angle = 2 * pi * i / 20000;
+    const Point<2> p = on_blob(angle);
+    const double step = std::hypot(p[0] - previous[0], p[1] - previous[1]);
+    turn += step;
+    if (angle <= span) length += step;
+    previous = p;
+  }
+  const int samples = std::max(2, int(std::lround(samples_per_turn * length / turn)) + 1);
+  return sample_open_curve([=](double t) { return on_blob(span * t); }, samples);
+}
+
+Sampled_curve spiral(double turns, double spacing) {
+  // r = 1 + θ / 2π: arms one unit apart, the innermost turn of radius 1.
+  const auto at = [=](double t) {
+    const double angle = 2 * pi * turns * t;
+    return on_circle(1.0 + angle / (2 * pi), angle);
+  };
+  double length = 0;
+  for (int i = 1; i <= 20000; ++i) {
+    const Point<2> a = at((i - 1) / 20000.0), b = at(i / 20000.0);
+    length += std::hypot(b[0] - a[0], b[1] - a[1]);
+  }
+  return sample_open_curve(at, int(std::ceil(length / spacing)) + 1);
+}
+
+Sampled_curve two_strokes(double gap) {
+  Sampled_curve result;
+  for (int stroke = 0; stroke < 2; ++stroke) {
+    const double phase = stroke, y = stroke * gap;
+    const int first = int(result.samples.size());
+    Sampled_curve one = sample_open_curve(
+        [=](double t) {
+          const double x = 2.0 * t;
+          return Point<2>{x, y + 0.1 * std::sin(3 * x + phase)};
+        },
+        41);
+    result.samples.insert(result.samples.end(), one.samples.begin(), one.samples.end());
+    join_in_order(result, first, 41);
+  }
   return result;
 }
 
@@ -59,14 +136,7 @@ Sampled_curve star(int samples, int arms, double depth) {
 }
 
 Sampled_curve blob(int samples) {
-  return sample_closed_curve(
-      [](double t) {
-        const double a = 2 * pi * t;
-        const double r = 1.0 + 0.25 * std::sin(2 * a + 0.4) + 0.15 * std::cos(3 * a) +
-                         0.08 * std::sin(5 * a + 1.0);
-        return Point<2>{1.3 * r * std::cos(a), r * std::sin(a)};
-      },
-      samples);
+  return sample_closed_curve([](double t) { return on_blob(2 * pi * t); }, samples);
 }
 
 Sampled_curve nested_circles(int outer_samples, int inner_samples) {
@@ -277,6 +347,8 @@ const std::vector<Example>& examples() {
       {"nested", 2, "two nested circles (an annulus), 120 + 60 samples", false},
       {"nonuniform", 2, "an ellipse sampled 9:1 non-uniformly, 200 samples", false},
       {"arc", 2, "an open three-quarter circle, 60 samples (bordered)", true},
+      {"spiral", 2, "an open spiral of 2.5 turns, 179 samples (bordered)", true},
+      {"strokes", 2, "two wavy open strokes side by side, 41 samples each (bordered)", true},
       {"sphere", 3, "2000 samples on a sphere", false},
       {"torus", 3, "4000 random samples on a torus (genus 1)", false},
       {"bumpy", 3, "a sphere with dents and bumps, 6000 samples", false},
@@ -306,6 +378,8 @@ std::vector<Point<2>> example_points_2(const std::string& name) {
   if (name == "nested") return nested_circles(120, 60).samples;
   if (name == "nonuniform") return nonuniform_ellipse(200).samples;
   if (name == "arc") return open_arc(60).samples;
+  if (name == "spiral") return spiral().samples;
+  if (name == "strokes") return two_strokes().samples;
   throw std::invalid_argument("no 2D example named '" + name + "'");
 }
 

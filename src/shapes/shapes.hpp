@@ -27,6 +27,15 @@ Sampled_curve blob(int samples);
 Sampled_curve nested_circles(int outer_samples, int inner_samples);  // an annulus' two borders
 Sampled_curve nonuniform_ellipse(int samples, double ratio = 9.0);   // density ratio max/min
 Sampled_curve open_arc(int samples);  // a three-quarter circle: two end points
+// An open plane curve t in [0, 1], sampled by arc length from end to end (both ends sampled).
+Sampled_curve sample_open_curve(const std::function<Point<2>(double)>& curve, int samples);
+// The part of the blob's wavy outline from angle 0 to `degrees`, as densely sampled as
+// blob(samples_per_turn): an open arc of any span up to nearly closed.
+Sampled_curve wavy_arc(double degrees, int samples_per_turn = 150);
+// An Archimedean spiral of `turns` turns, its arms one unit apart, samples `spacing` apart.
+Sampled_curve spiral(double turns = 2.5, double spacing = 0.2);
+// Two wavy open strokes side by side, `gap` apart, samples 0.05 apart.
+Sampled_curve two_strokes(double gap = 0.5);
 
 // Surfaces: samples only.
 std::vector<Point<3>> sphere(int samples);

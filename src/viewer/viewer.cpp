@@ -953,9 +953,10 @@ void Viewer::draw_propagation_controls() {
 
 void Viewer::draw_pseudo_code() {
   if (!ImGui::CollapsingHeader("Algorithm", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  const Method method =
-      std::visit([](const auto& r) { return r.options.method; }, *reconstruction_);
-  const frontend::Pseudo_code& code = frontend::pseudo_code(method);
+  const Options& options =
+      std::visit([](const auto& r) -> const Options& { return r.options; }, *reconstruction_);
+  const frontend::Pseudo_code& code =
+      frontend::pseudo_code(options.method, options.kind, dimension_of(*reconstruction_));
   const int current = frontend::current_line(code, request_.stage, latest_event());
   const auto& lines = code.lines;
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
@@ -1040,7 +1041,9 @@ void Viewer::draw_statistics() {
   ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
   ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",
               s.conflicts, s.unlabelled_poles);
-  if (inserts_poles(s.method, s.kind)) {
+  if (joins_neighbours(s.method, s.kind, s.dimension)) {
+    ImGui::Text("cells %zu; the curves join nearest neighbours", s.delaunay_cells);
+  } else if (inserts_poles(s.method, s.kind, s.dimension)) {
     ImGui::Text("cells %zu -> %zu   solid %zu", s.delaunay_cells, s.sculpted_cells, s.solid_cells);
   } else {
     ImGui::Text("cells %zu, carved %zu, outer kept %zu", s.delaunay_cells, s.carved_cells,

@@ -5,8 +5,9 @@
 //   7.  solid       the cells left
 //   8.  surface     the facets between the solid and the outside
 // No pole is inserted: a cell judged outer is removed directly, so DT(S ∪ OUP) is never built.
-// Bordered surfaces (section 4) keep the paper's insertion of UP and its extraction rule, with
-// the confidence labels; their own rule is future work.
+// Bordered curves (section 4, in 2D) join each sample to its nearest neighbours and end where the
+// samples end (open_curves.hpp). Bordered surfaces keep the paper's insertion of UP and its
+// extraction rule, with the confidence labels; their own rule is future work.
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -18,6 +19,7 @@
 #include "cell_classification.hpp"
 #include "confidence_labelling.hpp"
 #include "manifold_carving.hpp"
+#include "open_curves.hpp"
 
 namespace sculpt {
 
@@ -31,7 +33,15 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
   }
   count_labels(result);
 
-  if (inserts_poles(Method::robust, result.options.kind)) {
+  if constexpr (Traits::dimension == 2) {
+    if (joins_neighbours(Method::robust, result.options.kind, 2)) {
+      clock.start("surface");
+      result.surface =
+          open_curves(triangulation, result.sites, static_cast<int>(result.sample_count()));
+      return;
+    }
+  }
+  if (inserts_poles(Method::robust, result.options.kind, Traits::dimension)) {
     sculpt_with_poles<Traits>(triangulation, result, clock);
     return;
   }
