@@ -151,7 +151,7 @@ TEST(Cli, AllOutputsOrNone) {
 
 TEST(Cli, UnknownMethodIsRefused) {
   const Command_result run =
-      run_sculpt("reconstruct --method crust --example star -o " + output_path("x.svg"));
+      run_sculpt("reconstruct --method no-such-method --example star -o " + output_path("x.svg"));
   EXPECT_NE(run.exit_code, 0);
   EXPECT_FALSE(std::filesystem::exists(output_path("x.svg")));
 }

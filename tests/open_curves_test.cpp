@@ -56,6 +56,20 @@ TEST(Open_curves, EveryStrokeIsOneOpenPolylineThroughItsSamples) {
   }
 }
 
+TEST(Open_curves, NoTinyLoopCloses) {
+  // Three samples close together beside two strokes: noise, not a closed curve. They stay one
+  // open piece of two edges instead of a triangle.
+  auto samples = shapes::two_strokes().samples;
+  for (const Point<2>& p : {Point<2>{3.0, 0.0}, Point<2>{3.04, 0.0}, Point<2>{3.02, 0.035}}) {
+    samples.push_back(p);
+  }
+  const auto result = reconstruct(samples, robust_bordered());
+  EXPECT_EQ(result.stats.boundary_loops, 3u) << "open curves";
+  EXPECT_EQ(result.stats.components, 3u);
+  EXPECT_EQ(result.stats.unused_samples, 0u);
+  EXPECT_EQ(result.stats.non_manifold_ridges, 0u);
+}
+
 TEST(Open_curves, ClosedCurvesStayClosed) {
   for (const auto& [name, truth] : std::vector<std::pair<const char*, shapes::Sampled_curve>>{
            {"star", shapes::star(200)},

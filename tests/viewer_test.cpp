@@ -51,7 +51,7 @@ TEST(Viewer, StepsThroughEveryStageIn2dAnd3d) {
   std::vector<std::string> shots;
   for (const std::string example : {"star", "bumpy"}) {
     script += "example " + example + "\nwait\n";
-    for (scene::Stage stage : scene::all_stages()) {
+    for (scene::Stage stage : scene::stages_of(Method::robust)) {
       const std::string shot =
           testing::output_path("viewer-" + example + "-" + scene::stage_id(stage) + ".png");
       script +=
@@ -118,7 +118,9 @@ TEST(Viewer, AMalformedScriptCommandIsOneLineAndAFailureNotACrash) {
       {"screenshot", "needs a PNG path"},
       {"animation maybe", "on or off"},
       {"figure fig99", "no figure 'fig99'"},
-      {"stage nowhere", "no stage 'nowhere'"}};
+      {"stage nowhere", "no stage 'nowhere'"},
+      {"stage crust-delaunay", "no stage 'crust-delaunay'"},
+      {"method nowhere", "no method 'nowhere'"}};
   std::string script = "example star\nwait\n";
   for (const auto& [command, _] : commands) script += command + "\n";
   const std::string picture = testing::output_path("after-bad-commands.png");
@@ -136,6 +138,19 @@ TEST(Viewer, AMalformedScriptCommandIsOneLineAndAFailureNotACrash) {
   }
   EXPECT_EQ(complaints, commands.size()) << log;
   EXPECT_EQ(render::read_png(picture).width, 64);
+}
+
+// A class flips between methods on the same points; each method's own stages can be shown.
+TEST(Viewer, SwitchesMethodOnTheSamePoints) {
+  const std::string crust = testing::output_path("viewer-crust.png");
+  EXPECT_EQ(run_viewer_script("methods",
+                              "example blob\nwait\nmethod crust\nwait\nstage crust-delaunay\n"
+                              "frames 2\nscreenshot " +
+                                  crust +
+                                  "\nmethod nn-crust\nwait\nstage surface\nframes 1\n"
+                                  "method paper\nwait\nstage propagation\nframes 1\nquit\n"),
+            0);
+  EXPECT_GT(render::read_png(crust).width, 0);
 }
 
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {

@@ -58,8 +58,10 @@ enum class Surface_kind { closed, bordered };
 // The reconstruction method: siblings over the shared stages 1-3. The names are what the command
 // line, the viewer and the statistics use (method_names(), parse_method()).
 enum class Method {
-  paper,   // Kuo & Yau's algorithm exactly as published (the figures and lessons use it)
-  robust,  // confidence labelling and a manifold carve: the default, for real scans
+  paper,     // Kuo & Yau's algorithm exactly as published (the figures and lessons use it)
+  robust,    // confidence labelling and a manifold carve: the default, for real scans
+  crust,     // Amenta, Bern & Kamvysselis 1998: Delaunay edges of S and its Voronoi vertices
+  nn_crust,  // Dey & Kumar 1999: each sample's nearest neighbour and nearest on the far side
 };
 
 // Which facets of DT(S ∪ OUP) make the surface.
@@ -225,6 +227,15 @@ struct Carving_stage {
   std::vector<int> buried_samples;    // samples left inside the solid, on no surface facet
 };
 
+// The crust's own stage (method crust): the Voronoi vertices V of the samples (the circumcentres
+// of the finite cells of stage 1) and DT(S ∪ V), whose cells number a site i < n as sample i and
+// i >= n as V[i - n]. The curve is its edges between two samples.
+template <int D>
+struct Crust_stage {
+  std::vector<Point<D>> voronoi_vertices;
+  Delaunay_stage<D> delaunay;
+};
+
 struct Stage_measure {
   std::string name;
   double seconds = 0;
@@ -282,6 +293,7 @@ struct Reconstruction {
   Insertion_stage insertion;            // 5 (paper)
   Delaunay_stage<D> sculpted_delaunay;  // 6 (paper)
   Carving_stage carving;                // 6b (robust)
+  Crust_stage<D> crust;                 // 6c (crust)
   std::vector<Cell<D>> solid;           // 7: cells of stage 6 whose vertices are all samples
   std::vector<Facet<D>> surface;        // 8: oriented facets; closed: normals point outward
   Statistics stats;
@@ -331,6 +343,11 @@ double triangles_reproduced(const std::vector<Facet<3>>& reference,
 // Names of the methods (the default first) and rules, and the reverse (false for an unknown name).
 const std::vector<const char*>& method_names();
 const char* describe(Method method);  // a few words for menus and help
+// Whether a method works in this dimension (the crusts reconstruct curves only, so far).
+bool reconstructs_in(Method method, int dimension);
+// Whether a method labels poles and sculpts a solid (paper, robust), or only reads the
+// triangulation (the crusts).
+bool sculpts(Method method);
 bool parse_method(const std::string& name, Method& method);
 bool parse_rule(const std::string& name, Surface_rule& rule);  // auto, skin, extraction
 

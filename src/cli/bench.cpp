@@ -96,8 +96,13 @@ nlohmann::json measure(const std::string& name, const std::vector<std::string>& 
   std::map<std::string, std::vector<nlohmann::json>> runs;
   for (int run = 0; run < std::max(1, args.runs); ++run) {
     for (auto [label, arguments] : jobs) {
-      if (label == "advancing-front" && runs["delaunay"].front().value("dimension", 0) != 3) {
-        continue;  // a surface method: not for curves (nor for an input nothing could read)
+      if (label != "delaunay") {  // measured first: it says the input's dimension
+        const int dimension = runs["delaunay"].front().value("dimension", 0);
+        if (label == "advancing-front" && dimension != 3) {
+          continue;  // a surface method: not for curves (nor for an input nothing could read)
+        }
+        Method method;
+        if (parse_method(label, method) && !reconstructs_in(method, dimension)) continue;
       }
       arguments.insert(arguments.end(), source.begin(), source.end());
       runs[label].push_back(run_job_process(arguments));
@@ -107,7 +112,9 @@ nlohmann::json measure(const std::string& name, const std::vector<std::string>& 
   row["input"] = name;
   row["delaunay_only"] = median_run(runs["delaunay"]);
   row["samples"] = row["delaunay_only"].value("samples", 0);
-  for (const auto& method : methods) row["methods"][method] = median_run(runs[method]);
+  for (const auto& method : methods) {
+    if (!runs[method].empty()) row["methods"][method] = median_run(runs[method]);
+  }
   if (runs.count("advancing-front")) row["advancing_front"] = median_run(runs["advancing-front"]);
   return row;
 }

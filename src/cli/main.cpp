@@ -190,8 +190,9 @@ int main(int argc, char** argv) {
       ->required();
   reconstruct
       ->add_option("--method", args.method,
-                   "robust (default: confidence labelling, manifold carve) or paper (Kuo & Yau "
-                   "exactly)")
+                   "robust (default: confidence labelling, manifold carve), paper (Kuo & Yau "
+                   "exactly), crust or nn-crust (curves: Amenta et al.'s crust, Dey & Kumar's "
+                   "NN-crust)")
       ->capture_default_str()
       ->check(CLI::IsMember(sculpt::method_names()));
   reconstruct->add_flag("--require-manifold", args.require_manifold,

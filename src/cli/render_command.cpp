@@ -26,7 +26,7 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
                      "Show this sample's Voronoi cell, poles, polar balls and inscribed cubes");
   render->add_option("--focus-pole", shot.focus_pole,
                      "Show this pole's polar ball and the pole that labelled it");
-  render->add_option("--method", shot.method, "Reconstruction method: robust (default) or paper")
+  render->add_option("--method", shot.method, "Reconstruction method: robust (default), paper, crust or nn-crust")
       ->capture_default_str()
       ->check(CLI::IsMember(sculpt::method_names()));
   render->add_option("--box-factor", shot.box_factor, "Bounding box factor")->capture_default_str();

@@ -32,11 +32,13 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
           t[0] || t[1] || t[2] ? fmt::format("(p - ({:g}, {:g}, {:g})) ", t[0], t[1], t[2]) : "p ",
           stats.scale_exponent));
   row("poles", stats.poles);
-  row("convex poles", stats.convex_poles);
-  row("inner / outer poles", fmt::format("{} / {}", stats.inner_poles, stats.outer_poles));
-  row("unlabelled poles", stats.unlabelled_poles);
-  row(paper ? "conflicts (poles / offers)" : "contradicted poles (poles / offers)",
-      fmt::format("{} / {}", stats.conflicts, stats.conflict_offers));
+  if (sculpts(stats.method)) {  // the crusts label no pole and build no solid
+    row("convex poles", stats.convex_poles);
+    row("inner / outer poles", fmt::format("{} / {}", stats.inner_poles, stats.outer_poles));
+    row("unlabelled poles", stats.unlabelled_poles);
+    row(paper ? "conflicts (poles / offers)" : "contradicted poles (poles / offers)",
+        fmt::format("{} / {}", stats.conflicts, stats.conflict_offers));
+  }
   row("cells of DT(S+BBV)", stats.delaunay_cells);
   if (inserted) {
     row(run.kind == "closed" ? "inserted poles (m - 2^D)" : "inserted poles (l - 2^D)",
@@ -46,11 +48,11 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     } else {
       row("cells of DT(S+OUP)", "not built (queries)");
     }
-  } else {
+  } else if (sculpts(stats.method)) {
     row("carved cells", stats.carved_cells);
     row("outer cells kept (manifold)", stats.kept_outer_cells);
   }
-  row("solid cells", stats.solid_cells);
+  if (sculpts(stats.method)) row("solid cells", stats.solid_cells);
   row(three ? "triangles" : "edges", stats.facets);
   row(three ? "boundary edges" : "curve end points", stats.boundary_ridges);
   row(three ? "non-manifold edges" : "branching samples", stats.non_manifold_ridges);
@@ -62,6 +64,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
 }
 
 std::string surface_rule_name(const Options& options, int dimension) {
+  if (!sculpts(options.method)) return to_string(options.method);
   if (joins_neighbours(options.method, options.kind, dimension)) return "nearest neighbours";
   return inserts_poles(options.method, options.kind, dimension) ? to_string(resolved_rule(options))
                                                                 : "manifold carve";

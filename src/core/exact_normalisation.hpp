@@ -120,6 +120,7 @@ void undo_normalisation(Reconstruction<D>& result, const Normalisation<D>& n,
     pole.center = n.undo(pole.center);
     pole.radius = std::ldexp(pole.radius, -n.exponent);
   }
+  for (auto& vertex : result.crust.voronoi_vertices) vertex = n.undo(vertex);
 }
 
 }  // namespace sculpt

@@ -39,13 +39,18 @@ const char* to_string(Method method) {
       return "paper";
     case Method::robust:
       return "robust";
+    case Method::crust:
+      return "crust";
+    case Method::nn_crust:
+      return "nn-crust";
   }
   return "?";
 }
 
 const std::vector<const char*>& method_names() {
   static const std::vector<const char*> names = {to_string(Options{}.method),
-                                                 to_string(Method::paper)};
+                                                 to_string(Method::paper), to_string(Method::crust),
+                                                 to_string(Method::nn_crust)};
   return names;
 }
 
@@ -55,12 +60,24 @@ const char* describe(Method method) {
       return "Kuo & Yau's algorithm, as published";
     case Method::robust:
       return "confidence labelling and manifold carving";
+    case Method::crust:
+      return "the crust of Amenta, Bern & Kamvysselis (curves)";
+    case Method::nn_crust:
+      return "the nearest-neighbour crust of Dey & Kumar (curves)";
   }
   return "?";
 }
 
+bool sculpts(Method method) {
+  return method == Method::paper || method == Method::robust;
+}
+
+bool reconstructs_in(Method method, int dimension) {
+  return dimension == 2 || (method != Method::crust && method != Method::nn_crust);
+}
+
 bool parse_method(const std::string& name, Method& method) {
-  for (Method m : {Method::paper, Method::robust}) {
+  for (Method m : {Method::paper, Method::robust, Method::crust, Method::nn_crust}) {
     if (name == to_string(m)) {
       method = m;
       return true;
@@ -112,7 +129,8 @@ Surface_rule resolved_rule(const Options& options) {
 }
 
 bool inserts_poles(Method method, Surface_kind kind, int dimension) {
-  return method == Method::paper || (kind == Surface_kind::bordered && dimension == 3);
+  return method == Method::paper ||
+         (method == Method::robust && kind == Surface_kind::bordered && dimension == 3);
 }
 
 bool joins_neighbours(Method method, Surface_kind kind, int dimension) {

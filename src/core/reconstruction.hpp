@@ -1,12 +1,14 @@
 // A reconstruction, written once for every dimension: Traits is Traits_2 or Traits_3. Each
 // stage is a function of its own file. This driver runs the stages every method shares (checks,
-// Delaunay, poles, seeds), hands the triangulation to the chosen method (src/methods), then
+// Delaunay, poles), hands the triangulation to the chosen method (src/methods), then
 // measures the result's topology; it times every stage and gathers the statistics.
 #pragma once
 
 #include <algorithm>
 #include <vector>
 
+#include "../methods/crust/crust_method.hpp"
+#include "../methods/crust/nn_crust.hpp"
 #include "../methods/paper/paper_method.hpp"
 #include "../methods/robust/robust_method.hpp"
 #include "delaunay.hpp"
@@ -31,6 +33,10 @@ Reconstruction<Traits::dimension> reconstruct_with(
   Stage_clock clock(result.stats, result.options);
 
   clock.start("checks");
+  if (!reconstructs_in(options.method, Traits::dimension)) {
+    throw Input_error(std::string("the method ") + to_string(options.method) +
+                      " reconstructs curves (2D points) only; for surfaces use robust or paper");
+  }
   check_input<Traits>(samples, options);
   const Normalisation<Traits::dimension> normalisation =
       normalisation_of<Traits::dimension>(samples);
@@ -48,16 +54,26 @@ Reconstruction<Traits::dimension> reconstruct_with(
 
   clock.start("poles");
   find_poles<Traits>(triangulation, result, clock);
-
-  clock.start("seeds");
-  select_seeds(result);
+  result.stats.poles = result.poles.poles.size();
 
   switch (options.method) {
     case Method::paper:
+      clock.start("seeds");
+      select_seeds(result);
       run_paper_method<Traits>(triangulation, result, clock);
       break;
     case Method::robust:
+      clock.start("seeds");
+      select_seeds(result);
       run_robust_method<Traits>(triangulation, result, clock);
+      break;
+    case Method::crust:
+      if constexpr (Traits::dimension == 2) run_crust_method<Traits>(triangulation, result, clock);
+      break;
+    case Method::nn_crust:
+      if constexpr (Traits::dimension == 2) {
+        run_nn_crust_method<Traits>(triangulation, result, clock);
+      }
       break;
   }
 

@@ -128,12 +128,55 @@ inline Pseudo_code open_curves_pseudo_code() {
   return code;
 }
 
+// The crust of Amenta, Bern and Kamvysselis (src/methods/crust/crust_method.hpp).
+inline Pseudo_code crust_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "V <- Voronoi vertices: circumcentres of DT",
+      "DT' <- Delaunay(S + V)",
+      "crust <- edges of DT' between two samples",
+  };
+  code.line_of_stage = {{Stage::samples, 0},
+                        {Stage::delaunay, 0},
+                        {Stage::voronoi, 1},
+                        {Stage::crust_delaunay, 2},
+                        {Stage::surface, 3}};
+  return code;
+}
+
+// The nearest-neighbour crust of Dey and Kumar (src/methods/crust/nn_crust.hpp).
+inline Pseudo_code nn_crust_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    q <- nearest Delaunay neighbour of s",
+      "    r <- nearest at > 90 degrees from q",
+      "    keep sq, sr",
+  };
+  code.line_of_stage = {{Stage::samples, 0}, {Stage::delaunay, 0}, {Stage::surface, 4}};
+  return code;
+}
+
 inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface_kind::closed,
                                       int dimension = 3) {
   static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code(),
-                           open_curves = open_curves_pseudo_code();
-  if (joins_neighbours(method, kind, dimension)) return open_curves;
-  return method == Method::paper ? paper : robust;
+                           open_curves = open_curves_pseudo_code(), crust = crust_pseudo_code(),
+                           nn_crust = nn_crust_pseudo_code();
+  switch (method) {
+    case Method::paper:
+      return paper;
+    case Method::crust:
+      return crust;
+    case Method::nn_crust:
+      return nn_crust;
+    case Method::robust:
+      break;
+  }
+  return joins_neighbours(method, kind, dimension) ? open_curves : robust;
 }
 
 // The line to highlight for a stage; in the propagation, the line of the latest event's reason.

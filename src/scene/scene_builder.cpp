@@ -25,6 +25,14 @@ class Scene_builder {
   }
 
   Scene build() {
+    if (!has_stage(r_.options.method, request_.stage)) {
+      std::string stages;
+      for (Stage s : stages_of(r_.options.method))
+        stages += (stages.empty() ? "" : ", ") + std::string(stage_id(s));
+      throw std::invalid_argument(std::string("the method ") + to_string(r_.options.method) +
+                                  " has no stage '" + stage_id(request_.stage) +
+                                  "' (its stages: " + stages + ")");
+    }
     switch (request_.stage) {
       case Stage::samples:
         break;
@@ -70,6 +78,9 @@ class Scene_builder {
         edges_of(r_.sculpted_delaunay.cells, "sculpted-delaunay", "Delaunay edges DT(S + OUP)",
                  palette::delaunay_edge);
         labelled_poles(r_.propagation.labels, /*only_inserted=*/true);
+        break;
+      case Stage::crust_delaunay:
+        crust_delaunay();
         break;
       case Stage::solid:
         if (joins_neighbours(r_.options.method, r_.options.kind, D)) {
@@ -141,6 +152,13 @@ class Scene_builder {
 
   void edges_of(const std::vector<Cell<D>>& cells, const char* id, const std::string& label,
                 Color color) {
+    edges_of(cells, id, label, color, [&](int site) { return r_.sites[site]; });
+  }
+
+  // The same, for cells whose vertices are placed by `position` (a site index to a point).
+  template <class Position>
+  void edges_of(const std::vector<Cell<D>>& cells, const char* id, const std::string& label,
+                Color color, Position position) {
     std::vector<std::pair<int, int>> edges;
     for (const auto& cell : cells) {
       for (int i = 0; i <= D; ++i) {
@@ -151,8 +169,8 @@ class Scene_builder {
     edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
     Layer& layer = add(id, label, Primitive::lines, color, D == 2 ? 1.5f : 1.0f);
     for (const auto& [a, b] : edges) {
-      layer.positions.push_back(vec(r_.sites[a]));
-      layer.positions.push_back(vec(r_.sites[b]));
+      layer.positions.push_back(vec(position(a)));
+      layer.positions.push_back(vec(position(b)));
     }
   }
 
@@ -448,6 +466,22 @@ class Scene_builder {
         }
       }
     }
+  }
+
+  // The crust's DT(S ∪ V): its edges, and the Voronoi vertices V that break the edges across
+  // the region between two parts of the curve.
+  void crust_delaunay() {
+    const auto& crust = r_.crust;
+    if (crust.delaunay.cells.size() != crust.delaunay.cell_count) {
+      throw std::invalid_argument("this reconstruction did not keep its triangulations");
+    }
+    edges_of(crust.delaunay.cells, "crust-delaunay", "Delaunay edges DT(S + V)",
+             palette::delaunay_edge,
+             [&](int i) { return i < n_ ? r_.sites[i] : crust.voronoi_vertices[i - n_]; });
+    // Red like the poles, which are some of them: both lie near the medial axis.
+    Layer& vertices = add("voronoi-vertices", "Voronoi vertices V", Primitive::points,
+                          palette::pole, D == 2 ? 6 : 4);
+    for (const auto& v : crust.voronoi_vertices) vertices.positions.push_back(vec(v));
   }
 
   // The result's border (curve ends in 2D, border edges in 3D) and its non-manifold ridges

@@ -1,15 +1,41 @@
 // The names of the stages, as the command line, the viewer's stepper and the figures use them.
+#include <algorithm>
+
 #include "scene.hpp"
 
 namespace sculpt::scene {
 
 const std::vector<Stage>& all_stages() {
   static const std::vector<Stage> stages = {
+      Stage::samples,        Stage::delaunay,      Stage::hull,
+      Stage::voronoi,        Stage::poles,         Stage::seeds,
+      Stage::propagation,    Stage::outer_concave, Stage::sculpted_delaunay,
+      Stage::crust_delaunay, Stage::solid,         Stage::surface};
+  return stages;
+}
+
+const std::vector<Stage>& stages_of(Method method) {
+  static const std::vector<Stage> sculpting = {
       Stage::samples,     Stage::delaunay,      Stage::hull,
       Stage::voronoi,     Stage::poles,         Stage::seeds,
       Stage::propagation, Stage::outer_concave, Stage::sculpted_delaunay,
       Stage::solid,       Stage::surface};
-  return stages;
+  static const std::vector<Stage> crust = {Stage::samples, Stage::delaunay, Stage::voronoi,
+                                           Stage::crust_delaunay, Stage::surface};
+  static const std::vector<Stage> nn_crust = {Stage::samples, Stage::delaunay, Stage::surface};
+  switch (method) {
+    case Method::crust:
+      return crust;
+    case Method::nn_crust:
+      return nn_crust;
+    default:
+      return sculpting;
+  }
+}
+
+bool has_stage(Method method, Stage stage) {
+  const auto& stages = stages_of(method);
+  return std::find(stages.begin(), stages.end(), stage) != stages.end();
 }
 
 const char* stage_id(Stage stage) {
@@ -32,6 +58,8 @@ const char* stage_id(Stage stage) {
       return "outer-concave";
     case Stage::sculpted_delaunay:
       return "sculpted-delaunay";
+    case Stage::crust_delaunay:
+      return "crust-delaunay";
     case Stage::solid:
       return "solid";
     case Stage::surface:
@@ -60,6 +88,8 @@ const char* stage_title(Stage stage) {
       return "Inner poles and outer concave poles";
     case Stage::sculpted_delaunay:
       return "DT(S + OUP)";
+    case Stage::crust_delaunay:
+      return "DT(S + V): the samples and their Voronoi vertices";
     case Stage::solid:
       return "Sculpted solid";
     case Stage::surface:

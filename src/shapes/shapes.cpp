@@ -347,6 +347,8 @@ const std::vector<Example>& examples() {
       {"nested", 2, "two nested circles (an annulus), 120 + 60 samples", false},
       {"nonuniform", 2, "an ellipse sampled 9:1 non-uniformly, 200 samples", false},
       {"arc", 2, "an open three-quarter circle, 60 samples (bordered)", true},
+      {"wavy-arc", 2, "340 degrees of the blob's outline: an open curve nearly closed (bordered)",
+       true},
       {"spiral", 2, "an open spiral of 2.5 turns, 179 samples (bordered)", true},
       {"strokes", 2, "two wavy open strokes side by side, 41 samples each (bordered)", true},
       {"sphere", 3, "2000 samples on a sphere", false},
@@ -378,6 +380,7 @@ std::vector<Point<2>> example_points_2(const std::string& name) {
   if (name == "nested") return nested_circles(120, 60).samples;
   if (name == "nonuniform") return nonuniform_ellipse(200).samples;
   if (name == "arc") return open_arc(60).samples;
+  if (name == "wavy-arc") return wavy_arc(340).samples;
   if (name == "spiral") return spiral().samples;
   if (name == "strokes") return two_strokes().samples;
   throw std::invalid_argument("no 2D example named '" + name + "'");

@@ -121,7 +121,7 @@ std::string Script::before_frame(Viewer& viewer) {
         fail("no stage '" + argument + "'");
         continue;
       }
-      viewer.set_stage(stage);
+      done(viewer.set_stage(stage));
     } else if (command == "next") {
       viewer.step_stage(+1);
     } else if (command == "previous") {
@@ -138,6 +138,8 @@ std::string Script::before_frame(Viewer& viewer) {
       if (const auto pole = count("a pole index (or -1)", -1, 1L << 31)) {
         done(viewer.pick_pole(int(*pole)));
       }
+    } else if (command == "method") {
+      if (needs_argument("a method name")) done(viewer.switch_method(argument));
     } else if (command == "figure") {
       if (needs_argument("a figure (fig01 ... fig15)")) done(viewer.open_figure(argument));
     } else if (command == "panel") {

@@ -7,6 +7,7 @@
 //   cancel              ask the running reconstruction to stop
 //   expect-busy         fail unless a reconstruction is running (the UI is not blocked)
 //   stage poles         show a stage (next / previous step through them)
+//   method crust        reconstruct the loaded input again with another method
 //   step 25             propagation: show the first 25 labelling events
 //   pick-sample 10      select a sample (pick-pole N: a pole)
 //   frames 3            draw three frames

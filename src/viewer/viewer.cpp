@@ -101,6 +101,21 @@ void Viewer::rerun() {
   start_job(last_request_);
 }
 
+bool Viewer::switch_method(const std::string& name) {
+  Method method;
+  if (!parse_method(name, method)) {
+    message_ = "no method '" + name + "'";
+    return false;
+  }
+  if (last_request_.path.empty() && last_request_.example.empty()) {
+    message_ = "nothing loaded to reconstruct";
+    return false;
+  }
+  set_method(method);
+  rerun();
+  return true;
+}
+
 Job_request Viewer::with_options(Job_request request) const {
   request.options.method = method_at(method_);
   request.options.kind = bordered_ ? Surface_kind::bordered : Surface_kind::closed;
@@ -144,7 +159,10 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
   description_ = std::move(description);
   shown_request_ = last_request_;
   message_ = "showing " + description_;
-  request_ = default_view(request_.stage);
+  const auto& stages = shown_stages();
+  request_ = default_view(std::find(stages.begin(), stages.end(), request_.stage) != stages.end()
+                              ? request_.stage
+                              : scene::Stage::surface);
   playing_ = false;
   if (!same_dimension) camera_fitted_ = false;
   scene_dirty_ = true;
@@ -153,14 +171,30 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
 // ---------------------------------------------------------------------------------------------
 // What is shown
 
-void Viewer::set_stage(scene::Stage stage) {
+const std::vector<scene::Stage>& Viewer::shown_stages() const {
+  if (!reconstruction_) return scene::stages_of(method_at(method_));
+  return scene::stages_of(
+      std::visit([](const auto& r) { return r.options.method; }, *reconstruction_));
+}
+
+bool Viewer::set_stage(scene::Stage stage) {
+  const auto& stages = shown_stages();
+  if (std::find(stages.begin(), stages.end(), stage) == stages.end()) {
+    std::string names;
+    for (scene::Stage s : stages)
+      names += (names.empty() ? "" : ", ") + std::string(scene::stage_id(s));
+    message_ = std::string("this method has no stage '") + scene::stage_id(stage) +
+               "' (its stages: " + names + ")";
+    return false;
+  }
   explore();
   request_.stage = stage;
   scene_dirty_ = true;
+  return true;
 }
 
 void Viewer::step_stage(int delta) {
-  const auto& stages = scene::all_stages();
+  const auto& stages = shown_stages();
   int index =
       static_cast<int>(std::find(stages.begin(), stages.end(), request_.stage) - stages.begin());
   index = std::clamp(index + delta, 0, static_cast<int>(stages.size()) - 1);
@@ -337,7 +371,7 @@ void Viewer::move_to_panel_view() {
   const frontend::Shot& shot = tour_.image().shot;
   scene::Stage target = scene::Stage::surface;
   scene::parse_stage(shot.stage, target);
-  const auto& stages = scene::all_stages();
+  const auto& stages = shown_stages();
   const auto at = [&](scene::Stage stage) {
     return std::find(stages.begin(), stages.end(), stage) - stages.begin();
   };
@@ -885,8 +919,13 @@ void Viewer::draw_panel(int height) {
     if (ImGui::Button("Cancel")) cancel();
   }
   if (ImGui::CollapsingHeader("Reconstruction options")) {
-    ImGui::Combo("method", &method_, method_names().data(),
-                 static_cast<int>(method_names().size()));
+    // Choosing another method reconstructs the same input at once, the camera kept, so a class
+    // can flip between methods on the same points.
+    if (ImGui::Combo("method", &method_, method_names().data(),
+                     static_cast<int>(method_names().size())) &&
+        !job_.running() && (!last_request_.path.empty() || !last_request_.example.empty())) {
+      rerun();
+    }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(method_at(method_)));
     ImGui::Checkbox("bordered surface", &bordered_);
     ImGui::SliderFloat("box factor", &box_factor_, 1.1f, 10.0f, "%.1f");
@@ -909,7 +948,7 @@ void Viewer::draw_panel(int height) {
 void Viewer::draw_stepper() {
   ImGui::Separator();
   ImGui::TextUnformatted(scene::stage_title(request_.stage));
-  const auto& stages = scene::all_stages();
+  const auto& stages = shown_stages();
   int index =
       static_cast<int>(std::find(stages.begin(), stages.end(), request_.stage) - stages.begin());
   if (ImGui::ArrowButton("##previous", ImGuiDir_Left)) step_stage(-1);
@@ -1039,9 +1078,13 @@ void Viewer::draw_statistics() {
   ImGui::TextWrapped("method %s: %s", to_string(s.method), v.line.c_str());
   ImGui::PopStyleColor();
   ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
-  ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",
+  if (sculpts(s.method)) {
+    ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",
               s.conflicts, s.unlabelled_poles);
-  if (joins_neighbours(s.method, s.kind, s.dimension)) {
+  }
+  if (s.method == Method::crust || s.method == Method::nn_crust) {
+    ImGui::Text("cells %zu", s.delaunay_cells);
+  } else if (joins_neighbours(s.method, s.kind, s.dimension)) {
     ImGui::Text("cells %zu; the curves join nearest neighbours", s.delaunay_cells);
   } else if (inserts_poles(s.method, s.kind, s.dimension)) {
     ImGui::Text("cells %zu -> %zu   solid %zu", s.delaunay_cells, s.sculpted_cells, s.solid_cells);

@@ -27,6 +27,9 @@ class Viewer {
   void open_example(const std::string& name);
   void open_file(const std::string& path);
   void rerun();  // same input, current options
+  // Reconstructs the loaded input again with another method ("crust", "paper", ...), keeping
+  // the camera; false, with a message, for an unknown method or nothing loaded.
+  bool switch_method(const std::string& name);
   void set_bordered(bool bordered) { bordered_ = bordered; }
   void set_method(Method method) {
     const auto& names = method_names();
@@ -37,7 +40,7 @@ class Viewer {
   }
 
   // What the student changes by hand; during the tour, each leaves the panel to explore.
-  void set_stage(scene::Stage stage);
+  bool set_stage(scene::Stage stage);  // false, with a message, if the method has no such stage
   void step_stage(int delta);
   void set_step(long events);  // propagation events shown; -1 = all
   // Each returns false, with a message, when the shown reconstruction has no such sample or pole.
@@ -79,6 +82,8 @@ class Viewer {
   bool animating() const { return playing_ || job_.running(); }
 
  private:
+  // The stages of the shown reconstruction's method (or of the chosen one, before any).
+  const std::vector<scene::Stage>& shown_stages() const;
   Job_request with_options(Job_request request) const;  // the options chosen in the panel
   void start_job(Job_request request);
   void take_finished_job();
