@@ -225,32 +225,20 @@ const char* reason_name(Label_reason reason, int dimension) {
 }
 }  // namespace
 
-bool Viewer::pick_sample(int sample) {
-  if (sample >= 0 && (!reconstruction_ || std::size_t(sample) >= sample_count(*reconstruction_))) {
-    message_ =
-        "no sample " + std::to_string(sample) +
-        (reconstruction_ ? " (the input has " + std::to_string(sample_count(*reconstruction_)) + ")"
-                         : " (nothing reconstructed yet)");
+// Selects a sample (focus_sample) or a pole (focus_pole); -1 clears. An index the shown
+// reconstruction does not have is refused with a message.
+bool Viewer::pick(int index, bool sample) {
+  const std::size_t count =
+      reconstruction_ ? (sample ? sample_count : pole_count)(*reconstruction_) : 0;
+  if (index >= 0 && std::size_t(index) >= count) {
+    message_ = std::string(sample ? "no sample " : "no pole ") + std::to_string(index) +
+               (reconstruction_ ? " (there are " + std::to_string(count) + ")"
+                                : " (nothing reconstructed yet)");
     return false;
   }
   explore();
-  request_.focus_sample = sample;
-  request_.focus_pole = -1;
-  scene_dirty_ = true;
-  return true;
-}
-
-bool Viewer::pick_pole(int pole) {
-  if (pole >= 0 && (!reconstruction_ || std::size_t(pole) >= pole_count(*reconstruction_))) {
-    message_ =
-        "no pole " + std::to_string(pole) +
-        (reconstruction_ ? " (there are " + std::to_string(pole_count(*reconstruction_)) + ")"
-                         : " (nothing reconstructed yet)");
-    return false;
-  }
-  explore();
-  request_.focus_pole = pole;
-  request_.focus_sample = -1;
+  request_.focus_sample = sample ? index : -1;
+  request_.focus_pole = sample ? -1 : index;
   scene_dirty_ = true;
   return true;
 }
@@ -1080,7 +1068,7 @@ void Viewer::draw_statistics() {
   ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
   if (sculpts(s.method)) {
     ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",
-              s.conflicts, s.unlabelled_poles);
+                s.conflicts, s.unlabelled_poles);
   }
   if (s.method == Method::crust || s.method == Method::nn_crust) {
     ImGui::Text("cells %zu", s.delaunay_cells);

@@ -44,8 +44,8 @@ class Viewer {
   void step_stage(int delta);
   void set_step(long events);  // propagation events shown; -1 = all
   // Each returns false, with a message, when the shown reconstruction has no such sample or pole.
-  bool pick_sample(int sample);  // -1 clears the selection
-  bool pick_pole(int pole);
+  bool pick_sample(int sample) { return pick(sample, true); }  // -1 clears the selection
+  bool pick_pole(int pole) { return pick(pole, false); }
   void reset_camera();
 
   // The tour of the paper's figures (Paper menu, --figure, script commands). Each returns false,
@@ -82,6 +82,7 @@ class Viewer {
   bool animating() const { return playing_ || job_.running(); }
 
  private:
+  bool pick(int index, bool sample);
   // The stages of the shown reconstruction's method (or of the chosen one, before any).
   const std::vector<scene::Stage>& shown_stages() const;
   Job_request with_options(Job_request request) const;  // the options chosen in the panel
