@@ -56,13 +56,15 @@ TEST(Scene, TheSurfaceStageShowsBordersAndDefects) {
   Options bordered;
   bordered.kind = Surface_kind::bordered;
   const auto strokes = reconstruct(shapes::two_strokes().samples, bordered);
-  const scene::Layer* ends = find(scene::build_scene(strokes, surface), "border");
+  const scene::Scene ends_scene = scene::build_scene(strokes, surface);
+  const scene::Layer* ends = find(ends_scene, "border");
   ASSERT_NE(ends, nullptr);
   EXPECT_EQ(ends->positions.size(), 4u) << "two strokes, four ends";
   EXPECT_EQ(ends->label, "curve ends (4)");
 
   const auto saddle = reconstruct(shapes::saddle(20), bordered);
-  const scene::Layer* border = find(scene::build_scene(saddle, surface), "border");
+  const scene::Scene border_scene = scene::build_scene(saddle, surface);
+  const scene::Layer* border = find(border_scene, "border");
   ASSERT_NE(border, nullptr);
   EXPECT_EQ(border->positions.size(), 2 * saddle.stats.boundary_ridges);
 
@@ -70,7 +72,8 @@ TEST(Scene, TheSurfaceStageShowsBordersAndDefects) {
   closed.method = Method::paper;
   const auto forced = reconstruct(shapes::saddle(20), closed);
   ASSERT_GT(forced.stats.non_manifold_ridges, 0u);
-  const scene::Layer* defects = find(scene::build_scene(forced, surface), "non-manifold");
+  const scene::Scene defects_scene = scene::build_scene(forced, surface);
+  const scene::Layer* defects = find(defects_scene, "non-manifold");
   ASSERT_NE(defects, nullptr);
   EXPECT_EQ(defects->positions.size(), 2 * forced.stats.non_manifold_ridges);
 }

@@ -40,7 +40,9 @@ std::vector<Point<2>> sample_by_arc_length(const std::function<Point<2>(double)>
   const int shares = include_end ? samples - 1 : samples;
   for (int k = 0; k < samples; ++k) {
     const double target = weight.back() * k / shares;
-    const auto i = std::lower_bound(weight.begin(), weight.end(), target) - weight.begin();
+    // Rounding can put the last target a hair beyond the total: it is the curve's end.
+    const auto i = std::min<std::ptrdiff_t>(
+        std::lower_bound(weight.begin(), weight.end(), target) - weight.begin(), steps);
     const double a = i == 0 ? 0 : (target - weight[i - 1]) / (weight[i] - weight[i - 1]);
     points.push_back(curve(i == 0 ? 0.0 : t[i - 1] + a * (t[i] - t[i - 1])));
   }
