@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -154,6 +155,24 @@ TEST(Cli, UnknownMethodIsRefused) {
       run_sculpt("reconstruct --method no-such-method --example star -o " + output_path("x.svg"));
   EXPECT_NE(run.exit_code, 0);
   EXPECT_FALSE(std::filesystem::exists(output_path("x.svg")));
+}
+
+TEST(Cli, EveryMethodByNameAndOneLineWhereItDoesNotApply) {
+  for (const char* method : {"crust", "cocone"}) {
+    const auto surface = output_path(std::string("torus-") + method + ".off");
+    const Command_result run = run_sculpt(std::string("reconstruct --require-manifold --method ") +
+                                          method + " --example torus -o " + surface);
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    EXPECT_NE(run.out.find("closed 2-manifold of genus 1"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("candidates / pruned"), std::string::npos) << run.out;
+    EXPECT_TRUE(std::filesystem::exists(surface));
+  }
+  const Command_result curve =
+      run_sculpt("reconstruct --method cocone --example star -o " + output_path("cocone.svg"));
+  EXPECT_EQ(curve.exit_code, 1);
+  EXPECT_NE(curve.err.find("surfaces (3D points) only"), std::string::npos) << curve.err;
+  EXPECT_EQ(std::count(curve.err.begin(), curve.err.end(), '\n'), 1) << curve.err;
+  EXPECT_FALSE(std::filesystem::exists(output_path("cocone.svg")));
 }
 
 TEST(Cli, MergeDuplicatesOnRequest) {

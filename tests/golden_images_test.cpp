@@ -25,7 +25,7 @@ struct Golden_case {
 
 std::vector<Golden_case> golden_cases() {
   std::vector<Golden_case> cases;
-  for (scene::Stage stage : scene::stages_of(Method::paper)) {
+  for (scene::Stage stage : scene::stages_of(Method::paper, 2)) {
     cases.push_back({std::string("star-") + scene::stage_id(stage), 2, stage});
   }
   for (scene::Stage stage :

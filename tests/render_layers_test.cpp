@@ -29,7 +29,8 @@ scene::Scene framing_everything(scene::Scene scene) {
 
 template <int D>
 void expect_every_layer_visible(const Reconstruction<D>& reconstruction) {
-  for (scene::Stage stage : scene::stages_of(reconstruction.options.method)) {
+  for (scene::Stage stage :
+       scene::stages_of(reconstruction.options.method, reconstruction.dimension)) {
     scene::Request request;
     request.stage = stage;
     const scene::Scene framed = scene::build_scene(reconstruction, request);

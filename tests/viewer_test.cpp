@@ -51,7 +51,7 @@ TEST(Viewer, StepsThroughEveryStageIn2dAnd3d) {
   std::vector<std::string> shots;
   for (const std::string example : {"star", "bumpy"}) {
     script += "example " + example + "\nwait\n";
-    for (scene::Stage stage : scene::stages_of(Method::robust)) {
+    for (scene::Stage stage : scene::stages_of(Method::robust, 3)) {
       const std::string shot =
           testing::output_path("viewer-" + example + "-" + scene::stage_id(stage) + ".png");
       script +=

@@ -61,7 +61,10 @@ enum class Method {
   paper,     // Kuo & Yau's algorithm exactly as published (the figures and lessons use it)
   robust,    // confidence labelling and a manifold carve: the default, for real scans
   crust,     // Amenta, Bern & Kamvysselis 1998: Delaunay edges of S and its Voronoi vertices
+             // (2D), or the triangles of DT(S ∪ poles) between samples, filtered and walked (3D)
   nn_crust,  // Dey & Kumar 1999: each sample's nearest neighbour and nearest on the far side
+  cocone,    // Amenta, Choi, Dey & Leekha 2000: the triangles whose Voronoi edges cross the
+             // co-cones of their three samples, pruned and walked (surfaces)
 };
 
 // Which facets of DT(S ∪ OUP) make the surface.
@@ -236,6 +239,20 @@ struct Crust_stage {
   Delaunay_stage<D> delaunay;
 };
 
+// The candidate triangles of the methods that filter Delaunay triangles and then extract a
+// manifold from them (the crust and the co-cone in 3D): those the method's rule chose, and those
+// the pruning then removed, in order: those on a sharp fold (two triangles consecutive about an
+// edge at less than 90 degrees) and those with an edge of their own; when removing all of these
+// would leave a sample uncovered (a hole in the candidates eats the surface from its rim), only
+// those hanging free (held only where three or more triangles meet): rims_kept. The surface
+// is the outer boundary of the candidates left, walked from the outside (ACDL 2000, sec. 4).
+template <int D>
+struct Candidates_stage {
+  std::vector<Facet<D>> chosen;
+  std::vector<Facet<D>> pruned;
+  bool rims_kept = false;
+};
+
 struct Stage_measure {
   std::string name;
   double seconds = 0;
@@ -264,7 +281,10 @@ struct Statistics {
   std::size_t delaunay_cells = 0;    // cells of DT(S ∪ BBV)
   std::size_t sculpted_cells = 0;    // cells of DT(S ∪ OUP); 0 when it was not built
   std::size_t solid_cells = 0;
-  std::size_t facets = 0;  // triangles (3D) or edges (2D) of the result
+  std::size_t candidate_facets = 0;  // crust, co-cone (3D): triangles the filter chose
+  std::size_t pruned_facets = 0;     // of those, removed at a sharp edge
+  bool rims_kept = false;            // the pruning kept the rims of holes (Candidates_stage)
+  std::size_t facets = 0;            // triangles (3D) or edges (2D) of the result
   // Of the result's ridges (edges of the surface in 3D, vertices of the curve in 2D):
   std::size_t boundary_ridges = 0;        // on one facet only: border edges, or curve end points
   std::size_t non_manifold_ridges = 0;    // on more than two facets
@@ -294,6 +314,7 @@ struct Reconstruction {
   Delaunay_stage<D> sculpted_delaunay;  // 6 (paper)
   Carving_stage carving;                // 6b (robust)
   Crust_stage<D> crust;                 // 6c (crust)
+  Candidates_stage<D> candidates;       // 6d (crust and co-cone in 3D)
   std::vector<Cell<D>> solid;           // 7: cells of stage 6 whose vertices are all samples
   std::vector<Facet<D>> surface;        // 8: oriented facets; closed: normals point outward
   Statistics stats;
@@ -343,10 +364,11 @@ double triangles_reproduced(const std::vector<Facet<3>>& reference,
 // Names of the methods (the default first) and rules, and the reverse (false for an unknown name).
 const std::vector<const char*>& method_names();
 const char* describe(Method method);  // a few words for menus and help
-// Whether a method works in this dimension (the crusts reconstruct curves only, so far).
+// Whether a method works in this dimension (the NN-crust reconstructs curves only, the co-cone
+// surfaces only).
 bool reconstructs_in(Method method, int dimension);
 // Whether a method labels poles and sculpts a solid (paper, robust), or only reads the
-// triangulation (the crusts).
+// triangulation and the poles (the crusts, the co-cone).
 bool sculpts(Method method);
 bool parse_method(const std::string& name, Method& method);
 bool parse_rule(const std::string& name, Surface_rule& rule);  // auto, skin, extraction

@@ -188,11 +188,7 @@ int main(int argc, char** argv) {
       ->add_option("-o,--output", args.output,
                    "Surface .stl .ply .off .obj (3D) or curve .obj .svg (2D)")
       ->required();
-  reconstruct
-      ->add_option("--method", args.method,
-                   "robust (default: confidence labelling, manifold carve), paper (Kuo & Yau "
-                   "exactly), crust or nn-crust (curves: Amenta et al.'s crust, Dey & Kumar's "
-                   "NN-crust)")
+  reconstruct->add_option("--method", args.method, sculpt::frontend::methods_help())
       ->capture_default_str()
       ->check(CLI::IsMember(sculpt::method_names()));
   reconstruct->add_flag("--require-manifold", args.require_manifold,

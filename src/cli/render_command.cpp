@@ -7,8 +7,20 @@
 #include "frontend/command_line.hpp"
 #include "io/io_error.hpp"
 #include "io/point_reader.hpp"
+#include "scene/scene.hpp"
 
 namespace sculpt::cli {
+namespace {
+
+// Every stage's name, in order; each method has some of them (scene::stages_of).
+std::string stages_help() {
+  std::string help;
+  for (scene::Stage stage : scene::all_stages())
+    help += (help.empty() ? "" : ", ") + std::string(scene::stage_id(stage));
+  return help + " (each method has some; asking for one it lacks lists its own)";
+}
+
+}  // namespace
 void add_render_command(CLI::App& app, Render_arguments& args) {
   Shot& shot = args.shot;
   auto* render = app.add_subcommand(
@@ -16,17 +28,13 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   auto* input = render->add_option("input", shot.input, "Point file");
   auto* example = render->add_option("--example", shot.example, "A built-in example instead");
   input->excludes(example);
-  render
-      ->add_option("--stage", shot.stage,
-                   "samples, delaunay, voronoi, poles, seeds, propagation, outer-concave, "
-                   "sculpted-delaunay, solid, surface")
-      ->capture_default_str();
+  render->add_option("--stage", shot.stage, stages_help())->capture_default_str();
   render->add_option("--step", shot.step, "Propagation: show the first K labelling events");
   render->add_option("--focus-sample", shot.focus_sample,
                      "Show this sample's Voronoi cell, poles, polar balls and inscribed cubes");
   render->add_option("--focus-pole", shot.focus_pole,
                      "Show this pole's polar ball and the pole that labelled it");
-  render->add_option("--method", shot.method, "Reconstruction method: robust (default), paper, crust or nn-crust")
+  render->add_option("--method", shot.method, frontend::methods_help())
       ->capture_default_str()
       ->check(CLI::IsMember(sculpt::method_names()));
   render->add_option("--box-factor", shot.box_factor, "Bounding box factor")->capture_default_str();

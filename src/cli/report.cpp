@@ -53,6 +53,11 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     row("outer cells kept (manifold)", stats.kept_outer_cells);
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);
+  if (stats.candidate_facets > 0) {
+    row("candidates / pruned",
+        fmt::format("{} / {}{}", stats.candidate_facets, stats.pruned_facets,
+                    stats.rims_kept ? " (rims of holes kept)" : ""));
+  }
   row(three ? "triangles" : "edges", stats.facets);
   row(three ? "boundary edges" : "curve end points", stats.boundary_ridges);
   row(three ? "non-manifold edges" : "branching samples", stats.non_manifold_ridges);
@@ -103,6 +108,9 @@ nlohmann::json report_json(const Statistics& stats, const Run_description& run) 
       {"delaunay_cells", stats.delaunay_cells},
       {"sculpted_cells", stats.sculpted_cells},
       {"solid_cells", stats.solid_cells},
+      {"candidate_facets", stats.candidate_facets},
+      {"pruned_facets", stats.pruned_facets},
+      {"rims_kept", stats.rims_kept},
       {"facets", stats.facets},
       {"boundary_ridges", stats.boundary_ridges},
       {"non_manifold_ridges", stats.non_manifold_ridges},

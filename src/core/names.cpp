@@ -43,14 +43,16 @@ const char* to_string(Method method) {
       return "crust";
     case Method::nn_crust:
       return "nn-crust";
+    case Method::cocone:
+      return "cocone";
   }
   return "?";
 }
 
 const std::vector<const char*>& method_names() {
-  static const std::vector<const char*> names = {to_string(Options{}.method),
-                                                 to_string(Method::paper), to_string(Method::crust),
-                                                 to_string(Method::nn_crust)};
+  static const std::vector<const char*> names = {
+      to_string(Options{}.method), to_string(Method::paper), to_string(Method::crust),
+      to_string(Method::nn_crust), to_string(Method::cocone)};
   return names;
 }
 
@@ -61,9 +63,11 @@ const char* describe(Method method) {
     case Method::robust:
       return "confidence labelling and manifold carving";
     case Method::crust:
-      return "the crust of Amenta, Bern & Kamvysselis (curves)";
+      return "the crust of Amenta, Bern & Kamvysselis";
     case Method::nn_crust:
       return "the nearest-neighbour crust of Dey & Kumar (curves)";
+    case Method::cocone:
+      return "the co-cone of Amenta, Choi, Dey & Leekha (surfaces)";
   }
   return "?";
 }
@@ -73,11 +77,14 @@ bool sculpts(Method method) {
 }
 
 bool reconstructs_in(Method method, int dimension) {
-  return dimension == 2 || (method != Method::crust && method != Method::nn_crust);
+  if (method == Method::nn_crust) return dimension == 2;
+  if (method == Method::cocone) return dimension == 3;
+  return true;
 }
 
 bool parse_method(const std::string& name, Method& method) {
-  for (Method m : {Method::paper, Method::robust, Method::crust, Method::nn_crust}) {
+  for (Method m :
+       {Method::paper, Method::robust, Method::crust, Method::nn_crust, Method::cocone}) {
     if (name == to_string(m)) {
       method = m;
       return true;

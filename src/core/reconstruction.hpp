@@ -7,8 +7,10 @@
 #include <algorithm>
 #include <vector>
 
+#include "../methods/cocone/cocone_method.hpp"
 #include "../methods/crust/crust_method.hpp"
 #include "../methods/crust/nn_crust.hpp"
+#include "../methods/crust/surface_crust.hpp"
 #include "../methods/paper/paper_method.hpp"
 #include "../methods/robust/robust_method.hpp"
 #include "delaunay.hpp"
@@ -35,7 +37,11 @@ Reconstruction<Traits::dimension> reconstruct_with(
   clock.start("checks");
   if (!reconstructs_in(options.method, Traits::dimension)) {
     throw Input_error(std::string("the method ") + to_string(options.method) +
-                      " reconstructs curves (2D points) only; for surfaces use robust or paper");
+                      (Traits::dimension == 3
+                           ? " reconstructs curves (2D points) only; for surfaces use robust, "
+                             "paper, crust or cocone"
+                           : " reconstructs surfaces (3D points) only; for curves use robust, "
+                             "paper, crust or nn-crust"));
   }
   check_input<Traits>(samples, options);
   const Normalisation<Traits::dimension> normalisation =
@@ -68,12 +74,19 @@ Reconstruction<Traits::dimension> reconstruct_with(
       run_robust_method<Traits>(triangulation, result, clock);
       break;
     case Method::crust:
-      if constexpr (Traits::dimension == 2) run_crust_method<Traits>(triangulation, result, clock);
+      if constexpr (Traits::dimension == 2) {
+        run_crust_method<Traits>(triangulation, result, clock);
+      } else {
+        run_surface_crust_method<Traits>(triangulation, result, clock);
+      }
       break;
     case Method::nn_crust:
       if constexpr (Traits::dimension == 2) {
         run_nn_crust_method<Traits>(triangulation, result, clock);
       }
+      break;
+    case Method::cocone:
+      if constexpr (Traits::dimension == 3) run_cocone_method<Traits>(triangulation, result, clock);
       break;
   }
 

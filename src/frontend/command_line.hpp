@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <iostream>
 #include <optional>
+#include <sculpt/sculpt.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -24,6 +25,18 @@ inline const char* exit_codes_help =
     "reconstructed, an output that cannot be written); 2 bad usage; 3 with --require-manifold, "
     "a result that is not a 2-manifold (written all the same). Every failure is one line on "
     "stderr, and no output file is left behind.";
+
+// The --method option's help: every method's name and a few words about it, the default first.
+inline std::string methods_help() {
+  std::string help;
+  for (const char* name : method_names()) {
+    Method method;
+    parse_method(name, method);
+    help += (help.empty() ? "" : "; ") + std::string(name) +
+            (method == Options{}.method ? " (default)" : "") + ": " + describe(method);
+  }
+  return help;
+}
 
 // A mistake in the arguments themselves (exit code 2), found before any work is done.
 class Usage_error : public std::runtime_error {

@@ -161,16 +161,67 @@ inline Pseudo_code nn_crust_pseudo_code() {
   return code;
 }
 
+// The crust for surfaces (src/methods/crust/surface_crust.hpp).
+inline Pseudo_code surface_crust_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  // clang-format off
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",
+      "DT' <- Delaunay(S + P)   # P: the poles",
+      "T <- triangles of DT' between samples",
+      "drop t if its normal leans from p+(s)-s",
+      "    > 45 deg at its widest corner, > 67.5 else",
+      "prune t on a fold sharper than 90 deg or",
+      "    with an edge of its own (only fins if",
+      "    that leaves a sample bare), repeatedly",
+      "surface <- outer boundary of T, walked",
+  };
+  // clang-format on
+  code.line_of_stage = common_stage_lines(2);
+  code.line_of_stage.insert(
+      {{Stage::crust_delaunay, 3}, {Stage::candidates, 7}, {Stage::surface, 10}});
+  return code;
+}
+
+// The co-cone of Amenta, Choi, Dey and Leekha (src/methods/cocone/cocone_method.hpp).
+inline Pseudo_code cocone_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    v(s) <- p+(s) - s   # pole vector",
+      "    cocone(s) <- directions within 22.5 deg",
+      "                 of the plane normal to v(s)",
+      "T <- triangles t of DT between samples whose",
+      "    Voronoi edge meets cocone(s), s in t",
+      "prune t on a fold sharper than 90 deg or",
+      "    with an edge of its own (only fins if",
+      "    that leaves a sample bare), repeatedly",
+      "surface <- outer boundary of T, walked",
+  };
+  code.line_of_stage = common_stage_lines(2);
+  code.line_of_stage.insert({{Stage::candidates, 5}, {Stage::surface, 10}});
+  return code;
+}
+
 inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface_kind::closed,
                                       int dimension = 3) {
   static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code(),
                            open_curves = open_curves_pseudo_code(), crust = crust_pseudo_code(),
-                           nn_crust = nn_crust_pseudo_code();
+                           nn_crust = nn_crust_pseudo_code(),
+                           surface_crust = surface_crust_pseudo_code(),
+                           cocone = cocone_pseudo_code();
   switch (method) {
     case Method::paper:
       return paper;
     case Method::crust:
-      return crust;
+      return dimension == 2 ? crust : surface_crust;
+    case Method::cocone:
+      return cocone;
     case Method::nn_crust:
       return nn_crust;
     case Method::robust:

@@ -48,17 +48,19 @@ enum class Stage {
   propagation,        // the labelling after `step` events
   outer_concave,      // inner poles and the outer concave poles OUP (UP when bordered)
   sculpted_delaunay,  // DT(S ∪ OUP)
-  crust_delaunay,     // the crust's DT(S ∪ V), V the Voronoi vertices
+  crust_delaunay,     // the crust's DT(S ∪ V), V the Voronoi vertices (2D) or the poles (3D)
+  candidates,         // crust and co-cone (3D): the triangles chosen, and those pruned
   solid,              // the all-sample cells
   surface,            // the result: surface (3D) or curve (2D)
 };
 
 const std::vector<Stage>& all_stages();  // of every method, in order
-// The stages a method has, in the order it runs them: the sculpting methods all but
-// crust-delaunay; the crust samples, delaunay, voronoi, crust-delaunay, surface; the NN-crust
-// samples, delaunay, surface.
-const std::vector<Stage>& stages_of(Method method);
-bool has_stage(Method method, Stage stage);
+// The stages a method has in a dimension, in the order it runs them: the sculpting methods all
+// from samples to surface but crust-delaunay and candidates; the crust samples, delaunay,
+// voronoi, crust-delaunay, surface, and in 3D also poles and candidates; the co-cone samples,
+// delaunay, voronoi, poles, candidates, surface; the NN-crust samples, delaunay, surface.
+const std::vector<Stage>& stages_of(Method method, int dimension);
+bool has_stage(Method method, int dimension, Stage stage);
 const char* stage_id(Stage stage);     // "delaunay", "outer-concave", ...
 const char* stage_title(Stage stage);  // "Delaunay triangulation DT(S ∪ BBV)", ...
 bool parse_stage(const std::string& id, Stage& stage);

@@ -25,9 +25,9 @@ class Scene_builder {
   }
 
   Scene build() {
-    if (!has_stage(r_.options.method, request_.stage)) {
+    if (!has_stage(r_.options.method, D, request_.stage)) {
       std::string stages;
-      for (Stage s : stages_of(r_.options.method))
+      for (Stage s : stages_of(r_.options.method, D))
         stages += (stages.empty() ? "" : ", ") + std::string(stage_id(s));
       throw std::invalid_argument(std::string("the method ") + to_string(r_.options.method) +
                                   " has no stage '" + stage_id(request_.stage) +
@@ -81,6 +81,9 @@ class Scene_builder {
         break;
       case Stage::crust_delaunay:
         crust_delaunay();
+        break;
+      case Stage::candidates:
+        candidates();
         break;
       case Stage::solid:
         if (joins_neighbours(r_.options.method, r_.options.kind, D)) {
@@ -478,10 +481,43 @@ class Scene_builder {
     edges_of(crust.delaunay.cells, "crust-delaunay", "Delaunay edges DT(S + V)",
              palette::delaunay_edge,
              [&](int i) { return i < n_ ? r_.sites[i] : crust.voronoi_vertices[i - n_]; });
+    if (D == 3) scene_.title = "DT(S + P): the samples and their poles";
     // Red like the poles, which are some of them: both lie near the medial axis.
-    Layer& vertices = add("voronoi-vertices", "Voronoi vertices V", Primitive::points,
-                          palette::pole, D == 2 ? 6 : 4);
+    Layer& vertices = add("voronoi-vertices", D == 2 ? "Voronoi vertices V" : "poles P",
+                          Primitive::points, palette::pole, D == 2 ? 6 : 4);
     for (const auto& v : crust.voronoi_vertices) vertices.positions.push_back(vec(v));
+  }
+
+  // The triangles a filtering method chose (shaded) and those the pruning removed (red edges):
+  // the surface is the outer boundary of the shaded ones.
+  void candidates() {
+    const auto& candidates = r_.candidates;
+    Layer& kept = add("candidates",
+                      "candidates kept (" +
+                          std::to_string(candidates.chosen.size() - candidates.pruned.size()) + ")",
+                      Primitive::triangles, palette::solid, 1.0f);
+    kept.lit = true;
+    std::vector<Facet<D>> pruned = candidates.pruned;
+    for (auto& f : pruned) std::sort(f.begin(), f.end());
+    std::sort(pruned.begin(), pruned.end());
+    for (const auto& facet : candidates.chosen) {
+      auto sorted = facet;
+      std::sort(sorted.begin(), sorted.end());
+      if (std::binary_search(pruned.begin(), pruned.end(), sorted)) continue;
+      for (int v : facet) kept.positions.push_back(vec(r_.sites[v]));
+    }
+    if (candidates.pruned.empty()) return;
+    Layer& removed =
+        add("pruned",
+            std::string(candidates.rims_kept ? "pruned, rims of holes kept (" : "pruned (") +
+                std::to_string(candidates.pruned.size()) + ")",
+            Primitive::lines, palette::non_manifold, 2.0f);
+    for (const auto& facet : candidates.pruned) {
+      for (int j = 0; j < D; ++j) {
+        removed.positions.push_back(vec(r_.sites[facet[j]]));
+        removed.positions.push_back(vec(r_.sites[facet[(j + 1) % D]]));
+      }
+    }
   }
 
   // The result's border (curve ends in 2D, border edges in 3D) and its non-manifold ridges

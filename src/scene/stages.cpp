@@ -10,22 +10,30 @@ const std::vector<Stage>& all_stages() {
       Stage::samples,        Stage::delaunay,      Stage::hull,
       Stage::voronoi,        Stage::poles,         Stage::seeds,
       Stage::propagation,    Stage::outer_concave, Stage::sculpted_delaunay,
-      Stage::crust_delaunay, Stage::solid,         Stage::surface};
+      Stage::crust_delaunay, Stage::candidates,    Stage::solid,
+      Stage::surface};
   return stages;
 }
 
-const std::vector<Stage>& stages_of(Method method) {
+const std::vector<Stage>& stages_of(Method method, int dimension) {
   static const std::vector<Stage> sculpting = {
       Stage::samples,     Stage::delaunay,      Stage::hull,
       Stage::voronoi,     Stage::poles,         Stage::seeds,
       Stage::propagation, Stage::outer_concave, Stage::sculpted_delaunay,
       Stage::solid,       Stage::surface};
-  static const std::vector<Stage> crust = {Stage::samples, Stage::delaunay, Stage::voronoi,
-                                           Stage::crust_delaunay, Stage::surface};
+  static const std::vector<Stage> curve_crust = {Stage::samples, Stage::delaunay, Stage::voronoi,
+                                                 Stage::crust_delaunay, Stage::surface};
+  static const std::vector<Stage> surface_crust = {
+      Stage::samples,        Stage::delaunay,   Stage::voronoi, Stage::poles,
+      Stage::crust_delaunay, Stage::candidates, Stage::surface};
+  static const std::vector<Stage> cocone = {Stage::samples, Stage::delaunay,   Stage::voronoi,
+                                            Stage::poles,   Stage::candidates, Stage::surface};
   static const std::vector<Stage> nn_crust = {Stage::samples, Stage::delaunay, Stage::surface};
   switch (method) {
     case Method::crust:
-      return crust;
+      return dimension == 2 ? curve_crust : surface_crust;
+    case Method::cocone:
+      return cocone;
     case Method::nn_crust:
       return nn_crust;
     default:
@@ -33,8 +41,8 @@ const std::vector<Stage>& stages_of(Method method) {
   }
 }
 
-bool has_stage(Method method, Stage stage) {
-  const auto& stages = stages_of(method);
+bool has_stage(Method method, int dimension, Stage stage) {
+  const auto& stages = stages_of(method, dimension);
   return std::find(stages.begin(), stages.end(), stage) != stages.end();
 }
 
@@ -60,6 +68,8 @@ const char* stage_id(Stage stage) {
       return "sculpted-delaunay";
     case Stage::crust_delaunay:
       return "crust-delaunay";
+    case Stage::candidates:
+      return "candidates";
     case Stage::solid:
       return "solid";
     case Stage::surface:
@@ -90,6 +100,8 @@ const char* stage_title(Stage stage) {
       return "DT(S + OUP)";
     case Stage::crust_delaunay:
       return "DT(S + V): the samples and their Voronoi vertices";
+    case Stage::candidates:
+      return "Candidate triangles, and the pruned ones";
     case Stage::solid:
       return "Sculpted solid";
     case Stage::surface:

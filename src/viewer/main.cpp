@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
   app.add_option("--example", example, "Built-in example to open")->capture_default_str();
   app.add_flag("--bordered", bordered, "Reconstruct a bordered surface");
   std::string method = sculpt::to_string(sculpt::Options{}.method);
-  app.add_option("--method", method, "Reconstruction method: robust or paper")
+  app.add_option("--method", method, sculpt::frontend::methods_help())
       ->capture_default_str()
       ->check(CLI::IsMember(sculpt::method_names()));
   std::string figure, panel;

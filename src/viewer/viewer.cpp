@@ -172,9 +172,12 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
 // What is shown
 
 const std::vector<scene::Stage>& Viewer::shown_stages() const {
-  if (!reconstruction_) return scene::stages_of(method_at(method_));
-  return scene::stages_of(
-      std::visit([](const auto& r) { return r.options.method; }, *reconstruction_));
+  if (!reconstruction_) return scene::stages_of(method_at(method_), 3);
+  return std::visit(
+      [](const auto& r) -> const std::vector<scene::Stage>& {
+        return scene::stages_of(r.options.method, r.dimension);
+      },
+      *reconstruction_);
 }
 
 bool Viewer::set_stage(scene::Stage stage) {
@@ -1065,12 +1068,17 @@ void Viewer::draw_statistics() {
                         v.manifold ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1));
   ImGui::TextWrapped("method %s: %s", to_string(s.method), v.line.c_str());
   ImGui::PopStyleColor();
-  ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
   if (sculpts(s.method)) {
+    ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
     ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",
                 s.conflicts, s.unlabelled_poles);
+  } else {
+    ImGui::Text("n %zu   poles %zu", s.samples, s.poles);
   }
-  if (s.method == Method::crust || s.method == Method::nn_crust) {
+  if (!sculpts(s.method) && three) {
+    ImGui::Text("cells %zu   candidates %zu, pruned %zu%s", s.delaunay_cells, s.candidate_facets,
+                s.pruned_facets, s.rims_kept ? " (rims kept)" : "");
+  } else if (!sculpts(s.method)) {
     ImGui::Text("cells %zu", s.delaunay_cells);
   } else if (joins_neighbours(s.method, s.kind, s.dimension)) {
     ImGui::Text("cells %zu; the curves join nearest neighbours", s.delaunay_cells);

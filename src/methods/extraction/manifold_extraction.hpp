@@ -1,0 +1,321 @@
+// Manifold extraction (Amenta, Choi, Dey & Leekha 2000, section 4; the crust's "trimming",
+// Amenta, Bern & Kamvysselis 1998): the methods that choose Delaunay triangles by a local rule
+// (the crust, the co-cone) get a set that is a manifold only where the samples are dense and
+// smooth; a few extra triangles stand inside or hang off it. Two steps make a surface of it:
+//   prune: an edge is sharp when two triangles consecutive around it fold by less than 90
+//          degrees (they leave a gap of more than 3π/2), or when it has one triangle; a triangle
+//          on a sharp edge cannot be on a smooth closed surface, so it goes, and its neighbours
+//          are looked at again. This is exact where the candidates are a closed surface with a
+//          few extra triangles, but a single hole in them (undersampling) lets it eat the whole
+//          surface, ring by ring from the hole's rim. So when it leaves a sample with no
+//          triangle, the pruning is run again keeping the rims: a triangle with an edge of its
+//          own goes only if it hangs free (held nowhere by a sheet, only where three or more
+//          triangles meet); the hole stays and shows in the verdict;
+//   walk:  from a triangle on the outside, go across each edge to the first triangle met when
+//          turning about that edge from the outside, oriented the same way: this walks the outer
+//          boundary of the triangles' union, which leaves out every triangle inside it.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <sculpt/sculpt.hpp>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+namespace sculpt {
+
+namespace extraction_detail {
+
+using Vector = std::array<double, 3>;
+
+inline Vector minus(const Point<3>& a, const Point<3>& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+inline double dot(const Vector& a, const Vector& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+inline Vector cross(const Vector& a, const Vector& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+inline std::uint64_t edge_key(int a, int b) {
+  if (a > b) std::swap(a, b);
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+         static_cast<std::uint32_t>(b);
+}
+
+// The triangles on every edge, by index into a list of triangles.
+class Edge_map {
+ public:
+  explicit Edge_map(const std::vector<Facet<3>>& triangles) {
+    triangles_on_.reserve(triangles.size() * 2);
+    for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+      for (int j = 0; j < 3; ++j) {
+        triangles_on_[edge_key(triangles[t][j], triangles[t][(j + 1) % 3])].push_back(t);
+      }
+    }
+  }
+  const std::vector<int>& on(int a, int b) const {
+    static const std::vector<int> none;
+    const auto found = triangles_on_.find(edge_key(a, b));
+    return found == triangles_on_.end() ? none : found->second;
+  }
+
+ private:
+  std::unordered_map<std::uint64_t, std::vector<int>> triangles_on_;
+};
+
+// The angle, in [0, 2π), at which the half-plane of a triangle with edge (a, b) and third
+// vertex `apex` stands about that edge, measured from `start` (a unit vector perpendicular to the
+// edge) towards `towards` (the unit vector perpendicular to both).
+inline double angle_about_edge(const std::vector<Point<3>>& points, int a, const Vector& axis,
+                               const Vector& start, const Vector& towards, int apex) {
+  const Vector to_apex = minus(points[apex], points[a]);
+  const double along = dot(to_apex, axis);
+  const Vector across = {to_apex[0] - along * axis[0], to_apex[1] - along * axis[1],
+                         to_apex[2] - along * axis[2]};
+  const double angle = std::atan2(dot(across, towards), dot(across, start));
+  return angle < 0 ? angle + 2 * M_PI : angle;
+}
+
+// A frame about the edge (a, b) of a triangle with third vertex c: the axis along the edge, the
+// direction towards c and the triangle's normal for the order (a, b, c).
+struct Edge_frame {
+  Vector axis, start, normal;
+  bool degenerate = false;
+};
+
+inline Edge_frame frame_of(const std::vector<Point<3>>& points, int a, int b, int c) {
+  Edge_frame frame;
+  Vector axis = minus(points[b], points[a]);
+  const double length = std::sqrt(dot(axis, axis));
+  Vector normal = cross(axis, minus(points[c], points[a]));
+  const double area = std::sqrt(dot(normal, normal));
+  if (length == 0 || area == 0) {
+    frame.degenerate = true;
+    return frame;
+  }
+  for (int k = 0; k < 3; ++k) {
+    axis[k] /= length;
+    normal[k] /= area;
+  }
+  frame.axis = axis;
+  frame.normal = normal;
+  frame.start = cross(normal, axis);  // in the triangle's plane, towards c
+  return frame;
+}
+
+inline int third_vertex(const Facet<3>& t, int a, int b) {
+  for (int v : t) {
+    if (v != a && v != b) return v;
+  }
+  return -1;
+}
+
+}  // namespace extraction_detail
+
+// How the pruning treats a triangle with an edge of its own.
+enum class Rims { pruned, kept };
+
+// Removes, repeatedly, the triangles on a sharp edge; returns the removed ones in order and
+// leaves the others in `triangles`.
+inline std::vector<Facet<3>> prune_sharp_edges(const std::vector<Point<3>>& points,
+                                               std::vector<Facet<3>>& triangles, Rims rims) {
+  using namespace extraction_detail;
+  const Edge_map edges(triangles);
+  std::vector<char> removed(triangles.size(), 0);
+  std::vector<Facet<3>> pruned;
+
+  const auto triangles_left_on = [&](int a, int b) {
+    std::vector<int> around;
+    for (int t : edges.on(a, b)) {
+      if (!removed[t]) around.push_back(t);
+    }
+    return around;
+  };
+  // Whether two triangles consecutive about edge (a, b) fold by less than 90 degrees.
+  const auto sharp_fold = [&](int a, int b, const std::vector<int>& around) {
+    if (around.size() < 2) return false;
+    const Edge_frame frame = frame_of(points, a, b, third_vertex(triangles[around[0]], a, b));
+    if (frame.degenerate) return false;
+    std::vector<double> angles;
+    for (int t : around) {
+      angles.push_back(angle_about_edge(points, a, frame.axis, frame.start, frame.normal,
+                                        third_vertex(triangles[t], a, b)));
+    }
+    std::sort(angles.begin(), angles.end());
+    double widest_gap = 2 * M_PI - (angles.back() - angles.front());
+    for (std::size_t i = 1; i < angles.size(); ++i) {
+      widest_gap = std::max(widest_gap, angles[i] - angles[i - 1]);
+    }
+    return widest_gap > 1.5 * M_PI;
+  };
+  // Whether a triangle must go: it stands on a sharp fold, or it has an edge of its own (no
+  // other triangle) and, when rims are kept, is held by no edge shared with exactly one other
+  // triangle (a sheet) but only where three or more triangles meet, or nowhere.
+  const auto must_go = [&](int t) {
+    const Facet<3>& triangle = triangles[t];
+    bool free_edge = false, held_by_sheet = false;
+    for (int j = 0; j < 3; ++j) {
+      const int a = triangle[j], b = triangle[(j + 1) % 3];
+      const auto around = triangles_left_on(a, b);
+      if (sharp_fold(a, b, around)) return true;
+      free_edge = free_edge || around.size() == 1;
+      held_by_sheet = held_by_sheet || around.size() == 2;
+    }
+    return free_edge && (rims == Rims::pruned || !held_by_sheet);
+  };
+
+  std::deque<int> to_check(triangles.size());
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) to_check[t] = t;
+  while (!to_check.empty()) {
+    const int t = to_check.front();
+    to_check.pop_front();
+    if (removed[t]) continue;
+    const Facet<3>& triangle = triangles[t];
+    if (!must_go(t)) continue;
+    removed[t] = 1;
+    pruned.push_back(triangle);
+    for (int j = 0; j < 3; ++j) {
+      for (int neighbour : edges.on(triangle[j], triangle[(j + 1) % 3])) {
+        if (!removed[neighbour]) to_check.push_back(neighbour);
+      }
+    }
+  }
+  std::vector<Facet<3>> kept;
+  kept.reserve(triangles.size() - pruned.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    if (!removed[t]) kept.push_back(triangles[t]);
+  }
+  triangles = std::move(kept);
+  return pruned;
+}
+
+// The pruning above, with rims pruned unless that leaves a sample that had triangles without any.
+// `rims` tells which ran.
+inline std::vector<Facet<3>> prune_candidates(const std::vector<Point<3>>& points,
+                                              std::vector<Facet<3>>& triangles, Rims& rims) {
+  const auto covered = [&](const std::vector<Facet<3>>& set) {
+    std::vector<char> on(points.size(), 0);
+    for (const auto& t : set) {
+      for (int v : t) on[v] = 1;
+    }
+    return std::count(on.begin(), on.end(), 1);
+  };
+  std::vector<Facet<3>> kept = triangles;
+  auto pruned = prune_sharp_edges(points, kept, Rims::pruned);
+  rims = Rims::pruned;
+  if (covered(kept) < covered(triangles)) {
+    rims = Rims::kept;
+    kept = triangles;
+    pruned = prune_sharp_edges(points, kept, Rims::kept);
+  }
+  triangles = std::move(kept);
+  return pruned;
+}
+
+// The outer boundary of the triangles' union, oriented outward: one walk per piece, each started
+// at the triangle of the piece's extreme sample (largest x) whose normal points most along +x.
+inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& points,
+                                                 const std::vector<Facet<3>>& triangles) {
+  using namespace extraction_detail;
+  const Edge_map edges(triangles);
+  std::vector<char> taken(triangles.size(), 0);
+  std::vector<char> on_surface(points.size(), 0);
+  std::vector<Facet<3>> surface;
+
+  // The directed edges of the triangles taken, and how many taken triangles each edge has.
+  std::unordered_set<std::uint64_t> used;
+  std::unordered_map<std::uint64_t, int> walked_on;
+  const auto take = [&](const Facet<3>& t) {
+    surface.push_back(t);
+    for (int k = 0; k < 3; ++k) {
+      const int from = t[k], to = t[(k + 1) % 3];
+      used.insert(edge_key(from, to) * 2 + (from < to));
+      ++walked_on[edge_key(from, to)];
+    }
+  };
+
+  std::vector<std::vector<int>> triangles_at(points.size());
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    for (int v : triangles[t]) triangles_at[v].push_back(t);
+  }
+  std::vector<int> by_x;
+  for (int v = 0; v < static_cast<int>(points.size()); ++v) {
+    if (!triangles_at[v].empty()) by_x.push_back(v);
+  }
+  std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return points[a][0] > points[b][0]; });
+
+  for (int start : by_x) {
+    if (on_surface[start]) continue;
+    // The seed: at the extreme sample the outside lies towards +x.
+    int seed = -1;
+    double best = -1;
+    Facet<3> oriented{};
+    for (int t : triangles_at[start]) {
+      const auto& [a, b, c] = triangles[t];
+      const Vector normal = cross(minus(points[b], points[a]), minus(points[c], points[a]));
+      const double length = std::sqrt(dot(normal, normal));
+      if (length == 0) continue;
+      const double along_x = std::abs(normal[0]) / length;
+      if (along_x > best) {
+        best = along_x;
+        seed = t;
+        oriented = normal[0] >= 0 ? Facet<3>{a, b, c} : Facet<3>{a, c, b};
+      }
+    }
+    if (seed < 0) continue;
+    const std::size_t first_of_piece = surface.size();
+    std::deque<Facet<3>> front{oriented};
+    taken[seed] = 1;
+    take(oriented);
+    while (!front.empty()) {
+      const Facet<3> current = front.front();
+      front.pop_front();
+      for (int j = 0; j < 3; ++j) {
+        const int a = current[j], b = current[(j + 1) % 3], c = current[(j + 2) % 3];
+        const Edge_frame frame = frame_of(points, a, b, c);
+        if (frame.degenerate) continue;
+        // Turn about (a, b) from the current triangle towards its outside: the first triangle
+        // met is the next piece of the outer boundary.
+        int next = -1;
+        double nearest = 2 * M_PI;
+        for (int t : edges.on(a, b)) {
+          const int apex = third_vertex(triangles[t], a, b);
+          if (apex == c) continue;
+          const double angle =
+              angle_about_edge(points, a, frame.axis, frame.start, frame.normal, apex);
+          if (angle > 0 && angle < nearest) {
+            nearest = angle;
+            next = t;
+          }
+        }
+        if (next < 0 || taken[next]) continue;
+        const Facet<3> next_oriented{b, a, third_vertex(triangles[next], a, b)};
+        // Where the candidates have a hole the walk can slip through it to triangles inside
+        // and come back to the outer ones from behind; a directed edge used twice (or an edge
+        // with a third triangle) is where that shows: such a triangle is not taken.
+        bool fits = true;
+        for (int k = 0; k < 3 && fits; ++k) {
+          const int from = next_oriented[k], to = next_oriented[(k + 1) % 3];
+          fits = !used.count(edge_key(from, to) * 2 + (from < to)) &&
+                 walked_on[edge_key(from, to)] < 2;
+        }
+        if (!fits) continue;
+        taken[next] = 1;
+        take(next_oriented);
+        front.push_back(next_oriented);
+      }
+    }
+    for (std::size_t t = first_of_piece; t < surface.size(); ++t) {
+      for (int v : surface[t]) on_surface[v] = 1;
+    }
+  }
+  return surface;
+}
+
+}  // namespace sculpt
