@@ -65,6 +65,8 @@ enum class Method {
   nn_crust,  // Dey & Kumar 1999: each sample's nearest neighbour and nearest on the far side
   cocone,    // Amenta, Choi, Dey & Leekha 2000: the triangles whose Voronoi edges cross the
              // co-cones of their three samples, pruned and walked (surfaces)
+  advancing_front,  // CGAL's Advancing Front Surface Reconstruction (Cohen-Steiner & Da 2004)
+  alpha_shape,      // CGAL's alpha shapes: the smallest alpha giving one solid with every sample
 };
 
 // Which facets of DT(S ∪ OUP) make the surface.
@@ -284,6 +286,7 @@ struct Statistics {
   std::size_t candidate_facets = 0;  // crust, co-cone (3D): triangles the filter chose
   std::size_t pruned_facets = 0;     // of those, removed at a sharp edge
   bool rims_kept = false;            // the pruning kept the rims of holes (Candidates_stage)
+  double alpha = 0;                  // alpha-shape: the radius chosen, in the input's units
   std::size_t facets = 0;            // triangles (3D) or edges (2D) of the result
   // Of the result's ridges (edges of the surface in 3D, vertices of the curve in 2D):
   std::size_t boundary_ridges = 0;        // on one facet only: border edges, or curve end points

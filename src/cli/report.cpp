@@ -53,10 +53,10 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     row("outer cells kept (manifold)", stats.kept_outer_cells);
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);
+  if (stats.method == Method::alpha_shape) row("alpha (radius)", fmt::format("{:g}", stats.alpha));
   if (stats.candidate_facets > 0) {
-    row("candidates / pruned",
-        fmt::format("{} / {}{}", stats.candidate_facets, stats.pruned_facets,
-                    stats.rims_kept ? " (rims of holes kept)" : ""));
+    row("candidates / pruned", fmt::format("{} / {}{}", stats.candidate_facets, stats.pruned_facets,
+                                           stats.rims_kept ? " (rims of holes kept)" : ""));
   }
   row(three ? "triangles" : "edges", stats.facets);
   row(three ? "boundary edges" : "curve end points", stats.boundary_ridges);
@@ -111,6 +111,7 @@ nlohmann::json report_json(const Statistics& stats, const Run_description& run) 
       {"candidate_facets", stats.candidate_facets},
       {"pruned_facets", stats.pruned_facets},
       {"rims_kept", stats.rims_kept},
+      {"alpha", stats.alpha},
       {"facets", stats.facets},
       {"boundary_ridges", stats.boundary_ridges},
       {"non_manifold_ridges", stats.non_manifold_ridges},

@@ -45,14 +45,19 @@ const char* to_string(Method method) {
       return "nn-crust";
     case Method::cocone:
       return "cocone";
+    case Method::advancing_front:
+      return "advancing-front";
+    case Method::alpha_shape:
+      return "alpha-shape";
   }
   return "?";
 }
 
 const std::vector<const char*>& method_names() {
   static const std::vector<const char*> names = {
-      to_string(Options{}.method), to_string(Method::paper), to_string(Method::crust),
-      to_string(Method::nn_crust), to_string(Method::cocone)};
+      to_string(Options{}.method),   to_string(Method::paper),  to_string(Method::crust),
+      to_string(Method::nn_crust),   to_string(Method::cocone), to_string(Method::advancing_front),
+      to_string(Method::alpha_shape)};
   return names;
 }
 
@@ -68,6 +73,10 @@ const char* describe(Method method) {
       return "the nearest-neighbour crust of Dey & Kumar (curves)";
     case Method::cocone:
       return "the co-cone of Amenta, Choi, Dey & Leekha (surfaces)";
+    case Method::advancing_front:
+      return "CGAL's Advancing Front of Cohen-Steiner & Da (surfaces)";
+    case Method::alpha_shape:
+      return "CGAL's alpha shapes, the smallest alpha giving one solid (surfaces)";
   }
   return "?";
 }
@@ -78,13 +87,16 @@ bool sculpts(Method method) {
 
 bool reconstructs_in(Method method, int dimension) {
   if (method == Method::nn_crust) return dimension == 2;
-  if (method == Method::cocone) return dimension == 3;
+  if (method == Method::cocone || method == Method::advancing_front ||
+      method == Method::alpha_shape) {
+    return dimension == 3;
+  }
   return true;
 }
 
 bool parse_method(const std::string& name, Method& method) {
-  for (Method m :
-       {Method::paper, Method::robust, Method::crust, Method::nn_crust, Method::cocone}) {
+  for (Method m : {Method::paper, Method::robust, Method::crust, Method::nn_crust, Method::cocone,
+                   Method::advancing_front, Method::alpha_shape}) {
     if (name == to_string(m)) {
       method = m;
       return true;

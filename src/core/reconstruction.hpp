@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "../methods/cgal/advancing_front_method.hpp"
+#include "../methods/cgal/alpha_shape_method.hpp"
 #include "../methods/cocone/cocone_method.hpp"
 #include "../methods/crust/crust_method.hpp"
 #include "../methods/crust/nn_crust.hpp"
@@ -39,7 +41,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
     throw Input_error(std::string("the method ") + to_string(options.method) +
                       (Traits::dimension == 3
                            ? " reconstructs curves (2D points) only; for surfaces use robust, "
-                             "paper, crust or cocone"
+                             "paper, crust, cocone, advancing-front or alpha-shape"
                            : " reconstructs surfaces (3D points) only; for curves use robust, "
                              "paper, crust or nn-crust"));
   }
@@ -87,6 +89,12 @@ Reconstruction<Traits::dimension> reconstruct_with(
       break;
     case Method::cocone:
       if constexpr (Traits::dimension == 3) run_cocone_method<Traits>(triangulation, result, clock);
+      break;
+    case Method::advancing_front:
+      if constexpr (Traits::dimension == 3) run_advancing_front_method<Traits>(result, clock);
+      break;
+    case Method::alpha_shape:
+      if constexpr (Traits::dimension == 3) run_alpha_shape_method<Traits>(result, clock);
       break;
   }
 

@@ -208,13 +208,48 @@ inline Pseudo_code cocone_pseudo_code() {
   return code;
 }
 
+// CGAL's Advancing Front (src/methods/cgal/advancing_front_method.hpp).
+inline Pseudo_code advancing_front_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S)   # CGAL's own",
+      "surface <- the triangle of smallest radius",
+      "while the front (border) has an edge e:",
+      "    t <- triangle of DT on e, smallest radius,",
+      "         that keeps an oriented 2-manifold",
+      "    add t to the surface; the front moves",
+  };
+  code.line_of_stage = {{Stage::samples, 0}, {Stage::delaunay, 0}, {Stage::surface, 2}};
+  return code;
+}
+
+// CGAL's alpha shapes (src/methods/cgal/alpha_shape_method.hpp).
+inline Pseudo_code alpha_shape_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S)",
+      "alpha <- the smallest radius such that the",
+      "    cells of DT with circumradius < alpha",
+      "    make one solid holding every sample",
+      "solid <- those cells",
+      "surface <- facets between solid and rest",
+  };
+  code.line_of_stage = {
+      {Stage::samples, 0}, {Stage::delaunay, 0}, {Stage::solid, 4}, {Stage::surface, 5}};
+  return code;
+}
+
 inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface_kind::closed,
                                       int dimension = 3) {
   static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code(),
                            open_curves = open_curves_pseudo_code(), crust = crust_pseudo_code(),
                            nn_crust = nn_crust_pseudo_code(),
                            surface_crust = surface_crust_pseudo_code(),
-                           cocone = cocone_pseudo_code();
+                           cocone = cocone_pseudo_code(),
+                           advancing_front = advancing_front_pseudo_code(),
+                           alpha_shape = alpha_shape_pseudo_code();
   switch (method) {
     case Method::paper:
       return paper;
@@ -222,6 +257,10 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
       return dimension == 2 ? crust : surface_crust;
     case Method::cocone:
       return cocone;
+    case Method::advancing_front:
+      return advancing_front;
+    case Method::alpha_shape:
+      return alpha_shape;
     case Method::nn_crust:
       return nn_crust;
     case Method::robust:

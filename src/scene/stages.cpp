@@ -29,11 +29,18 @@ const std::vector<Stage>& stages_of(Method method, int dimension) {
   static const std::vector<Stage> cocone = {Stage::samples, Stage::delaunay,   Stage::voronoi,
                                             Stage::poles,   Stage::candidates, Stage::surface};
   static const std::vector<Stage> nn_crust = {Stage::samples, Stage::delaunay, Stage::surface};
+  static const std::vector<Stage> advancing_front = nn_crust;
+  static const std::vector<Stage> alpha_shape = {Stage::samples, Stage::delaunay, Stage::solid,
+                                                 Stage::surface};
   switch (method) {
     case Method::crust:
       return dimension == 2 ? curve_crust : surface_crust;
     case Method::cocone:
       return cocone;
+    case Method::advancing_front:
+      return advancing_front;
+    case Method::alpha_shape:
+      return alpha_shape;
     case Method::nn_crust:
       return nn_crust;
     default:

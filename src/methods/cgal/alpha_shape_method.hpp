@@ -1,0 +1,74 @@
+// Alpha shapes (Edelsbrunner & Mücke, 1994) through CGAL: the Delaunay cells whose circumball is
+// smaller than a ball of radius alpha make a solid, and its boundary is the surface. One alpha
+// serves the whole shape, so where the sampling is coarser than alpha the solid has holes, and
+// where alpha is larger than a thin part or a cavity, it fills them. We take the smallest alpha
+// whose solid is one piece holding every sample (CGAL's find_optimal_alpha(1)), in REGULARIZED
+// mode (no dangling faces).
+#pragma once
+
+#include <CGAL/Alpha_shape_3.h>
+#include <CGAL/Alpha_shape_cell_base_3.h>
+#include <CGAL/Alpha_shape_vertex_base_3.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
+
+#include <cmath>
+#include <sculpt/sculpt.hpp>
+#include <utility>
+#include <vector>
+
+#include "../../core/stage_clock.hpp"
+#include "outward_orientation.hpp"
+
+namespace sculpt {
+
+template <class Traits>
+void run_alpha_shape_method(Reconstruction<3>& result, Stage_clock& clock) {
+  using Kernel = typename Traits::Kernel;
+  using Info_base = CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>;
+  using Vertex_base = CGAL::Alpha_shape_vertex_base_3<Kernel, Info_base>;
+  using Cell_base = CGAL::Alpha_shape_cell_base_3<Kernel>;
+  using Tds = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
+  using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
+  using Alpha_shape = CGAL::Alpha_shape_3<Delaunay>;
+
+  clock.start("alpha-shape");
+  const int n = static_cast<int>(result.sample_count());
+  std::vector<std::pair<typename Traits::Cgal_point, int>> sites;
+  sites.reserve(n);
+  for (int s = 0; s < n; ++s) sites.push_back({Traits::to_cgal(result.sites[s]), s});
+  Delaunay triangulation(sites.begin(), sites.end());
+  Alpha_shape shape(triangulation, 0, Alpha_shape::REGULARIZED);
+  const auto optimal = shape.find_optimal_alpha(1);
+  if (optimal == shape.alpha_end()) return;  // no alpha gives one piece: no surface
+  shape.set_alpha(*optimal);
+  // Stored in the input's units (the sites are scaled by 2^scale_exponent).
+  result.stats.alpha =
+      std::ldexp(std::sqrt(CGAL::to_double(*optimal)), -result.stats.scale_exponent);
+
+  clock.start("surface");
+  for (auto cell : shape.finite_cell_handles()) {
+    if (shape.classify(cell) != Alpha_shape::INTERIOR) continue;
+    result.solid.push_back({cell->vertex(0)->info(), cell->vertex(1)->info(),
+                            cell->vertex(2)->info(), cell->vertex(3)->info()});
+  }
+  result.stats.solid_cells = result.solid.size();
+  for (auto facet = shape.finite_facets_begin(); facet != shape.finite_facets_end(); ++facet) {
+    if (shape.classify(*facet) != Alpha_shape::REGULAR) continue;
+    // Face away from the interior cell of the two.
+    auto [cell, opposite] = *facet;
+    if (shape.is_infinite(cell) || shape.classify(cell) != Alpha_shape::INTERIOR) {
+      const auto mirror = shape.mirror_facet(*facet);
+      cell = mirror.first;
+      opposite = mirror.second;
+    }
+    Facet<3> triangle;
+    for (int j = 0; j < 3; ++j) {
+      triangle[j] = cell->vertex(Traits::facet_vertex[opposite][j])->info();
+    }
+    result.surface.push_back(triangle);
+  }
+  if (!result.options.keep_solid) result.solid.clear();
+}
+
+}  // namespace sculpt

@@ -1,0 +1,92 @@
+// The methods CGAL computes for us, beside ours on the same stages: the Advancing Front keeps
+// its promise (a closed manifold on smooth dense samples, never a non-manifold edge), and the
+// alpha shape takes the smallest alpha that makes one solid holding every sample.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "scene/scene.hpp"
+#include "shapes/shapes.hpp"
+#include "test_support.hpp"
+
+namespace sculpt {
+namespace {
+
+Options with(Method method) {
+  Options options;
+  options.method = method;
+  return options;
+}
+
+TEST(CgalMethods, TheAdvancingFrontClosesSmoothShapesOrientedOutward) {
+  for (const auto& [name, samples] : std::vector<std::pair<const char*, std::vector<Point<3>>>>{
+           {"sphere", shapes::sphere(2000)}, {"torus", shapes::torus(4000)}}) {
+    SCOPED_TRACE(name);
+    const auto result = reconstruct(samples, with(Method::advancing_front));
+    EXPECT_TRUE(verdict(result.stats).manifold) << verdict(result.stats).line;
+    EXPECT_TRUE(testing::consistently_oriented_closed(result.surface));
+    // Outward: the sphere's normals point away from its centre.
+    if (std::string(name) == "sphere") {
+      for (const auto& t : result.surface) {
+        const auto &a = result.sites[t[0]], &b = result.sites[t[1]], &c = result.sites[t[2]];
+        const double nx = (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]);
+        const double ny = (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]);
+        const double nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+        ASSERT_GT(nx * a[0] + ny * a[1] + nz * a[2], 0);
+      }
+    }
+  }
+}
+
+TEST(CgalMethods, TheAlphaShapeIsOneSolidHoldingEverySample) {
+  const auto samples = shapes::torso(8000);
+  const auto result = reconstruct(samples, with(Method::alpha_shape));
+  EXPECT_GT(result.stats.alpha, 0);
+  EXPECT_EQ(result.stats.components, 1u);
+  ASSERT_FALSE(result.solid.empty());
+  EXPECT_EQ(result.stats.solid_cells, result.solid.size());
+  // Every sample is a vertex of the solid (on its surface or inside it).
+  std::set<int> in_solid;
+  for (const auto& cell : result.solid) in_solid.insert(cell.begin(), cell.end());
+  EXPECT_EQ(in_solid.size(), samples.size());
+  // The surface is the solid's boundary: each of its triangles is a face of exactly one cell.
+  std::map<std::array<int, 3>, int> faces;
+  for (const auto& cell : result.solid) {
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> face;
+      for (int j = 0, k = 0; j < 4; ++j) {
+        if (j != skip) face[k++] = cell[j];
+      }
+      std::sort(face.begin(), face.end());
+      ++faces[face];
+    }
+  }
+  for (auto t : result.surface) {
+    std::sort(t.begin(), t.end());
+    EXPECT_EQ(faces[t], 1);
+  }
+  // Alpha is a length of the input: eight times larger points, eight times larger alpha.
+  auto scaled = samples;
+  for (auto& p : scaled) {
+    for (double& x : p) x *= 8;
+  }
+  EXPECT_NEAR(reconstruct(scaled, with(Method::alpha_shape)).stats.alpha, 8 * result.stats.alpha,
+              1e-9 * result.stats.alpha);
+  for (scene::Stage stage : scene::stages_of(Method::alpha_shape, 3)) {
+    scene::Request request;
+    request.stage = stage;
+    EXPECT_NO_THROW(scene::build_scene(result, request)) << scene::stage_id(stage);
+  }
+}
+
+TEST(CgalMethods, BothReconstructSurfacesOnly) {
+  for (Method method : {Method::advancing_front, Method::alpha_shape}) {
+    EXPECT_FALSE(reconstructs_in(method, 2));
+    EXPECT_THROW(reconstruct(shapes::circle(64).samples, with(method)), Input_error);
+  }
+}
+
+}  // namespace
+}  // namespace sculpt
