@@ -233,8 +233,9 @@ struct Carving_stage {
 };
 
 // The crust's own stage (method crust): the Voronoi vertices V of the samples (the circumcentres
-// of the finite cells of stage 1) and DT(S ∪ V), whose cells number a site i < n as sample i and
-// i >= n as V[i - n]. The curve is its edges between two samples.
+// of the finite cells of stage 1; in 3D only the poles, the Voronoi vertices the crust uses) and
+// DT(S ∪ V), whose cells number a site i < n as sample i and i >= n as V[i - n]. The curve is its
+// edges between two samples.
 template <int D>
 struct Crust_stage {
   std::vector<Point<D>> voronoi_vertices;
@@ -243,11 +244,12 @@ struct Crust_stage {
 
 // The candidate triangles of the methods that filter Delaunay triangles and then extract a
 // manifold from them (the crust and the co-cone in 3D): those the method's rule chose, and those
-// the pruning then removed, in order: those on a sharp fold (two triangles consecutive about an
-// edge at less than 90 degrees) and those with an edge of their own; when removing all of these
-// would leave a sample uncovered (a hole in the candidates eats the surface from its rim), only
-// those hanging free (held only where three or more triangles meet): rims_kept. The surface
-// is the outer boundary of the candidates left, walked from the outside (ACDL 2000, sec. 4).
+// the pruning then removed, in order: those on a sharp edge (its triangles all within a wedge
+// narrower than 90 degrees: for two, a fold sharper than 90) and those with an edge of their own;
+// when removing all of these would leave a sample uncovered (a hole in the candidates eats the
+// surface from its rim), only those hanging free (held only where three or more triangles meet):
+// rims_kept. The surface is the outer boundary of the candidates left, walked from the outside
+// (ACDL 2000, sec. 4).
 template <int D>
 struct Candidates_stage {
   std::vector<Facet<D>> chosen;

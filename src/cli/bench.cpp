@@ -130,7 +130,6 @@ double stage_seconds(const nlohmann::json& stats, std::initializer_list<const ch
   return sum;
 }
 
-// The stages every method has, then the method's own, summed under one heading.
 // The stages every method shares; the rest are the method's own, whatever their names.
 const std::initializer_list<const char*> shared_stages = {"checks", "delaunay", "poles",
                                                           "topology"};

@@ -174,7 +174,8 @@ inline Pseudo_code surface_crust_pseudo_code() {
       "T <- triangles of DT' between samples",
       "drop t if its normal leans from p+(s)-s",
       "    > 45 deg at its widest corner, > 67.5 else",
-      "prune t on a fold sharper than 90 deg or",
+      "prune t on an edge whose triangles fit in",
+      "    90 deg (a sharp fold) or",
       "    with an edge of its own (only fins if",
       "    that leaves a sample bare), repeatedly",
       "surface <- outer boundary of T, walked",
@@ -182,7 +183,7 @@ inline Pseudo_code surface_crust_pseudo_code() {
   // clang-format on
   code.line_of_stage = common_stage_lines(2);
   code.line_of_stage.insert(
-      {{Stage::crust_delaunay, 3}, {Stage::candidates, 7}, {Stage::surface, 10}});
+      {{Stage::crust_delaunay, 3}, {Stage::candidates, 7}, {Stage::surface, 11}});
   return code;
 }
 
@@ -198,13 +199,14 @@ inline Pseudo_code cocone_pseudo_code() {
       "                 of the plane normal to v(s)",
       "T <- triangles t of DT between samples whose",
       "    Voronoi edge meets cocone(s), s in t",
-      "prune t on a fold sharper than 90 deg or",
+      "prune t on an edge whose triangles fit in",
+      "    90 deg (a sharp fold) or",
       "    with an edge of its own (only fins if",
       "    that leaves a sample bare), repeatedly",
       "surface <- outer boundary of T, walked",
   };
   code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::candidates, 5}, {Stage::surface, 10}});
+  code.line_of_stage.insert({{Stage::candidates, 5}, {Stage::surface, 11}});
   return code;
 }
 
@@ -213,7 +215,7 @@ inline Pseudo_code advancing_front_pseudo_code() {
   using scene::Stage;
   Pseudo_code code;
   code.lines = {
-      "DT <- Delaunay(S)   # CGAL's own",
+      "DT <- Delaunay(S)   # CGAL's own, no box",
       "surface <- the triangle of smallest radius",
       "while the front (border) has an edge e:",
       "    t <- triangle of DT on e, smallest radius,",

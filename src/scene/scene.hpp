@@ -58,7 +58,8 @@ const std::vector<Stage>& all_stages();  // of every method, in order
 // The stages a method has in a dimension, in the order it runs them: the sculpting methods all
 // from samples to surface but crust-delaunay and candidates; the crust samples, delaunay,
 // voronoi, crust-delaunay, surface, and in 3D also poles and candidates; the co-cone samples,
-// delaunay, voronoi, poles, candidates, surface; the NN-crust samples, delaunay, surface.
+// delaunay, voronoi, poles, candidates, surface; the NN-crust and the Advancing Front samples,
+// delaunay, surface; the alpha shape samples, delaunay, solid, surface.
 const std::vector<Stage>& stages_of(Method method, int dimension);
 bool has_stage(Method method, int dimension, Stage stage);
 const char* stage_id(Stage stage);     // "delaunay", "outer-concave", ...

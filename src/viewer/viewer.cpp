@@ -1075,7 +1075,8 @@ void Viewer::draw_statistics() {
   } else {
     ImGui::Text("n %zu   poles %zu", s.samples, s.poles);
   }
-  if (!sculpts(s.method) && three) {
+  if (s.method == Method::alpha_shape) ImGui::Text("alpha %g", s.alpha);
+  if (s.candidate_facets > 0) {
     ImGui::Text("cells %zu   candidates %zu, pruned %zu%s", s.delaunay_cells, s.candidate_facets,
                 s.pruned_facets, s.rims_kept ? " (rims kept)" : "");
   } else if (!sculpts(s.method)) {

@@ -2,8 +2,9 @@
 // Amenta, Bern & Kamvysselis 1998): the methods that choose Delaunay triangles by a local rule
 // (the crust, the co-cone) get a set that is a manifold only where the samples are dense and
 // smooth; a few extra triangles stand inside or hang off it. Two steps make a surface of it:
-//   prune: an edge is sharp when two triangles consecutive around it fold by less than 90
-//          degrees (they leave a gap of more than 3π/2), or when it has one triangle; a triangle
+//   prune: an edge is sharp when all its triangles lie within a wedge narrower than 90 degrees
+//          (consecutive about it, they leave a gap wider than 3π/2: for two triangles, a fold
+//          sharper than 90 degrees), or when it has one triangle; a triangle
 //          on a sharp edge cannot be on a smooth closed surface, so it goes, and its neighbours
 //          are looked at again. This is exact where the candidates are a closed surface with a
 //          few extra triangles, but a single hole in them (undersampling) lets it eat the whole
@@ -13,7 +14,10 @@
 //          triangles meet); the hole stays and shows in the verdict;
 //   walk:  from a triangle on the outside, go across each edge to the first triangle met when
 //          turning about that edge from the outside, oriented the same way: this walks the outer
-//          boundary of the triangles' union, which leaves out every triangle inside it.
+//          boundary of the triangles' union, which leaves out the triangles inside it that hang
+//          on it. A piece not joined to it (the wall of a cavity, a second object) is walked from
+//          its own extreme sample, facing out of the solid: into the cavity when it lies inside
+//          the surface walked so far.
 #pragma once
 
 #include <algorithm>
@@ -137,7 +141,7 @@ inline std::vector<Facet<3>> prune_sharp_edges(const std::vector<Point<3>>& poin
     }
     return around;
   };
-  // Whether two triangles consecutive about edge (a, b) fold by less than 90 degrees.
+  // Whether the triangles on edge (a, b) all lie within a wedge narrower than 90 degrees.
   const auto sharp_fold = [&](int a, int b, const std::vector<int>& around) {
     if (around.size() < 2) return false;
     const Edge_frame frame = frame_of(points, a, b, third_vertex(triangles[around[0]], a, b));
@@ -218,8 +222,38 @@ inline std::vector<Facet<3>> prune_candidates(const std::vector<Point<3>>& point
   return pruned;
 }
 
+// A direction for the inside test's rays, in no plane of the coordinate axes, so that a ray from
+// a sample rarely passes exactly through another sample or along an edge (which a ray towards
+// +x does at once on inputs sampled on a grid).
+inline constexpr std::array<double, 3> ray_direction{1.0, 0.3183098861837907, 0.2236067977499790};
+
+// Whether p lies inside the closed surface made of these triangles: the ray from p crosses it
+// an odd number of times.
+inline bool encloses(const std::vector<Point<3>>& points, const std::vector<Facet<3>>& surface,
+                     std::size_t first, std::size_t last, const Point<3>& p) {
+  using namespace extraction_detail;
+  const Vector& d = ray_direction;
+  bool inside = false;
+  for (std::size_t i = first; i < last; ++i) {
+    const Facet<3>& t = surface[i];
+    const Point<3>& a = points[t[0]];
+    const Vector e1 = minus(points[t[1]], a), e2 = minus(points[t[2]], a);
+    const Vector h = cross(d, e2);
+    const double det = dot(e1, h);
+    if (det == 0) continue;  // the ray runs parallel to the triangle
+    const Vector from_a = minus(p, a);
+    const double u = dot(from_a, h) / det;
+    if (u < 0 || u > 1) continue;
+    const Vector q = cross(from_a, e1);
+    const double v = dot(d, q) / det;
+    if (v < 0 || u + v > 1) continue;
+    if (dot(e2, q) / det > 0) inside = !inside;
+  }
+  return inside;
+}
+
 // The outer boundary of the triangles' union, oriented outward: one walk per piece, each started
-// at the triangle of the piece's extreme sample (largest x) whose normal points most along +x.
+// at the triangle of the piece's extreme sample (largest x) whose normal points most along x.
 inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& points,
                                                  const std::vector<Facet<3>>& triangles) {
   using namespace extraction_detail;
@@ -240,6 +274,24 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
     }
   };
 
+  // The pieces walked so far, with their bounding boxes: a piece can hold a sample inside only
+  // if the inside test's ray from it passes through its box.
+  struct Piece {
+    std::size_t first, last;  // its triangles in `surface`
+    Point<3> lower, upper;
+    bool holds_ray_from(const Point<3>& p) const {  // the ray meets the box (slab test)
+      double enter = 0, leave = HUGE_VAL;
+      for (int k = 0; k < 3; ++k) {
+        const double a = (lower[k] - p[k]) / ray_direction[k],
+                     b = (upper[k] - p[k]) / ray_direction[k];
+        enter = std::max(enter, std::min(a, b));
+        leave = std::min(leave, std::max(a, b));
+      }
+      return enter <= leave;
+    }
+  };
+  std::vector<Piece> pieces;
+
   std::vector<std::vector<int>> triangles_at(points.size());
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
     for (int v : triangles[t]) triangles_at[v].push_back(t);
@@ -250,22 +302,46 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
   }
   std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return points[a][0] > points[b][0]; });
 
+  // Whether a triangle can join the surface taken so far: no directed edge used twice, no
+  // third triangle on an edge. Where the candidates have a hole, the walk could otherwise slip
+  // through it to triangles inside and come back to the outer ones from behind.
+  const auto fits = [&](const Facet<3>& t) {
+    for (int k = 0; k < 3; ++k) {
+      const int from = t[k], to = t[(k + 1) % 3];
+      const auto found = walked_on.find(edge_key(from, to));
+      if (used.count(edge_key(from, to) * 2 + (from < to)) ||
+          (found != walked_on.end() && found->second >= 2)) {
+        return false;
+      }
+    }
+    return true;
+  };
+
   for (int start : by_x) {
     if (on_surface[start]) continue;
-    // The seed: at the extreme sample the outside lies towards +x.
+    // The seed: at a piece's extreme sample the outside of that piece lies towards +x; the
+    // solid's outside too, unless the piece lies inside the surface walked so far (a cavity).
+    bool inside = false;
+    for (const Piece& piece : pieces) {
+      if (piece.holds_ray_from(points[start])) {
+        inside ^= encloses(points, surface, piece.first, piece.last, points[start]);
+      }
+    }
     int seed = -1;
     double best = -1;
     Facet<3> oriented{};
     for (int t : triangles_at[start]) {
+      if (taken[t]) continue;
       const auto& [a, b, c] = triangles[t];
       const Vector normal = cross(minus(points[b], points[a]), minus(points[c], points[a]));
       const double length = std::sqrt(dot(normal, normal));
       if (length == 0) continue;
       const double along_x = std::abs(normal[0]) / length;
-      if (along_x > best) {
+      const Facet<3> facing = (normal[0] >= 0) != inside ? Facet<3>{a, b, c} : Facet<3>{a, c, b};
+      if (along_x > best && fits(facing)) {
         best = along_x;
         seed = t;
-        oriented = normal[0] >= 0 ? Facet<3>{a, b, c} : Facet<3>{a, c, b};
+        oriented = facing;
       }
     }
     if (seed < 0) continue;
@@ -296,24 +372,23 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
         }
         if (next < 0 || taken[next]) continue;
         const Facet<3> next_oriented{b, a, third_vertex(triangles[next], a, b)};
-        // Where the candidates have a hole the walk can slip through it to triangles inside
-        // and come back to the outer ones from behind; a directed edge used twice (or an edge
-        // with a third triangle) is where that shows: such a triangle is not taken.
-        bool fits = true;
-        for (int k = 0; k < 3 && fits; ++k) {
-          const int from = next_oriented[k], to = next_oriented[(k + 1) % 3];
-          fits = !used.count(edge_key(from, to) * 2 + (from < to)) &&
-                 walked_on[edge_key(from, to)] < 2;
-        }
-        if (!fits) continue;
+        if (!fits(next_oriented)) continue;
         taken[next] = 1;
         take(next_oriented);
         front.push_back(next_oriented);
       }
     }
+    Piece piece{first_of_piece, surface.size(), points[start], points[start]};
     for (std::size_t t = first_of_piece; t < surface.size(); ++t) {
-      for (int v : surface[t]) on_surface[v] = 1;
+      for (int v : surface[t]) {
+        on_surface[v] = 1;
+        for (int k = 0; k < 3; ++k) {
+          piece.lower[k] = std::min(piece.lower[k], points[v][k]);
+          piece.upper[k] = std::max(piece.upper[k], points[v][k]);
+        }
+      }
     }
+    pieces.push_back(piece);
   }
   return surface;
 }
