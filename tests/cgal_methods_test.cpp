@@ -14,17 +14,11 @@
 namespace sculpt {
 namespace {
 
-Options with(Method method) {
-  Options options;
-  options.method = method;
-  return options;
-}
-
 TEST(CgalMethods, TheAdvancingFrontClosesSmoothShapesOrientedOutward) {
   for (const auto& [name, samples] : std::vector<std::pair<const char*, std::vector<Point<3>>>>{
            {"sphere", shapes::sphere(2000)}, {"torus", shapes::torus(4000)}}) {
     SCOPED_TRACE(name);
-    const auto result = reconstruct(samples, with(Method::advancing_front));
+    const auto result = reconstruct(samples, testing::with_method(Method::advancing_front));
     EXPECT_TRUE(verdict(result.stats).manifold) << verdict(result.stats).line;
     EXPECT_TRUE(testing::consistently_oriented_closed(result.surface));
     // Outward: the sphere's normals point away from its centre.
@@ -42,7 +36,7 @@ TEST(CgalMethods, TheAdvancingFrontClosesSmoothShapesOrientedOutward) {
 
 TEST(CgalMethods, TheAlphaShapeIsOneSolidHoldingEverySample) {
   const auto samples = shapes::torso(8000);
-  const auto result = reconstruct(samples, with(Method::alpha_shape));
+  const auto result = reconstruct(samples, testing::with_method(Method::alpha_shape));
   EXPECT_GT(result.stats.alpha, 0);
   EXPECT_EQ(result.stats.components, 1u);
   ASSERT_FALSE(result.solid.empty());
@@ -52,17 +46,7 @@ TEST(CgalMethods, TheAlphaShapeIsOneSolidHoldingEverySample) {
   for (const auto& cell : result.solid) in_solid.insert(cell.begin(), cell.end());
   EXPECT_EQ(in_solid.size(), samples.size());
   // The surface is the solid's boundary: each of its triangles is a face of exactly one cell.
-  std::map<std::array<int, 3>, int> faces;
-  for (const auto& cell : result.solid) {
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> face;
-      for (int j = 0, k = 0; j < 4; ++j) {
-        if (j != skip) face[k++] = cell[j];
-      }
-      std::sort(face.begin(), face.end());
-      ++faces[face];
-    }
-  }
+  auto faces = testing::faces_of(result.solid);
   for (auto t : result.surface) {
     std::sort(t.begin(), t.end());
     EXPECT_EQ(faces[t], 1);
@@ -72,8 +56,8 @@ TEST(CgalMethods, TheAlphaShapeIsOneSolidHoldingEverySample) {
   for (auto& p : scaled) {
     for (double& x : p) x *= 8;
   }
-  EXPECT_NEAR(reconstruct(scaled, with(Method::alpha_shape)).stats.alpha, 8 * result.stats.alpha,
-              1e-9 * result.stats.alpha);
+  EXPECT_NEAR(reconstruct(scaled, testing::with_method(Method::alpha_shape)).stats.alpha,
+              8 * result.stats.alpha, 1e-9 * result.stats.alpha);
   for (scene::Stage stage : scene::stages_of(Method::alpha_shape, 3)) {
     scene::Request request;
     request.stage = stage;
@@ -84,7 +68,8 @@ TEST(CgalMethods, TheAlphaShapeIsOneSolidHoldingEverySample) {
 TEST(CgalMethods, BothReconstructSurfacesOnly) {
   for (Method method : {Method::advancing_front, Method::alpha_shape}) {
     EXPECT_FALSE(reconstructs_in(method, 2));
-    EXPECT_THROW(reconstruct(shapes::circle(64).samples, with(method)), Input_error);
+    EXPECT_THROW(reconstruct(shapes::circle(64).samples, testing::with_method(method)),
+                 Input_error);
   }
 }
 

@@ -13,12 +13,6 @@
 namespace sculpt {
 namespace {
 
-Options with(Method method) {
-  Options options;
-  options.method = method;
-  return options;
-}
-
 TEST(Crusts, ExactOnDenselySampledClosedCurves) {
   for (Method method : {Method::crust, Method::nn_crust}) {
     for (const auto& [name, truth] : std::vector<std::pair<const char*, shapes::Sampled_curve>>{
@@ -28,7 +22,7 @@ TEST(Crusts, ExactOnDenselySampledClosedCurves) {
              {"nested circles", shapes::nested_circles(120, 60)},
              {"non-uniform ellipse", shapes::nonuniform_ellipse(200)}}) {
       SCOPED_TRACE(std::string(to_string(method)) + " on " + name);
-      const auto result = reconstruct(truth.samples, with(method));
+      const auto result = reconstruct(truth.samples, testing::with_method(method));
       EXPECT_EQ(testing::undirected(result.surface), testing::undirected(truth.edges));
       EXPECT_TRUE(verdict(result.stats).manifold) << verdict(result.stats).line;
       EXPECT_EQ(result.stats.method, method);
@@ -37,7 +31,7 @@ TEST(Crusts, ExactOnDenselySampledClosedCurves) {
 }
 
 TEST(Crusts, TheCrustKeepsItsVoronoiVerticesAndItsTriangulation) {
-  Options options = with(Method::crust);
+  Options options = testing::with_method(Method::crust);
   options.keep_triangulations = true;
   const auto truth = shapes::blob(150);
   const auto result = reconstruct(truth.samples, options);
@@ -75,9 +69,9 @@ TEST(Crusts, TheNnCrustHasNoEndsWhereTheRobustRuleKeepsThem) {
   // Two strokes side by side: the NN-crust joins each end to the other stroke (it assumes closed
   // curves); the robust method's bordered rule, which starts from the same edges, ends them.
   const auto strokes = shapes::two_strokes();
-  const auto nn = reconstruct(strokes.samples, with(Method::nn_crust));
+  const auto nn = reconstruct(strokes.samples, testing::with_method(Method::nn_crust));
   EXPECT_NE(testing::undirected(nn.surface), testing::undirected(strokes.edges));
-  Options robust = with(Method::robust);
+  Options robust = testing::with_method(Method::robust);
   robust.kind = Surface_kind::bordered;
   const auto bordered = reconstruct(strokes.samples, robust);
   EXPECT_EQ(testing::undirected(bordered.surface), testing::undirected(strokes.edges));
@@ -87,7 +81,7 @@ TEST(Crusts, TheNnCrustRefusesSurfacesWithOneLine) {
   EXPECT_FALSE(reconstructs_in(Method::nn_crust, 3));
   EXPECT_TRUE(reconstructs_in(Method::crust, 3));  // tests/surface_filtering_test.cpp
   try {
-    reconstruct(shapes::sphere(200), with(Method::nn_crust));
+    reconstruct(shapes::sphere(200), testing::with_method(Method::nn_crust));
     ADD_FAILURE() << "the NN-crust reconstructed a surface";
   } catch (const Input_error& e) {
     const std::string message = e.what();

@@ -16,12 +16,6 @@
 namespace sculpt {
 namespace {
 
-Options with(Method method) {
-  Options options;
-  options.method = method;
-  return options;
-}
-
 std::set<std::array<int, 3>> unordered(const std::vector<Facet<3>>& triangles) {
   std::set<std::array<int, 3>> result;
   for (auto t : triangles) {
@@ -145,7 +139,7 @@ TEST(SurfaceFiltering, CrustAndCoconeCloseTheSmoothBuiltInShapes) {
   for (Method method : {Method::crust, Method::cocone}) {
     for (const auto& [name, samples] : smooth_closed_shapes()) {
       SCOPED_TRACE(std::string(to_string(method)) + " on the " + name);
-      const auto result = reconstruct(samples, with(method));
+      const auto result = reconstruct(samples, testing::with_method(method));
       const Verdict v = verdict(result.stats);
       EXPECT_TRUE(v.manifold) << v.line;
       EXPECT_EQ(result.stats.unused_samples, 0u);
@@ -156,7 +150,7 @@ TEST(SurfaceFiltering, CrustAndCoconeCloseTheSmoothBuiltInShapes) {
 }
 
 TEST(SurfaceFiltering, TheCandidatesAreKeptAsAStageAndDrawn) {
-  const auto result = reconstruct(shapes::sphere(2000), with(Method::cocone));
+  const auto result = reconstruct(shapes::sphere(2000), testing::with_method(Method::cocone));
   ASSERT_FALSE(result.candidates.chosen.empty());
   // The surface is made of candidates, none of them pruned.
   const auto chosen = unordered(result.candidates.chosen);
@@ -182,7 +176,7 @@ TEST(SurfaceFiltering, TheCandidatesAreKeptAsAStageAndDrawn) {
 
 TEST(SurfaceFiltering, TheSurfaceCrustTriangulatesTheSamplesWithTheirPoles) {
   const auto samples = shapes::sphere(2000);
-  const auto result = reconstruct(samples, with(Method::crust));
+  const auto result = reconstruct(samples, testing::with_method(Method::crust));
   EXPECT_EQ(result.crust.voronoi_vertices.size(), result.stats.poles);
   ASSERT_EQ(result.crust.delaunay.cells.size(), result.crust.delaunay.cell_count);
   // Every candidate is a triangle of DT(S ∪ P) between three samples.
@@ -206,7 +200,7 @@ TEST(SurfaceFiltering, TheSurfaceCrustTriangulatesTheSamplesWithTheirPoles) {
 
 TEST(SurfaceFiltering, TheCoconeRefusesCurvesInOneLine) {
   try {
-    reconstruct(shapes::circle(64).samples, with(Method::cocone));
+    reconstruct(shapes::circle(64).samples, testing::with_method(Method::cocone));
     ADD_FAILURE() << "the co-cone reconstructs surfaces only";
   } catch (const Input_error& e) {
     const std::string message = e.what();

@@ -14,18 +14,12 @@ TEST(Surfaces_3d, SphereIsAClosedManifoldOfGenusZero) {
   EXPECT_EQ(result.stats.inserted_poles, 0u) << "a convex shape needs no sculpting";
 }
 
-Options with_method(Method method) {
-  Options options;
-  options.method = method;
-  return options;
-}
-
 TEST(Surfaces_3d, TorusHasEulerCharacteristicZero) {
-  const auto paper = reconstruct(shapes::torus(4000), with_method(Method::paper));
+  const auto paper = reconstruct(shapes::torus(4000), testing::with_method(Method::paper));
   testing::expect_closed_manifold(paper, 0);
   EXPECT_GT(paper.stats.inserted_poles, 0u) << "the hole must be sculpted out";
   // The robust method opens the hole by carving, which Boissonnat's condition alone cannot.
-  const auto robust = reconstruct(shapes::torus(4000), with_method(Method::robust));
+  const auto robust = reconstruct(shapes::torus(4000), testing::with_method(Method::robust));
   testing::expect_closed_manifold(robust, 0);
   EXPECT_GT(robust.stats.carved_cells, 0u);
 }
@@ -33,7 +27,7 @@ TEST(Surfaces_3d, TorusHasEulerCharacteristicZero) {
 TEST(Surfaces_3d, NonConvexBumpySphere) {
   for (Method method : {Method::paper, Method::robust}) {
     SCOPED_TRACE(to_string(method));
-    const auto result = reconstruct(shapes::bumpy_sphere(6000), with_method(method));
+    const auto result = reconstruct(shapes::bumpy_sphere(6000), testing::with_method(method));
     testing::expect_closed_manifold(result, 2);
     EXPECT_EQ(result.stats.conflicts, 0u);
     EXPECT_GT(method == Method::paper ? result.stats.inserted_poles : result.stats.carved_cells,
@@ -56,9 +50,9 @@ TEST(Surfaces_3d, RobustMethodGivesTheRightGenusOnEveryClosedExample) {
 }
 
 TEST(Surfaces_3d, SkinAndExtractionAgreeOnCleanInput) {
-  Options extraction = with_method(Method::paper);
+  Options extraction = testing::with_method(Method::paper);
   extraction.rule = Surface_rule::extraction;
-  const auto skin = reconstruct(shapes::torus(4000), with_method(Method::paper));
+  const auto skin = reconstruct(shapes::torus(4000), testing::with_method(Method::paper));
   const auto literal = reconstruct(shapes::torus(4000), extraction);
   EXPECT_EQ(skin.surface, literal.surface);
 }
@@ -66,17 +60,7 @@ TEST(Surfaces_3d, SkinAndExtractionAgreeOnCleanInput) {
 TEST(Surfaces_3d, SkinIsTheBoundaryOfTheSolid) {
   // Every triangle of the closed surface is a face of exactly one solid tetrahedron.
   const auto result = reconstruct(shapes::bumpy_sphere(3000));
-  std::map<std::array<int, 3>, int> solid_faces;
-  for (const auto& cell : result.solid) {
-    for (int skip = 0; skip < 4; ++skip) {
-      std::array<int, 3> face;
-      for (int j = 0, k = 0; j < 4; ++j) {
-        if (j != skip) face[k++] = cell[j];
-      }
-      std::sort(face.begin(), face.end());
-      ++solid_faces[face];
-    }
-  }
+  auto solid_faces = testing::faces_of(result.solid);
   std::size_t boundary_faces = 0;
   for (const auto& [face, count] : solid_faces) boundary_faces += count == 1;
   EXPECT_EQ(boundary_faces, result.surface.size());
@@ -123,9 +107,9 @@ TEST(Surfaces_3d, PowersOfTwoChangeNothingButTheScale) {
   const auto samples = shapes::bumpy_sphere(1500);
   for (Method method : {Method::paper, Method::robust}) {
     SCOPED_TRACE(to_string(method));
-    const auto plain = reconstruct(samples, with_method(method));
+    const auto plain = reconstruct(samples, testing::with_method(method));
     for (double factor : {std::ldexp(1.0, 300), std::ldexp(1.0, -1000)}) {
-      const auto big = reconstruct(times(samples, factor), with_method(method));
+      const auto big = reconstruct(times(samples, factor), testing::with_method(method));
       EXPECT_EQ(big.surface, plain.surface);
       ASSERT_EQ(big.poles.poles.size(), plain.poles.poles.size());
       for (std::size_t p = 0; p < plain.poles.poles.size(); p += 97) {
@@ -141,7 +125,7 @@ TEST(Surfaces_3d, ExtremeScalesAreReconstructed) {
     SCOPED_TRACE(factor);
     for (Method method : {Method::paper, Method::robust}) {
       const auto unit = shapes::sphere(500);
-      const auto result = reconstruct(times(unit, factor), with_method(method));
+      const auto result = reconstruct(times(unit, factor), testing::with_method(method));
       EXPECT_TRUE(verdict(result.stats).manifold) << verdict(result.stats).line;
       EXPECT_EQ(result.stats.euler_characteristic, 2);
       EXPECT_TRUE(testing::consistently_oriented_closed(result.surface));
@@ -167,8 +151,8 @@ TEST(Surfaces_3d, FarFromTheOriginIsTranslatedExactly) {
   }
   for (Method method : {Method::paper, Method::robust}) {
     SCOPED_TRACE(to_string(method));
-    const auto at_origin = reconstruct(back, with_method(method));
-    const auto far_away = reconstruct(far, with_method(method));
+    const auto at_origin = reconstruct(back, testing::with_method(method));
+    const auto far_away = reconstruct(far, testing::with_method(method));
     EXPECT_EQ(far_away.surface, at_origin.surface);
     EXPECT_TRUE(verdict(far_away.stats).manifold) << verdict(far_away.stats).line;
     EXPECT_TRUE(std::equal(far.begin(), far.end(), far_away.sites.begin()));

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <sculpt/sculpt.hpp>
 #include <set>
@@ -11,6 +12,29 @@
 #include <vector>
 
 namespace sculpt::testing {
+
+// The default options with another method.
+inline Options with_method(Method method) {
+  Options options;
+  options.method = method;
+  return options;
+}
+
+// The faces of tetrahedra, each with the number of tetrahedra it bounds.
+inline std::map<std::array<int, 3>, int> faces_of(const std::vector<Cell<3>>& cells) {
+  std::map<std::array<int, 3>, int> faces;
+  for (const auto& cell : cells) {
+    for (int skip = 0; skip < 4; ++skip) {
+      std::array<int, 3> face;
+      for (int j = 0, k = 0; j < 4; ++j) {
+        if (j != skip) face[k++] = cell[j];
+      }
+      std::sort(face.begin(), face.end());
+      ++faces[face];
+    }
+  }
+  return faces;
+}
 
 inline std::set<std::pair<int, int>> undirected(const std::vector<Facet<2>>& edges) {
   std::set<std::pair<int, int>> result;

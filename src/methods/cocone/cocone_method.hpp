@@ -96,18 +96,7 @@ void run_cocone_method(const typename Traits::Triangulation& triangulation,
     }
     if (in_all_cocones) chosen.push_back(triangle);
   }
-  result.stats.candidate_facets = chosen.size();
-
-  clock.start("pruning");
-  std::vector<Point<3>> samples(result.sites.begin(), result.sites.begin() + n);
-  std::vector<Facet<3>> kept = chosen;
-  Rims rims = Rims::pruned;
-  result.candidates.pruned = prune_candidates(samples, kept, rims);
-  result.candidates.rims_kept = result.stats.rims_kept = rims == Rims::kept;
-  result.stats.pruned_facets = result.candidates.pruned.size();
-
-  clock.start("walk");
-  result.surface = walk_outer_boundary(samples, kept);
+  extract_manifold({result.sites.begin(), result.sites.begin() + n}, result, clock);
 }
 
 }  // namespace sculpt

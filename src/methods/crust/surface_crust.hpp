@@ -108,17 +108,7 @@ void run_surface_crust_method(const typename Traits::Triangulation& /*stage_1*/,
       chosen.push_back(triangle);
     }
   }
-  result.stats.candidate_facets = chosen.size();
-
-  clock.start("pruning");
-  std::vector<Facet<3>> kept = chosen;
-  Rims rims = Rims::pruned;
-  result.candidates.pruned = prune_candidates(samples, kept, rims);
-  result.candidates.rims_kept = result.stats.rims_kept = rims == Rims::kept;
-  result.stats.pruned_facets = result.candidates.pruned.size();
-
-  clock.start("walk");
-  result.surface = walk_outer_boundary(samples, kept);
+  extract_manifold(samples, result, clock);
 }
 
 }  // namespace sculpt

@@ -30,6 +30,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "../../core/stage_clock.hpp"
+
 namespace sculpt {
 
 namespace extraction_detail {
@@ -391,6 +393,22 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
     pieces.push_back(piece);
   }
   return surface;
+}
+
+// The extraction as a method's last stages: prune the chosen candidates, then walk; the
+// candidates stage and the statistics record both.
+inline void extract_manifold(const std::vector<Point<3>>& samples, Reconstruction<3>& result,
+                             Stage_clock& clock) {
+  const auto& chosen = result.candidates.chosen;
+  result.stats.candidate_facets = chosen.size();
+  clock.start("pruning");
+  std::vector<Facet<3>> kept = chosen;
+  Rims rims = Rims::pruned;
+  result.candidates.pruned = prune_candidates(samples, kept, rims);
+  result.candidates.rims_kept = result.stats.rims_kept = rims == Rims::kept;
+  result.stats.pruned_facets = result.candidates.pruned.size();
+  clock.start("walk");
+  result.surface = walk_outer_boundary(samples, kept);
 }
 
 }  // namespace sculpt
