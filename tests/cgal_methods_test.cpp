@@ -8,6 +8,7 @@
 #include <set>
 
 #include "scene/scene.hpp"
+#include "scene_support.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -58,11 +59,7 @@ TEST(CgalMethods, TheAlphaShapeIsOneSolidHoldingEverySample) {
   }
   EXPECT_NEAR(reconstruct(scaled, testing::with_method(Method::alpha_shape)).stats.alpha,
               8 * result.stats.alpha, 1e-9 * result.stats.alpha);
-  for (scene::Stage stage : scene::stages_of(Method::alpha_shape, 3)) {
-    scene::Request request;
-    request.stage = stage;
-    EXPECT_NO_THROW(scene::build_scene(result, request)) << scene::stage_id(stage);
-  }
+  testing::expect_every_stage_builds(result);
 }
 
 TEST(CgalMethods, BothReconstructSurfacesOnly) {

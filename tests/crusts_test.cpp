@@ -7,6 +7,7 @@
 #include <set>
 
 #include "scene/scene.hpp"
+#include "scene_support.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -50,11 +51,7 @@ TEST(Crusts, TheCrustKeepsItsVoronoiVerticesAndItsTriangulation) {
   // The curve is exactly the triangulation's edges between two samples.
   EXPECT_EQ(sample_edges, testing::undirected(result.surface));
   // And its stages build as scenes; the stages of sculpting are not the crust's.
-  for (scene::Stage stage : scene::stages_of(Method::crust, 2)) {
-    scene::Request request;
-    request.stage = stage;
-    EXPECT_NO_THROW(scene::build_scene(result, request)) << scene::stage_id(stage);
-  }
+  testing::expect_every_stage_builds(result);
   scene::Request propagation;
   propagation.stage = scene::Stage::propagation;
   try {

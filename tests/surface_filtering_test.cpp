@@ -10,6 +10,7 @@
 #include "methods/cocone/cocone_method.hpp"
 #include "methods/extraction/manifold_extraction.hpp"
 #include "scene/scene.hpp"
+#include "scene_support.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -159,11 +160,7 @@ TEST(SurfaceFiltering, TheCandidatesAreKeptAsAStageAndDrawn) {
     EXPECT_TRUE(chosen.count(t));
     EXPECT_FALSE(pruned.count(t));
   }
-  for (scene::Stage stage : scene::stages_of(Method::cocone, 3)) {
-    scene::Request request;
-    request.stage = stage;
-    EXPECT_NO_THROW(scene::build_scene(result, request)) << scene::stage_id(stage);
-  }
+  testing::expect_every_stage_builds(result);
   scene::Request candidates;
   candidates.stage = scene::Stage::candidates;
   const auto ids = scene::layer_ids(scene::build_scene(result, candidates));

@@ -91,7 +91,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
       if constexpr (Traits::dimension == 3) run_cocone_method<Traits>(triangulation, result, clock);
       break;
     case Method::advancing_front:
-      if constexpr (Traits::dimension == 3) run_advancing_front_method<Traits>(result, clock);
+      if constexpr (Traits::dimension == 3) run_advancing_front_method(result, clock);
       break;
     case Method::alpha_shape:
       if constexpr (Traits::dimension == 3) run_alpha_shape_method<Traits>(result, clock);

@@ -6,9 +6,6 @@
 // so that the viewer shows the same Delaunay triangulation for every method.
 #pragma once
 
-#include <CGAL/Advancing_front_surface_reconstruction.h>
-
-#include <array>
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
@@ -17,21 +14,11 @@
 
 namespace sculpt {
 
-template <class Traits>
-void run_advancing_front_method(Reconstruction<3>& result, Stage_clock& clock) {
+// The call itself is the benchmark's yardstick (src/yardsticks), on our normalised samples.
+inline void run_advancing_front_method(Reconstruction<3>& result, Stage_clock& clock) {
   clock.start("advancing-front");
-  const int n = static_cast<int>(result.sample_count());
-  std::vector<typename Traits::Cgal_point> points;
-  points.reserve(n);
-  for (int s = 0; s < n; ++s) points.push_back(Traits::to_cgal(result.sites[s]));
-  std::vector<std::array<std::size_t, 3>> triangles;
-  CGAL::advancing_front_surface_reconstruction(points.begin(), points.end(),
-                                               std::back_inserter(triangles));
-  result.surface.reserve(triangles.size());
-  for (const auto& t : triangles) {
-    result.surface.push_back(
-        {static_cast<int>(t[0]), static_cast<int>(t[1]), static_cast<int>(t[2])});
-  }
+  const auto n = static_cast<std::ptrdiff_t>(result.sample_count());
+  result.surface = cgal_advancing_front({result.sites.begin(), result.sites.begin() + n});
   orient_outward(result.sites, result.surface);
 }
 

@@ -33,7 +33,7 @@ inline constexpr double cocone_angle = M_PI / 8;
 inline bool segment_meets_cocone(const Point<3>& p, const std::array<double, 3>& pole_vector,
                                  const Point<3>& from, const Point<3>& to) {
   using namespace extraction_detail;
-  const double bound = std::sin(cocone_angle);
+  static const double bound = std::sin(cocone_angle);
   const auto side = [&](const Point<3>& q) {
     const Vector d = minus(q, p);
     const double length = std::sqrt(dot(d, d));
@@ -46,8 +46,7 @@ inline bool segment_meets_cocone(const Point<3>& p, const std::array<double, 3>&
 }
 
 // Unit vectors from each sample to its positive pole.
-template <int D>
-std::vector<std::array<double, 3>> pole_vectors(const Reconstruction<D>& result) {
+inline std::vector<std::array<double, 3>> pole_vectors(const Reconstruction<3>& result) {
   using namespace extraction_detail;
   const int n = static_cast<int>(result.sample_count());
   std::vector<std::array<double, 3>> vectors(n, {0, 0, 0});

@@ -56,9 +56,10 @@ inline bool normal_agrees_with_poles(const std::vector<Point<3>>& points,
     }
   }
   for (int j = 0; j < 3; ++j) {
-    const double bound = j == widest ? crust_normal_angle : 1.5 * crust_normal_angle;
+    static const double tight = std::cos(crust_normal_angle),
+                        loose = std::cos(1.5 * crust_normal_angle);
     // The pole vector may point either way along the normal.
-    if (std::abs(dot(normal, pole_vectors[t[j]])) < std::cos(bound)) return false;
+    if (std::abs(dot(normal, pole_vectors[t[j]])) < (j == widest ? tight : loose)) return false;
   }
   return true;
 }

@@ -264,16 +264,13 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
   std::vector<char> on_surface(points.size(), 0);
   std::vector<Facet<3>> surface;
 
-  // The directed edges of the triangles taken, and how many taken triangles each edge has.
+  // The directed edges of the triangles taken. An edge used once in each direction has its two
+  // triangles: no third can join it without using one direction twice.
   std::unordered_set<std::uint64_t> used;
-  std::unordered_map<std::uint64_t, int> walked_on;
+  const auto directed = [](int from, int to) { return edge_key(from, to) * 2 + (from < to); };
   const auto take = [&](const Facet<3>& t) {
     surface.push_back(t);
-    for (int k = 0; k < 3; ++k) {
-      const int from = t[k], to = t[(k + 1) % 3];
-      used.insert(edge_key(from, to) * 2 + (from < to));
-      ++walked_on[edge_key(from, to)];
-    }
+    for (int k = 0; k < 3; ++k) used.insert(directed(t[k], t[(k + 1) % 3]));
   };
 
   // The pieces walked so far, with their bounding boxes: a piece can hold a sample inside only
@@ -304,17 +301,12 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
   }
   std::sort(by_x.begin(), by_x.end(), [&](int a, int b) { return points[a][0] > points[b][0]; });
 
-  // Whether a triangle can join the surface taken so far: no directed edge used twice, no
-  // third triangle on an edge. Where the candidates have a hole, the walk could otherwise slip
-  // through it to triangles inside and come back to the outer ones from behind.
+  // Whether a triangle can join the surface taken so far: no directed edge used twice, hence
+  // no third triangle on an edge. Where the candidates have a hole, the walk could otherwise
+  // slip through it to triangles inside and come back to the outer ones from behind.
   const auto fits = [&](const Facet<3>& t) {
     for (int k = 0; k < 3; ++k) {
-      const int from = t[k], to = t[(k + 1) % 3];
-      const auto found = walked_on.find(edge_key(from, to));
-      if (used.count(edge_key(from, to) * 2 + (from < to)) ||
-          (found != walked_on.end() && found->second >= 2)) {
-        return false;
-      }
+      if (used.count(directed(t[k], t[(k + 1) % 3]))) return false;
     }
     return true;
   };
