@@ -418,8 +418,11 @@ class Scene_builder {
     } else {
       // Tetrahedra shrunk towards their centroids, and the front half (+z, towards the default
       // camera) cut away, so the inside of the solid shows.
-      Layer& layer = add("solid", "sculpted solid (all-sample tetrahedra)", Primitive::triangles,
-                         palette::solid, 1.0f);
+      const bool alpha = r_.options.method == Method::alpha_shape;
+      if (alpha) scene_.title = "Alpha solid: the cells of circumradius below alpha";
+      Layer& layer = add(
+          "solid", alpha ? "alpha solid (tetrahedra)" : "sculpted solid (all-sample tetrahedra)",
+          Primitive::triangles, palette::solid, 1.0f);
       layer.lit = true;
       const float cut = 0.5f * (scene_.lower[2] + scene_.upper[2]);
       for (const auto& cell : r_.solid) {
