@@ -68,63 +68,15 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   row("unused samples", stats.unused_samples);
 }
 
-std::string surface_rule_name(const Options& options, int dimension) {
-  if (!sculpts(options.method)) return to_string(options.method);
-  if (joins_neighbours(options.method, options.kind, dimension)) return "nearest neighbours";
-  return inserts_poles(options.method, options.kind, dimension) ? to_string(resolved_rule(options))
-                                                                : "manifold carve";
-}
-
 nlohmann::json report_json(const Statistics& stats, const Run_description& run) {
-  nlohmann::json stages = nlohmann::json::array();
-  for (const auto& stage : stats.stages) {
-    stages.push_back({{"name", stage.name},
-                      {"seconds", stage.seconds},
-                      {"peak_memory_mib", stage.peak_memory_mib}});
-  }
-  const Verdict verdict = sculpt::verdict(stats);
-  return {
-      {"input", run.input},
-      {"method", to_string(stats.method)},
-      {"verdict", verdict.line},
-      {"manifold", verdict.manifold},
-      {"carved_cells", stats.carved_cells},
-      {"kept_outer_cells", stats.kept_outer_cells},
-      {"dimension", stats.dimension},
-      {"kind", run.kind},
-      {"rule", run.rule},
-      {"box_factor", run.box_factor},
-      {"samples", stats.samples},
-      {"normalisation",
-       {{"translation", stats.translation}, {"scale_exponent", stats.scale_exponent}}},
-      {"poles", stats.poles},
-      {"convex_poles", stats.convex_poles},
-      {"inner_poles", stats.inner_poles},
-      {"outer_poles", stats.outer_poles},
-      {"unlabelled_poles", stats.unlabelled_poles},
-      {"conflicts", stats.conflicts},
-      {"conflict_offers", stats.conflict_offers},
-      {"inserted_poles", stats.inserted_poles},
-      {"delaunay_cells", stats.delaunay_cells},
-      {"sculpted_cells", stats.sculpted_cells},
-      {"solid_cells", stats.solid_cells},
-      {"candidate_facets", stats.candidate_facets},
-      {"pruned_facets", stats.pruned_facets},
-      {"rims_kept", stats.rims_kept},
-      {"alpha", stats.alpha},
-      {"facets", stats.facets},
-      {"boundary_ridges", stats.boundary_ridges},
-      {"non_manifold_ridges", stats.non_manifold_ridges},
-      {"non_manifold_vertices", stats.non_manifold_vertices},
-      {"boundary_loops", stats.boundary_loops},
-      {"components", stats.components},
-      {"euler_characteristic", stats.euler_characteristic},
-      {"unused_samples", stats.unused_samples},
-      {"read_seconds", run.read_seconds},
-      {"write_seconds", run.write_seconds},
-      {"total_seconds", stats.total_seconds},
-      {"stages", stages},
-  };
+  nlohmann::json json = frontend::statistics_json(stats);
+  json["input"] = run.input;
+  json["kind"] = run.kind;
+  json["rule"] = run.rule;
+  json["box_factor"] = run.box_factor;
+  json["read_seconds"] = run.read_seconds;
+  json["write_seconds"] = run.write_seconds;
+  return json;
 }
 
 }  // namespace sculpt::cli

@@ -7,7 +7,11 @@
 #include <sculpt/sculpt.hpp>
 #include <string>
 
+#include "frontend/statistics_json.hpp"
+
 namespace sculpt::cli {
+
+using frontend::surface_rule_name;
 
 struct Run_description {
   std::string input;
@@ -17,10 +21,6 @@ struct Run_description {
   double read_seconds = 0;
   double write_seconds = 0;
 };
-
-// The rule that made the surface, for the report: a surface rule, or the robust method's carve
-// (a carved surface comes from no surface rule).
-std::string surface_rule_name(const Options& options, int dimension);
 
 void print_report(std::ostream& out, const Statistics& stats, const Run_description& run);
 nlohmann::json report_json(const Statistics& stats, const Run_description& run);

@@ -72,16 +72,10 @@ Shot shot_from_json(const nlohmann::json& j) {
   return shot;
 }
 
-scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inline_camera) {
-  if (shot.output.empty()) throw io::Error("a shot has no output file");
-  if (io::extension_of(shot.output) != ".png") {
-    throw io::Error("render writes PNG images: '" + shot.output + "' does not end in .png");
-  }
-  io::check_output_folder(shot.output);  // before any work
-  io::check_output_folder(shot.save_camera);
-  if (shot.input.empty() == shot.example.empty()) {
-    throw io::Error("a shot needs an input file or an example (one of them)");
-  }
+namespace {
+
+// What a shot asks of the scene builder; throws io::Error for an unknown stage.
+scene::Request request_of(const Shot& shot) {
   scene::Request request;
   if (!scene::parse_stage(shot.stage, request.stage)) {
     std::string stages;
@@ -96,29 +90,55 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   request.layers = shot.layers;
   request.wireframe = shot.wireframe;
   request.smooth = shot.smooth;
+  return request;
+}
+
+}  // namespace
+
+Picture draw_shot(render::Headless_renderer& renderer, const Shot& shot,
+                  const Any_reconstruction& reconstruction, const nlohmann::json* inline_camera) {
+  const scene::Request request = request_of(shot);
   const auto [width, height] = parse_size(shot.size);
 
-  scene::Scene scene;
+  Picture picture;
   try {
-    scene = std::visit([&](const auto& r) { return scene::build_scene(r, request); },
-                       reconstruction(shot));
+    picture.scene =
+        std::visit([&](const auto& r) { return scene::build_scene(r, request); }, reconstruction);
   } catch (const std::invalid_argument& e) {
     throw io::Error(e.what());
   }
-  render::Camera camera =
-      render::fit(scene, float(width) / float(height), shot.zoom, shot.yaw, shot.pitch);
-  if (inline_camera) camera = camera_or_error(*inline_camera);
-  if (!shot.camera_file.empty()) camera = camera_or_error(read_json(shot.camera_file));
-  if (!shot.save_camera.empty()) {
-    io::Atomic_file file(shot.save_camera, false);
-    file.stream() << render::to_json(camera).dump(2) << '\n';
-    file.commit();
-  }
-  if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
+  picture.camera =
+      render::fit(picture.scene, float(width) / float(height), shot.zoom, shot.yaw, shot.pitch);
+  if (inline_camera) picture.camera = camera_or_error(*inline_camera);
+  if (!shot.camera_file.empty()) picture.camera = camera_or_error(read_json(shot.camera_file));
   render::Draw_options options;
   options.legend = options.title = !shot.no_legend;
-  render::write_png(shot.output, renderer_->render(scene, camera, width, height, options));
-  return scene;
+  picture.image = renderer.render(picture.scene, picture.camera, width, height, options);
+  return picture;
+}
+
+scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inline_camera) {
+  if (shot.output.empty()) throw io::Error("a shot has no output file");
+  if (io::extension_of(shot.output) != ".png") {
+    throw io::Error("render writes PNG images: '" + shot.output + "' does not end in .png");
+  }
+  io::check_output_folder(shot.output);  // before any work
+  io::check_output_folder(shot.save_camera);
+  if (shot.input.empty() == shot.example.empty()) {
+    throw io::Error("a shot needs an input file or an example (one of them)");
+  }
+  request_of(shot);  // an unknown stage or size fails before any work
+  parse_size(shot.size);
+  const Any_reconstruction& shown = reconstruction(shot);
+  if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
+  Picture picture = draw_shot(*renderer_, shot, shown, inline_camera);
+  if (!shot.save_camera.empty()) {
+    io::Atomic_file file(shot.save_camera, false);
+    file.stream() << render::to_json(picture.camera).dump(2) << '\n';
+    file.commit();
+  }
+  render::write_png(shot.output, picture.image);
+  return std::move(picture.scene);
 }
 
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {

@@ -23,6 +23,17 @@ Shot shot_from_json(const nlohmann::json& json);
 
 using Any_reconstruction = std::variant<Reconstruction<2>, Reconstruction<3>>;
 
+// A picture of a stage of a reconstruction as a shot describes it (the shot's input, method and
+// output are not read): the scene drawn, the camera, the image.
+struct Picture {
+  scene::Scene scene;
+  render::Camera camera;
+  render::Image image;
+};
+// `camera`, if given, replaces the fitted camera. Throws io::Error with a one-line message.
+Picture draw_shot(render::Headless_renderer& renderer, const Shot& shot,
+                  const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr);
+
 class Shot_renderer {
  public:
   // Renders a shot to its output PNG. `camera`, if given, replaces the fitted camera.

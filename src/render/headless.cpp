@@ -11,17 +11,33 @@
 namespace sculpt::render {
 namespace {
 
-// The module beside the executable (build tree, or an installed bin/), in ../lib/sculpt (an
-// installed tree), or where the build put it (the tests run from their own folder).
-Make_offscreen_renderer find_module() {
-  std::vector<std::filesystem::path> places;
+// Where this code was loaded from: the executable, or a shared object such as the Python module.
+std::filesystem::path loaded_from() {
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<void*>(&loaded_from), &info) && info.dli_fname &&
+      info.dli_fname[0] == '/') {
+    return info.dli_fname;
+  }
   std::error_code error;
   const auto executable = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error) {
-    places.push_back(executable.parent_path() / offscreen_module_name);
-    places.push_back(executable.parent_path() / "../lib/sculpt" / offscreen_module_name);
+  return error ? std::filesystem::path() : executable;
+}
+
+// The module beside the program or library that renders (the build tree), where an installed
+// tree keeps it relative to an installed executable or to the installed Python package, and
+// where the build put it (the tests run from their own folder).
+Make_offscreen_renderer find_module() {
+  std::vector<std::filesystem::path> places;
+  const auto from = loaded_from();
+  if (!from.empty()) {
+    const auto folder = from.parent_path();
+    places.push_back(folder / offscreen_module_name);
+    places.push_back((folder / SCULPT_MODULE_FROM_BIN / offscreen_module_name).lexically_normal());
+    places.push_back(
+        (folder / SCULPT_MODULE_FROM_PYTHON / offscreen_module_name).lexically_normal());
   }
   places.push_back(std::filesystem::path(SCULPT_MODULE_DIR) / offscreen_module_name);
+  std::error_code error;
   std::string failures;
   for (const auto& place : places) {
     if (!std::filesystem::exists(place, error)) continue;

@@ -45,6 +45,15 @@ struct Osmesa_context {
     }
   }
   ~Osmesa_context() { OSMesaDestroyContext(context); }
+
+  // A context is current per thread: a caller that renders from several threads (one at a time,
+  // e.g. a Python program's) makes it current on each.
+  void make_current() {
+    if (OSMesaGetCurrentContext() == context) return;
+    if (!OSMesaMakeCurrent(context, dummy.data(), GL_UNSIGNED_BYTE, 16, 16)) {
+      throw std::runtime_error("OSMesa cannot make its context current");
+    }
+  }
 };
 
 // A framebuffer of one or several samples with colour and depth renderbuffers.
@@ -84,6 +93,7 @@ class Osmesa_offscreen : public Offscreen_renderer {
   Osmesa_offscreen()
       : context_(std::make_unique<Osmesa_context>()), renderer_(std::make_unique<Renderer>()) {}
   ~Osmesa_offscreen() override {
+    context_->make_current();
     renderer_.reset();  // its GL objects go while the context still exists
   }
 
@@ -97,6 +107,7 @@ class Osmesa_offscreen : public Offscreen_renderer {
       throw std::runtime_error("image size out of range: " + std::to_string(width) + "x" +
                                std::to_string(height));
     }
+    context_->make_current();
     const Framebuffer multisampled(width, height, 4);
     const Framebuffer resolved(width, height, 0);
     glBindFramebuffer(GL_FRAMEBUFFER, multisampled.id());

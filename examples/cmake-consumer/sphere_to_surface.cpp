@@ -1,0 +1,34 @@
+// Samples a sphere, reconstructs it through the installed libsculpt, and prints the verdict:
+// what a program outside the project needs is include/sculpt/sculpt.hpp and Sculpt::sculpt.
+// Exits 0 when the result is a closed 2-manifold and bad input is reported as the API says.
+#include <cmath>
+#include <iostream>
+#include <sculpt/sculpt.hpp>
+#include <vector>
+
+int main() {
+  // A Fibonacci sphere: n points spread evenly by the golden angle.
+  const int n = 2000;
+  const double golden_angle = M_PI * (3.0 - std::sqrt(5.0));
+  std::vector<sculpt::Point<3>> points;
+  for (int k = 0; k < n; ++k) {
+    const double z = 1.0 - 2.0 * (k + 0.5) / n, r = std::sqrt(1.0 - z * z);
+    points.push_back({r * std::cos(golden_angle * k), r * std::sin(golden_angle * k), z});
+  }
+  sculpt::Options options;
+  sculpt::parse_method("robust", options.method);
+  const auto result = sculpt::reconstruct(points, options);
+  const sculpt::Verdict verdict = sculpt::verdict(result.stats);
+  std::cout << "sculpt " << sculpt::version() << ", method " << sculpt::to_string(options.method)
+            << ": " << result.surface.size() << " triangles\nverdict: " << verdict.line << '\n';
+
+  // Exceptions cross the library boundary as the types the header declares.
+  try {
+    sculpt::reconstruct(std::vector<sculpt::Point<3>>(points.begin(), points.begin() + 3));
+    std::cout << "three points were not refused\n";
+    return 1;
+  } catch (const sculpt::Input_error& e) {
+    std::cout << "three points: " << e.what() << '\n';
+  }
+  return verdict.manifold ? 0 : 1;
+}

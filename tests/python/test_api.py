@@ -1,0 +1,208 @@
+"""The Python module against the core and the command line: the same results, stages, verdicts,
+statistics and messages; the GIL released; progress and cancel; pictures as `sculpt render`
+draws them."""
+import _thread
+import gc
+import json
+import threading
+
+import matplotlib.image
+import numpy as np
+import pytest
+
+import sculpt
+
+
+@pytest.fixture(scope="module")
+def star():
+    return sculpt.reconstruct(sculpt.example("star"), method="paper")
+
+
+@pytest.fixture(scope="module")
+def bumpy():
+    return sculpt.reconstruct(sculpt.example("bumpy"))
+
+
+def test_a_closed_curve_and_a_closed_surface_with_their_verdicts(star, bumpy):
+    assert star.dimension == 2 and bumpy.dimension == 3
+    for result in (star, bumpy):
+        assert result.manifold
+        assert result.verdict.startswith("closed")
+        n = len(result.samples)
+        assert result.stats["samples"] == n
+        assert result.surface.min() >= 0 and result.surface.max() < n
+        assert len(np.unique(result.surface)) == n  # every sample on the result
+    assert star.surface.shape == (200, 2)  # a closed curve: as many edges as samples
+    # Euler: a closed genus-0 surface of n vertices has 2n - 4 triangles.
+    assert bumpy.surface.shape == (2 * len(bumpy.samples) - 4, 3)
+
+
+def test_every_stage_is_consistent_with_the_others(star):
+    n = len(star.samples)
+    stages = star.stages
+    cells = stages["delaunay"].cells
+    assert cells.shape == (stages["delaunay"].cell_count, 3)
+    assert cells.max() == n + 4 - 1  # samples and the four box corners
+    poles = stages["poles"]
+    assert np.all(poles.radius > 0)
+    assert poles.center.shape == (len(poles.radius), 2)
+    # A pole is the circumcentre of its cell: as far from each of the cell's sites.
+    distances = np.linalg.norm(star.sites[poles.sites] - poles.center[:, None, :], axis=2)
+    assert np.allclose(distances, poles.radius[:, None], rtol=1e-9)
+    assert poles.positive_pole.shape == (n,) and poles.positive_pole.max() < len(poles.radius)
+    propagation = stages["propagation"]
+    assert len(propagation.labels) == len(poles.radius)
+    # The paper keeps the first label: replaying the events gives the final labels.
+    replayed = np.zeros(len(poles.radius), dtype=np.uint8)
+    replayed[propagation.events["pole"]] = propagation.events["label"]
+    assert np.array_equal(replayed, propagation.labels)
+    assert sculpt.LABELS[propagation.events["label"][0]] == "outer"  # a convex seed
+    assert np.all(propagation.labels[stages["insertion"].inserted_poles] == 2)  # OUP: outer
+    assert np.all(stages["seeds"].outer_seeds < len(poles.radius))
+
+
+def test_the_arrays_are_read_only_views_that_keep_the_result_alive():
+    surface = sculpt.reconstruct(sculpt.example("star")).surface
+    gc.collect()  # the result is gone from Python; its arrays must still hold it
+    assert surface.shape == (200, 2) and surface.max() == 199
+    with pytest.raises(ValueError):
+        surface[0, 0] = 5
+
+
+def test_the_statistics_and_verdict_are_the_command_lines(bumpy, sculpt_cli, tmp_path):
+    stats = tmp_path / "bumpy.json"
+    run = sculpt_cli("reconstruct", "--example", "bumpy", "-o", tmp_path / "bumpy.stl",
+                     "--stats", stats)
+    assert run.returncode == 0, run.stderr
+    cli = json.loads(stats.read_text())
+    for field in ("verdict", "method", "kind", "rule", "facets", "poles", "components",
+                  "euler_characteristic", "carved_cells", "unused_samples", "box_factor"):
+        assert bumpy.stats[field] == cli[field], field
+    assert f"verdict: {bumpy.verdict}" in run.stdout
+
+
+def test_every_method_by_name_where_it_applies(sculpt_cli):
+    help_text = sculpt_cli("reconstruct", "--help").stdout
+    curve, surface = sculpt.example("star"), sculpt.example("bumpy")
+    assert list(sculpt.methods())[0] == sculpt.DEFAULT_METHOD
+    for name in sculpt.methods():
+        assert name in help_text
+        for points in (curve, surface):
+            dimension = points.shape[1]
+            try:
+                result = sculpt.reconstruct(points, method=name)
+            except sculpt.InputError as error:  # the NN-crust has no surfaces, the co-cone no curves
+                assert name in ("nn-crust", "cocone", "advancing-front", "alpha-shape")
+                assert "\n" not in str(error)
+                continue
+            assert result.method == name and result.stats["method"] == name
+            assert result.surface.shape[1] == dimension
+            assert sculpt.stages(name, dimension)[0] == "samples"
+
+
+def test_bad_input_raises_the_command_lines_message(sculpt_cli, tmp_path):
+    collinear = tmp_path / "line.xyz"
+    collinear.write_text("".join(f"{k} {2 * k} {3 * k}\n" for k in range(10)))
+    malformed = tmp_path / "broken.xyz"
+    malformed.write_text("1 2 3\n4 five 6\n")
+    for path in (collinear, malformed):
+        run = sculpt_cli("reconstruct", path, "-o", tmp_path / "out.stl")
+        assert run.returncode == 1
+        with pytest.raises(sculpt.InputError) as raised:
+            sculpt.reconstruct(sculpt.read_points(str(path)))
+        assert run.stderr == f"sculpt: error: {raised.value}\n"
+    with pytest.raises(ValueError, match=r"shape \(n, 2\) or \(n, 3\), not \(4, 4\)"):
+        sculpt.reconstruct(np.zeros((4, 4)))
+    with pytest.raises(ValueError, match="methods: robust, paper"):
+        sculpt.reconstruct(sculpt.example("star"), method="sculpting")
+    with pytest.raises(sculpt.InputError, match="stages: samples"):
+        sculpt.render(sculpt.reconstruct(sculpt.example("star")), stage="nothing")
+
+
+def test_repeated_points_are_refused_until_merged():
+    points = sculpt.example("bumpy")
+    repeated = np.vstack([points, points[:5]])
+    with pytest.raises(sculpt.DuplicatePoints, match="merge_duplicates=True"):
+        sculpt.reconstruct(repeated)
+    merged = sculpt.merge_duplicates(repeated)
+    assert np.array_equal(merged, points)
+    assert sculpt.reconstruct(merged).manifold
+
+
+def test_reconstruction_releases_the_gil():
+    points = sculpt.example("torus")
+    ticks, marks = [0], []
+
+    def reconstruct():  # the callback runs inside the core: it marks the main thread's count
+        sculpt.reconstruct(points, progress=lambda stage, fraction: marks.append(ticks[0]))
+
+    worker = threading.Thread(target=reconstruct)
+    worker.start()
+    while worker.is_alive():
+        ticks[0] += 1
+    worker.join()
+    # Holding the GIL from its first stage to its last, the core would leave this thread no turn.
+    assert marks[-1] - marks[0] > 10000
+
+
+def test_ctrl_c_interrupts_a_reconstruction():
+    seen = []
+
+    def interrupt_once_poles_start(stage, fraction):
+        seen.append(stage)
+        if stage == "poles":
+            _thread.interrupt_main()  # as Ctrl-C in a notebook; the core checks at its next report
+
+    with pytest.raises(KeyboardInterrupt):
+        sculpt.reconstruct(sculpt.example("bumpy"), progress=interrupt_once_poles_start)
+    assert "surface" not in seen  # stopped there, not after the run
+
+
+def test_progress_is_reported_and_can_cancel():
+    points = sculpt.example("bumpy")
+    seen = []
+    sculpt.reconstruct(points, progress=lambda stage, fraction: seen.append((stage, fraction)))
+    stages = [stage for stage, _ in seen]
+    assert "delaunay" in stages and "poles" in stages
+    assert all(0 <= fraction <= 1 for _, fraction in seen)
+    with pytest.raises(sculpt.Cancelled):
+        sculpt.reconstruct(points, progress=lambda stage, fraction: stage != "poles")
+
+    def failing(stage, fraction):
+        raise ZeroDivisionError("from the callback")
+
+    with pytest.raises(ZeroDivisionError, match="from the callback"):
+        sculpt.reconstruct(points, progress=failing)
+
+
+def test_pictures_are_the_command_lines(star, sculpt_cli, tmp_path):
+    shots = tmp_path / "shots.json"
+    png = tmp_path / "poles.png"
+    shots.write_text(json.dumps({"shots": [
+        {"example": "star", "method": "paper", "stage": "poles", "size": "320x240",
+         "output": str(png)}]}))
+    run = sculpt_cli("render", "--shots", shots)
+    assert run.returncode == 0, run.stderr
+    expected = np.rint(matplotlib.image.imread(png) * 255).astype(np.uint8)
+    image = sculpt.render(star, stage="poles", size=(320, 240))
+    assert image.shape == (240, 320, 4) and image.dtype == np.uint8
+    assert np.abs(image.astype(int) - expected).max() <= 2
+    other = sculpt.render(star, stage="surface", size=(320, 240))
+    assert np.count_nonzero(np.any(other != image, axis=2)) > 1000
+    # from another thread too (the GL context follows the caller)
+    results = []
+    worker = threading.Thread(target=lambda: results.append(sculpt.render(star, stage="poles",
+                                                                          size=(320, 240))))
+    worker.start()
+    worker.join()
+    assert np.array_equal(results[0], image)
+
+
+def test_writes_every_file_or_none(bumpy, tmp_path):
+    stl, solid = tmp_path / "bumpy.stl", tmp_path / "bumpy.vtu"
+    sculpt.write(bumpy, str(stl), solid=str(solid))
+    assert stl.stat().st_size == 84 + 50 * len(bumpy.surface)  # binary STL
+    assert solid.stat().st_size > 0
+    with pytest.raises(sculpt.InputError, match="cannot write a solid"):
+        sculpt.write(bumpy, str(tmp_path / "again.stl"), solid=str(tmp_path / "again.txt"))
+    assert not (tmp_path / "again.stl").exists()
