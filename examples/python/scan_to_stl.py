@@ -18,7 +18,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("points", nargs="?", help="a point file; the bumpy sphere if none")
     parser.add_argument("-o", "--output", default="surface.stl")
-    parser.add_argument("--method", default=sculpt.DEFAULT_METHOD, choices=list(sculpt.methods()))
+    parser.add_argument("--method", default=sculpt.DEFAULT_METHOD, choices=list(sculpt.methods(dimension=3)))
     args = parser.parse_args()
 
     try:

@@ -375,6 +375,8 @@ bool reconstructs_in(Method method, int dimension);
 // Whether a method labels poles and sculpts a solid (paper, robust), or only reads the
 // triangulation and the poles (the crusts, the co-cone).
 bool sculpts(Method method);
+// Whether a method's result has a solid (stage 7): the sculpting methods and the alpha shape.
+bool builds_solid(Method method);
 bool parse_method(const std::string& name, Method& method);
 bool parse_rule(const std::string& name, Surface_rule& rule);  // auto, skin, extraction
 

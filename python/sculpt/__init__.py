@@ -2,8 +2,9 @@
 
     import sculpt
     points = sculpt.example("bumpy")              # or sculpt.read_points("scan.ply"), any (n, 3) array
+    print(sculpt.methods(dimension=3))            # the surface methods, the default first
     result = sculpt.reconstruct(points)           # method="robust" (sculpt.methods() lists them all)
-    print(result.verdict)                         # "closed 2-manifold, 1 component, genus 0"
+    print(result.verdict)                         # "closed 2-manifold of genus 0: 1 component, ..."
     result.surface                                # (f, 3) triangles, indices into result.samples
     result.stages["poles"].radius                 # every stage as read-only numpy arrays
     image = sculpt.render(result, stage="poles")  # (height, width, 4) RGBA, as `sculpt render` draws
@@ -12,8 +13,6 @@
 The same core, methods, stage names, statistics and error messages as the `sculpt` command.
 Reconstruction runs without the GIL; progress(stage, fraction) may return False to cancel.
 """
-
-import numpy as _numpy
 
 from ._sculpt import (
     CARVE_REASONS,
@@ -26,6 +25,7 @@ from ._sculpt import (
     Reconstruction,
     example,
     examples,
+    merge_duplicates,
     methods,
     read_points,
     reconstruct,
@@ -36,14 +36,6 @@ from ._sculpt import (
 )
 
 __version__ = version()
-
-
-def merge_duplicates(points):
-    """The points without repeated rows (exact copies), first occurrences kept, in order: what
-    `sculpt reconstruct --merge-duplicates` does to a file."""
-    points = _numpy.asarray(points, dtype=float)
-    _, first = _numpy.unique(points, axis=0, return_index=True)
-    return points[_numpy.sort(first)]
 
 
 __all__ = [

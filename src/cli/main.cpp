@@ -84,6 +84,10 @@ void check_output_formats(const Reconstruct_arguments& args, int dimension) {
       throw Usage_error(
           fmt::format("cannot write a solid as '{}' (known: {})", args.solid, io::solid_formats));
     }
+    Method method;
+    if (parse_method(args.method, method) && !builds_solid(method)) {
+      throw Usage_error(frontend::no_solid_message(method));
+    }
   }
   if (!args.stats.empty() && io::extension_of(args.stats) != ".json") {
     throw Usage_error("the statistics file must end in .json: '" + args.stats + "'");

@@ -50,8 +50,9 @@ int affine_dimension(const std::vector<typename Traits::Cgal_point>& points) {
 template <class Traits>
 void check_input(const std::vector<Point<Traits::dimension>>& samples, const Options& options) {
   constexpr int D = Traits::dimension;
-  if (!(options.box_factor > 1.0) || !std::isfinite(options.box_factor)) {
-    throw Input_error("the box factor must be a finite number greater than 1");
+  // Beyond a million the box's corners swamp the samples' coordinates in the predicates.
+  if (!(options.box_factor > 1.0) || !(options.box_factor <= 1e6)) {
+    throw Input_error("the box factor must be greater than 1 and at most 1e6");
   }
   if (samples.size() < static_cast<std::size_t>(D + 1)) {
     throw Input_error("a " + std::to_string(D) + "D reconstruction needs at least " +

@@ -85,6 +85,10 @@ bool sculpts(Method method) {
   return method == Method::paper || method == Method::robust;
 }
 
+bool builds_solid(Method method) {
+  return sculpts(method) || method == Method::alpha_shape;
+}
+
 bool reconstructs_in(Method method, int dimension) {
   if (method == Method::nn_crust) return dimension == 2;
   if (method == Method::cocone || method == Method::advancing_front ||

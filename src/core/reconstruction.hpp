@@ -101,7 +101,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   clock.start("topology");
   measure_topology<Traits::dimension>(samples.size(), result.surface, result.stats);
   undo_normalisation<Traits::dimension>(result, normalisation, samples);
-  clock.stop();
+  clock.finish();
   return result;
 }
 

@@ -19,12 +19,19 @@ class Stage_clock {
  public:
   Stage_clock(Statistics& stats, const Options& options) : stats_(stats), options_(options) {}
 
-  // Ends the running stage (if any) and starts the next one.
+  // Ends the running stage (if any; its progress reaches 1) and starts the next one.
   void start(const char* stage) {
+    if (name_) report(name_, 1.0);
     stop();
     report(stage, 0.0);
     name_ = stage;
     started_ = Clock::now();
+  }
+
+  // Ends the last stage: its progress reaches 1.
+  void finish() {
+    if (name_) report(name_, 1.0);
+    stop();
   }
 
   void stop() {

@@ -38,6 +38,17 @@ inline std::string methods_help() {
   return help;
 }
 
+// Why --solid (or solid= in Python) is refused for a method that builds no solid.
+inline std::string no_solid_message(Method method) {
+  std::string builders;
+  for (const char* name : method_names()) {
+    Method other;
+    parse_method(name, other);
+    if (builds_solid(other)) builders += std::string(builders.empty() ? "" : ", ") + name;
+  }
+  return std::string("the method ") + to_string(method) + " builds no solid (" + builders + " do)";
+}
+
 // A mistake in the arguments themselves (exit code 2), found before any work is done.
 class Usage_error : public std::runtime_error {
  public:

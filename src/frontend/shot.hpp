@@ -22,9 +22,9 @@ struct Shot {
   std::string camera_file, save_camera;
   std::string size = "800x800";
   bool wireframe = false, smooth = false, no_legend = false;
-  float zoom = 1.0f;                // applied to the fitted camera (< 1 zooms in)
-  int ball_every = 1;               // polar balls of every k-th pole only
-  float yaw = 0.6f, pitch = 0.35f;  // 3D: direction the fitted camera looks from (radians)
+  double zoom = 1.0;               // applied to the fitted camera (< 1 zooms in)
+  int ball_every = 1;              // polar balls of every k-th pole only
+  double yaw = 0.6, pitch = 0.35;  // 3D: direction the fitted camera looks from (radians)
   std::string output;
 };
 

@@ -1,5 +1,6 @@
 #include "frontend/shots.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -17,9 +18,11 @@ std::pair<int, int> parse_size(const std::string& size) {
   int width = 0, height = 0;
   char x = 0;
   std::istringstream in(size);
-  if (!(in >> width >> x >> height) || x != 'x' || width <= 0 || height <= 0 || width > 16384 ||
-      height > 16384) {
-    throw io::Error("the size must be WIDTHxHEIGHT, e.g. 800x600: '" + size + "'");
+  if (!(in >> width >> x >> height) || x != 'x' || width <= 0 || height <= 0 ||
+      width > render::max_image_side || height > render::max_image_side) {
+    throw io::Error("the size must be WIDTHxHEIGHT, each from 1 to " +
+                    std::to_string(render::max_image_side) + " pixels, e.g. 800x600: '" + size +
+                    "'");
   }
   return {width, height};
 }
@@ -64,7 +67,7 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.wireframe = j.value("wireframe", false);
   shot.smooth = j.value("smooth", false);
   shot.no_legend = !j.value("legend", true);
-  shot.zoom = j.value("zoom", 1.0f);
+  shot.zoom = j.value("zoom", shot.zoom);
   shot.ball_every = j.value("ball_every", 1);
   shot.yaw = j.value("yaw", shot.yaw);
   shot.pitch = j.value("pitch", shot.pitch);
@@ -82,6 +85,20 @@ scene::Request request_of(const Shot& shot) {
     for (auto s : scene::all_stages())
       stages += std::string(stages.empty() ? "" : ", ") + scene::stage_id(s);
     throw io::Error("no stage '" + shot.stage + "' (stages: " + stages + ")");
+  }
+  if (shot.step < -1) {
+    throw io::Error("the step must be an event count, or -1 for all: " + std::to_string(shot.step));
+  }
+  if (!(shot.zoom > 0) || !std::isfinite(shot.zoom)) {
+    throw io::Error("the zoom must be a positive number (below 1 zooms in): " +
+                    std::to_string(shot.zoom));
+  }
+  if (!std::isfinite(shot.yaw) || !std::isfinite(shot.pitch)) {
+    throw io::Error("the camera's yaw and pitch must be finite angles (radians)");
+  }
+  if (shot.ball_every < 1) {
+    throw io::Error("ball_every must be at least 1 (every k-th polar ball): " +
+                    std::to_string(shot.ball_every));
   }
   request.step = shot.step;
   request.focus_sample = shot.focus_sample;

@@ -94,14 +94,8 @@ std::vector<Point<2>> planar_points(const Point_set& set, std::string* dropped) 
 }
 
 std::size_t merge_duplicates(Point_set& set) {
-  std::vector<std::size_t> order(set.points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(),
-                   [&](std::size_t a, std::size_t b) { return set.points[a] < set.points[b]; });
-  std::vector<bool> repeated(set.points.size(), false);
-  for (std::size_t k = 1; k < order.size(); ++k) {
-    repeated[order[k]] = set.points[order[k]] == set.points[order[k - 1]];
-  }
+  std::vector<std::size_t> order;
+  const std::vector<bool> repeated = repeated_points(set.points, &order);
   std::vector<Point<3>> kept;
   kept.reserve(set.points.size());
   std::vector<int> new_index(set.points.size());

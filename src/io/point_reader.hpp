@@ -7,6 +7,7 @@
 // checked against the bytes that can follow it, files are streamed, and all are fuzzed.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <sculpt/sculpt.hpp>
@@ -46,6 +47,23 @@ std::vector<Point<3>> spatial_points(const Point_set& set);
 // Removes repeated points (exact copies), keeping each first occurrence in order; returns how
 // many were removed. Scans often hold a few; reconstruction refuses them otherwise.
 std::size_t merge_duplicates(Point_set& set);
+
+// Which points repeat an earlier one exactly (the rule of merge_duplicates); `order`, if given,
+// receives the indices sorted by point, equal points in input order.
+template <class Point>
+std::vector<bool> repeated_points(const std::vector<Point>& points,
+                                  std::vector<std::size_t>* order = nullptr) {
+  std::vector<std::size_t> sorted(points.size());
+  for (std::size_t i = 0; i < sorted.size(); ++i) sorted[i] = i;
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [&](std::size_t a, std::size_t b) { return points[a] < points[b]; });
+  std::vector<bool> repeated(points.size(), false);
+  for (std::size_t k = 1; k < sorted.size(); ++k) {
+    repeated[sorted[k]] = points[sorted[k]] == points[sorted[k - 1]];
+  }
+  if (order) *order = std::move(sorted);
+  return repeated;
+}
 
 // The extension of a path in lower case, with its dot ("" if none).
 std::string extension_of(const std::string& path);

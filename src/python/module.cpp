@@ -6,6 +6,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include <cstring>
 #include <memory>
@@ -13,6 +14,7 @@
 #include <optional>
 #include <sculpt/sculpt.hpp>
 
+#include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "frontend/shots.hpp"
 #include "frontend/statistics_json.hpp"
@@ -69,6 +71,36 @@ py::object points_array(const frontend::Input& input) {
                     input.points);
 }
 
+// Any array-like of numbers (an array, a list of points) as a C-ordered float64 array of shape
+// (n, 2) or (n, 3); Input_error otherwise.
+py::array_t<double, py::array::c_style> points_from(const py::object& points) {
+  py::array array;
+  try {
+    array = py::module_::import("numpy").attr("asarray")(points, "float64");
+  } catch (py::error_already_set&) {
+    throw Input_error("points must be numbers: an array of shape (n, 2) or (n, 3)");
+  }
+  if (array.ndim() != 2 || (array.shape(1) != 2 && array.shape(1) != 3)) {
+    std::string shape;
+    for (py::ssize_t axis = 0; axis < array.ndim(); ++axis)
+      shape += (axis ? ", " : "") + std::to_string(array.shape(axis));
+    throw Input_error("points must be an array of shape (n, 2) or (n, 3), not (" + shape +
+                      (array.ndim() == 1 ? ",)" : ")"));
+  }
+  return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
+}
+
+// The points without those that repeat an earlier one (the command line's --merge-duplicates).
+template <class Point>
+void drop_repeated(std::vector<Point>& points) {
+  const std::vector<bool> repeated = io::repeated_points(points);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!repeated[i]) points[kept++] = points[i];
+  }
+  points.resize(kept);
+}
+
 // The progress callback seen from the core's side, on the thread that reconstructs: it takes the
 // GIL to call the Python callable (stage, fraction) -> falsy-but-not-None to cancel, and checks
 // for Ctrl-C. An exception in the callable cancels the run and is raised again afterwards.
@@ -96,14 +128,14 @@ Options options_from(const std::string& method, const std::string& kind, const s
   if (!parse_method(method, options.method)) {
     std::string names;
     for (const char* name : method_names()) names += std::string(names.empty() ? "" : ", ") + name;
-    throw py::value_error("no method '" + method + "' (methods: " + names + ")");
+    throw Input_error("no method '" + method + "' (methods: " + names + ")");
   }
   if (kind != "closed" && kind != "bordered") {
-    throw py::value_error("no kind of surface '" + kind + "' (kinds: closed, bordered)");
+    throw Input_error("no kind of surface '" + kind + "' (kinds: closed, bordered)");
   }
   options.kind = kind == "closed" ? Surface_kind::closed : Surface_kind::bordered;
   if (!parse_rule(rule, options.rule)) {
-    throw py::value_error("no surface rule '" + rule + "' (rules: auto, skin, extraction)");
+    throw Input_error("no surface rule '" + rule + "' (rules: auto, skin, extraction)");
   }
   options.box_factor = box_factor;
   options.bordered_seed_sample = bordered_seed_sample;
@@ -111,19 +143,11 @@ Options options_from(const std::string& method, const std::string& kind, const s
   return options;
 }
 
-Result reconstruct_points(const py::array& points, const std::string& method,
+Result reconstruct_points(const py::object& points, const std::string& method,
                           const std::string& kind, const std::string& rule, double box_factor,
-                          int bordered_seed_sample, bool keep_triangulations,
+                          int bordered_seed_sample, bool keep_triangulations, bool merge_duplicates,
                           const py::object& progress) {
-  if (points.ndim() != 2 || (points.shape(1) != 2 && points.shape(1) != 3)) {
-    std::string shape;
-    for (py::ssize_t axis = 0; axis < points.ndim(); ++axis)
-      shape += (axis ? ", " : "") + std::to_string(points.shape(axis));
-    throw py::value_error("points must be an array of shape (n, 2) or (n, 3), not (" + shape + ")");
-  }
-  const auto samples =
-      py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(points);
-  if (!samples) throw py::value_error("points must be numbers");
+  const auto samples = points_from(points);
   Result result;
   result.options =
       options_from(method, kind, rule, box_factor, bordered_seed_sample, keep_triangulations);
@@ -135,10 +159,12 @@ Result reconstruct_points(const py::array& points, const std::string& method,
     if (samples.shape(1) == 2) {
       auto input = points_of<2>(samples);
       py::gil_scoped_release released;
+      if (merge_duplicates) drop_repeated(input);
       result.reconstruction = reconstruct(input, options);
     } else {
       auto input = points_of<3>(samples);
       py::gil_scoped_release released;
+      if (merge_duplicates) drop_repeated(input);
       result.reconstruction = reconstruct(input, options);
     }
   } catch (const Cancelled&) {
@@ -177,8 +203,12 @@ py::array render_stage(const Result& result, const frontend::Shot& shot) {
 }
 
 // Writes the surface (3D) or curve (2D), and the solid if asked: all files or none.
-void write_result(const Result& result, const std::string& path, const std::string& solid,
-                  bool ascii) {
+void write_result(const Result& result, const std::filesystem::path& path_name,
+                  const std::optional<std::filesystem::path>& solid_name, bool ascii) {
+  const std::string path = path_name.string(), solid = solid_name ? solid_name->string() : "";
+  if (!solid.empty() && !builds_solid(result.options.method)) {
+    throw Input_error(frontend::no_solid_message(result.options.method));
+  }
   visit(result, [&](const auto& r) {
     constexpr int D = std::decay_t<decltype(r)>::dimension;
     const std::vector<Point<D>> samples(r.sites.begin(), r.sites.begin() + r.sample_count());
@@ -211,6 +241,75 @@ py::tuple names_of(int count) {
   return names;
 }
 
+Method method_named(const std::string& name) {
+  Method method;
+  if (!parse_method(name, method)) {
+    std::string names;
+    for (const char* known : method_names())
+      names += std::string(names.empty() ? "" : ", ") + known;
+    throw Input_error("no method '" + name + "' (methods: " + names + ")");
+  }
+  return method;
+}
+
+// A picture size: one number (a square) or (width, height), in pixels.
+std::string size_of(const py::object& size) {
+  const std::string rule =
+      "the size is (width, height) or one number for a square, each from 1 to " +
+      std::to_string(render::max_image_side) + " pixels";
+  std::vector<long> sides;
+  try {
+    if (py::isinstance<py::int_>(size)) {
+      sides = {size.cast<long>(), size.cast<long>()};
+    } else {
+      for (auto side : size) {
+        if (!py::isinstance<py::int_>(side)) throw Input_error(rule);
+        sides.push_back(side.cast<long>());
+      }
+    }
+  } catch (py::error_already_set&) {
+    throw Input_error(rule);
+  } catch (py::cast_error&) {
+    throw Input_error(rule);
+  }
+  if (sides.size() != 2) throw Input_error(rule);
+  for (long side : sides) {
+    if (side < 1 || side > render::max_image_side) throw Input_error(rule);
+  }
+  return std::to_string(sides[0]) + "x" + std::to_string(sides[1]);
+}
+
+const char* stages_doc =
+    R"(Every stage of the reconstruction by name, each an object whose attributes are
+read-only numpy arrays (views of the result: no copy). Indices of samples are rows of `samples`;
+indices of sites are rows of `sites` (the samples, then the 2^d box corners, then the poles
+inserted); indices of poles are rows of poles' arrays.
+
+delaunay           cells (m, d+1) int32: sites of the finite cells of DT(S + box corners);
+                   cell_count
+poles              center (p, d), radius (p,): the polar balls; cell (p,) int64: the cell of
+                   delaunay whose circumcentre the pole is; sites (p, d+1); convex (p,) bool: the
+                   cell touches a box corner; positive_pole, negative_pole (n,): the poles p+ and
+                   p- of each sample (-1: none); partners of pole k:
+                   partners[partner_offsets[k]:partner_offsets[k+1]]; records: all as one record
+                   array
+seeds              convex_poles, outer_seeds: poles
+propagation        events: records (pole, label, source, reason, weight) in the order the
+                   labelling ran (label codes: sculpt.LABELS; reason codes: LABEL_REASONS;
+                   source -1: a convex seed); conflicts: offers of the other label, same records;
+                   labels (p,) uint8: the final label of each pole; unlabelled: a count
+insertion          inserted_poles: the poles inserted into DT (paper method: OUP, or UP bordered)
+sculpted_delaunay  cells, cell_count: DT(S + OUP) (paper method)
+carving            events: records (cell, reason) of the cells of delaunay removed (robust
+                   method; reason codes: CARVE_REASONS); kept_outer_cells; buried_samples
+crust              voronoi_vertices (v, d), cells, cell_count: DT(S + V) of the crust, whose
+                   sites are the samples then the Voronoi vertices
+candidates         chosen, pruned (k, d): the facets the crust or co-cone chose, those pruned;
+                   rims_kept
+
+The pictures of sculpt.render name stages as the viewer does (sculpt.stages(method, d)):
+'sculpted-delaunay' draws sculpted_delaunay, 'propagation' the events, and so on.)";
+
 }  // namespace
 }  // namespace sculpt::python
 
@@ -237,39 +336,48 @@ PYBIND11_MODULE(_sculpt, m) {
       cancelled(e.what());
     }
   });
+  input_error.doc() = "Input Sculpt cannot work on: the message is the line `sculpt` prints.";
+  duplicates.doc() = "Two points at the same place: merge_duplicates=True drops the copies.";
+  cancelled.doc() = "The progress callback returned False.";
 
   m.attr("LABELS") = names_of<Label>(3);
   m.attr("LABEL_REASONS") = names_of<Label_reason>(4);
   m.attr("CARVE_REASONS") = names_of<Carve_reason>(3);
   m.attr("DEFAULT_METHOD") = to_string(Options{}.method);
 
-  m.def("version", &sculpt::version);
+  m.def("version", &sculpt::version, "Sculpt's version, e.g. '0.1.0'.");
   m.def(
       "methods",
-      [] {
+      [](int dimension) {
+        if (dimension != 0 && dimension != 2 && dimension != 3)
+          throw Input_error("the dimension is 0 (every method), 2 or 3");
         py::dict methods;  // in order, the default first
         for (const char* name : method_names()) {
-          Method method;
-          parse_method(name, method);
-          methods[name] = describe(method);
+          const Method method = method_named(name);
+          if (dimension == 0 || reconstructs_in(method, dimension))
+            methods[name] = describe(method);
         }
         return methods;
       },
-      "The methods by name, with a few words on each; the default first.");
+      py::arg("dimension") = 0,
+      "The methods by name with a few words on each, the default first: all of them, or those that "
+      "reconstruct curves (dimension=2) or surfaces (dimension=3).");
   m.def(
       "stages",
-      [](const std::string& method_name, int dimension) {
-        Method method;
-        if (!parse_method(method_name, method))
-          throw py::value_error("no method '" + method_name + "'");
-        if (dimension != 2 && dimension != 3) throw py::value_error("the dimension is 2 or 3");
+      [](const std::string& name, int dimension) {
+        const Method method = method_named(name);
+        if (dimension != 2 && dimension != 3) throw Input_error("the dimension is 2 or 3");
+        if (!reconstructs_in(method, dimension)) {
+          throw Input_error("the method " + name + " does not reconstruct in " +
+                            std::to_string(dimension) + "D");
+        }
         std::vector<std::string> ids;
         for (auto stage : scene::stages_of(method, dimension))
           ids.push_back(scene::stage_id(stage));
         return ids;
       },
       py::arg("method"), py::arg("dimension"),
-      "The stages a method shows in this dimension, in order (names for render()).");
+      "The stages a method shows in this dimension, in order: the names sculpt.render takes.");
   m.def(
       "examples",
       [] {
@@ -281,28 +389,58 @@ PYBIND11_MODULE(_sculpt, m) {
         }
         return examples;
       },
-      "The built-in examples: name, dimension, description, bordered.");
+      "The built-in examples: dicts of name, dimension, description and bordered (reconstruct "
+      "those with kind='bordered').");
   m.def(
       "example",
-      [](const std::string& name) { return points_array(frontend::load_input("", name, 0)); },
-      py::arg("name"), "The points of a built-in example, as an (n, 2) or (n, 3) array.");
+      [](const std::string& name) {
+        if (!shapes::find_example(name)) {
+          throw Input_error("no built-in example named '" + name +
+                            "' (sculpt.examples() lists them)");
+        }
+        return points_array(frontend::load_input("", name, 0));
+      },
+      py::arg("name"), "The points of a built-in example, as an (n, 2) or (n, 3) float64 array.");
   m.def(
       "read_points",
-      [](const std::string& path, int dimension, bool merge_duplicates) {
+      [](const std::filesystem::path& path, int dimension, bool merge_duplicates) {
         if (dimension != 0 && dimension != 2 && dimension != 3)
-          throw py::value_error("the dimension is 0 (the file's), 2 or 3");
-        return points_array(frontend::load_input(path, "", dimension, merge_duplicates));
+          throw Input_error("the dimension is 0 (the file's), 2 or 3");
+        return points_array(frontend::load_input(path.string(), "", dimension, merge_duplicates));
       },
       py::arg("path"), py::arg("dimension") = 0, py::arg("merge_duplicates") = false,
-      "Points of a file (.xyz .pts .txt .csv .xy .p2d .ply .off .obj .stl): an (n, 2) or (n, 3) "
-      "array. dimension 2 or 3 forces it; merge_duplicates drops repeated points.");
+      "The points of a file (.xyz .pts .txt .csv .xy .p2d .ply .off .obj .stl; a mesh gives its "
+      "vertices) as an (n, 2) or (n, 3) float64 array. dimension=2 or 3 forces it (a flat 3D "
+      "file becomes 2D points); merge_duplicates drops points that repeat an earlier one.");
+  m.def(
+      "merge_duplicates",
+      [](const py::object& points) {
+        const auto samples = points_from(points);
+        py::object merged;
+        if (samples.shape(1) == 2) {
+          auto kept = points_of<2>(samples);
+          drop_repeated(kept);
+          merged = array_of(kept);
+        } else {
+          auto kept = points_of<3>(samples);
+          drop_repeated(kept);
+          merged = array_of(kept);
+        }
+        return merged;
+      },
+      py::arg("points"),
+      "The points without those that repeat an earlier one exactly, in order: what `sculpt "
+      "reconstruct --merge-duplicates` does to a file.");
 
   py::class_<Result>(m, "Reconstruction",
-                     "A reconstruction: every stage as read-only numpy arrays, the statistics "
-                     "and the verdict.")
-      .def_property_readonly("dimension", &Result::dimension)
-      .def_property_readonly("method", [](const Result& r) { return to_string(r.options.method); })
-      .def_property_readonly("kind", [](const Result& r) { return to_string(r.options.kind); })
+                     "A reconstruction: the samples, the surface (or curve), the solid, every "
+                     "stage as read-only numpy arrays, the statistics and the verdict.")
+      .def_property_readonly("dimension", &Result::dimension, "2 (a curve) or 3 (a surface).")
+      .def_property_readonly(
+          "method", [](const Result& r) { return to_string(r.options.method); }, "Its name.")
+      .def_property_readonly(
+          "kind", [](const Result& r) { return to_string(r.options.kind); },
+          "'closed' or 'bordered'.")
       .def_property_readonly(
           "samples",
           [](py::object self) {
@@ -312,41 +450,44 @@ PYBIND11_MODULE(_sculpt, m) {
                                     {r.dimension});
             });
           },
-          "The samples, (n, d).")
+          "The samples, (n, d) float64, in the order given.")
       .def_property_readonly(
           "sites",
           [](py::object self) {
             return visit(self.cast<const Result&>(),
                          [&](const auto& r) { return rows_view(self, r.sites); });
           },
-          "The triangulation's sites: the samples, the 2^d box corners, then the poles inserted.")
+          "The triangulations' sites, (s, d): the samples, the 2^d box corners, then the poles "
+          "inserted (paper method).")
       .def_property_readonly(
           "surface",
           [](py::object self) {
             return visit(self.cast<const Result&>(),
                          [&](const auto& r) { return rows_view(self, r.surface); });
           },
-          "Triangles (3D) or edges (2D) as sample indices; closed surfaces face outward.")
+          "The result: triangles (f, 3) of a surface or edges (f, 2) of a curve, as int32 indices "
+          "of samples; closed surfaces face outward.")
       .def_property_readonly(
           "solid",
           [](py::object self) {
             return visit(self.cast<const Result&>(),
                          [&](const auto& r) { return rows_view(self, r.solid); });
           },
-          "The sculpted solid's tetrahedra (triangles in 2D) as sample indices.")
+          "The solid's tetrahedra (k, 4), or triangles (k, 3) in 2D, as indices of samples: the "
+          "sculpted cells (paper, robust) or the alpha solid; empty for the other methods.")
       .def_property_readonly(
           "stages",
           [](py::object self) {
             return visit(self.cast<const Result&>(),
                          [&](const auto& r) { return stage_objects(self, r); });
           },
-          "Every stage by name (delaunay, poles, seeds, propagation, insertion, "
-          "sculpted_delaunay, carving, crust, candidates), each with its arrays as attributes.")
+          stages_doc)
       .def_property_readonly(
           "verdict", [](const Result& r) { return verdict(statistics_of(r)).line; },
-          "One line: a closed (or bordered) 2-manifold, or what is wrong with the result.")
-      .def_property_readonly("manifold",
-                             [](const Result& r) { return verdict(statistics_of(r)).manifold; })
+          "One line: a closed (or bordered) 2-manifold through every sample, or what is wrong.")
+      .def_property_readonly(
+          "manifold", [](const Result& r) { return verdict(statistics_of(r)).manifold; },
+          "Whether the verdict is good: closed or properly bordered, every sample on it.")
       .def_property_readonly(
           "stats",
           [](const Result& r) {
@@ -356,7 +497,10 @@ PYBIND11_MODULE(_sculpt, m) {
             json["box_factor"] = r.options.box_factor;
             return json_to_python(json);
           },
-          "The statistics, named as in `sculpt reconstruct --stats`.")
+          "The statistics as a dict, named as `sculpt reconstruct --stats` names them; the stages' "
+          "names and seconds under 'stages'. The command line keeps no triangulation "
+          "(keep_triangulations=False gives its numbers exactly: without it DT(S + OUP) is not "
+          "built and sculpted_cells is 0).")
       .def("__repr__", [](const Result& r) {
         const auto& stats = statistics_of(r);
         return "<sculpt.Reconstruction " + std::to_string(r.dimension()) + "D, " +
@@ -367,24 +511,40 @@ PYBIND11_MODULE(_sculpt, m) {
   const Options defaults;
   m.def("reconstruct", &reconstruct_points, py::arg("points"),
         py::arg("method") = to_string(defaults.method), py::arg("kind") = to_string(defaults.kind),
-        py::arg("rule") = to_string(defaults.rule), py::arg("box_factor") = defaults.box_factor,
+        py::arg("rule") = "auto", py::arg("box_factor") = defaults.box_factor,
         py::arg("bordered_seed_sample") = defaults.bordered_seed_sample,
         py::arg("keep_triangulations") = defaults.keep_triangulations,
-        py::arg("progress") = py::none(),
-        "Reconstructs a curve from (n, 2) points or a surface from (n, 3) points.\n"
-        "method: a name of sculpt.methods(); kind: 'closed' or 'bordered'; rule: 'auto', 'skin' "
-        "or 'extraction' (paper method). progress(stage, fraction) is called as the stages run; "
-        "returning False cancels (sculpt.Cancelled). Bad input raises sculpt.InputError.");
+        py::arg("merge_duplicates") = false, py::arg("progress") = py::none(),
+        R"(Reconstructs a curve from 2D points or a surface from 3D points.
+
+points               an (n, 2) or (n, 3) array, or anything numpy.asarray makes one of
+method               a name of sculpt.methods(): 'robust' (the default, for real scans),
+                     'paper' (Kuo & Yau as published), 'crust', 'nn-crust', 'cocone',
+                     'advancing-front', 'alpha-shape'
+kind                 'closed', or 'bordered' for samples of a surface (curve) with a border
+rule                 paper method: which facets make the surface, 'auto', 'skin' or
+                     'extraction' (the paper's rule)
+box_factor           the bounding box's size relative to the samples' box (the paper: 5)
+bordered_seed_sample bordered: the sample whose convex pole seeds the labelling (-1: chosen)
+keep_triangulations  keep the cells of the triangulations (the stages' pictures need them);
+                     False computes as the command line does, with less memory
+merge_duplicates     drop points that repeat an earlier one (else sculpt.DuplicatePoints)
+progress             progress(stage, fraction) is called as each stage starts and ends (and
+                     within the long ones); returning False cancels (sculpt.Cancelled)
+
+Returns a sculpt.Reconstruction. Bad input raises sculpt.InputError, whose message is the line
+`sculpt reconstruct` prints. The GIL is released while the core runs; Ctrl-C stops it at its
+next progress report.)");
 
   const frontend::Shot shot_defaults;
   m.def(
       "render",
-      [](const Result& result, const std::string& stage, std::pair<int, int> size, long step,
+      [](const Result& result, const std::string& stage, const py::object& size, long step,
          int focus_sample, int focus_pole, std::vector<std::string> layers, bool wireframe,
-         bool smooth, bool legend, float zoom, int ball_every, float yaw, float pitch) {
+         bool smooth, bool legend, double zoom, int ball_every, double yaw, double pitch) {
         frontend::Shot shot;
         shot.stage = stage;
-        shot.size = std::to_string(size.first) + "x" + std::to_string(size.second);
+        shot.size = size_of(size);
         shot.step = step;
         shot.focus_sample = focus_sample;
         shot.focus_pole = focus_pole;
@@ -399,7 +559,7 @@ PYBIND11_MODULE(_sculpt, m) {
         return render_stage(result, shot);
       },
       py::arg("result"), py::arg("stage") = shot_defaults.stage,
-      py::arg("size") = std::pair<int, int>(800, 800), py::arg("step") = shot_defaults.step,
+      py::arg("size") = py::make_tuple(800, 800), py::arg("step") = shot_defaults.step,
       py::arg("focus_sample") = shot_defaults.focus_sample,
       py::arg("focus_pole") = shot_defaults.focus_pole,
       py::arg("layers") = std::vector<std::string>{},
@@ -407,12 +567,25 @@ PYBIND11_MODULE(_sculpt, m) {
       py::arg("legend") = !shot_defaults.no_legend, py::arg("zoom") = shot_defaults.zoom,
       py::arg("ball_every") = shot_defaults.ball_every, py::arg("yaw") = shot_defaults.yaw,
       py::arg("pitch") = shot_defaults.pitch,
-      "A picture of a stage (a name of sculpt.stages()) as an (height, width, 4) uint8 RGBA "
-      "array, drawn by the headless renderer as `sculpt render` draws it. size is (width, "
-      "height); step replays the separation or the carving up to that event.");
+      R"(A picture of a stage, as `sculpt render` and the viewer draw it: an (height, width, 4)
+uint8 RGBA array (matplotlib's imshow shows it).
 
-  m.def("write", &write_result, py::arg("result"), py::arg("path"), py::arg("solid") = "",
+stage         a name of sculpt.stages(result.method, result.dimension): 'samples', 'delaunay',
+              'voronoi', 'poles', 'propagation', 'surface', ...
+size          (width, height) in pixels, or one number for a square
+step          replays: the first `step` labelling events (propagation) or carved cells; -1: all
+focus_sample  a sample whose Voronoi cell, poles, polar balls and inscribed cubes are drawn
+focus_pole    a pole whose polar ball, and the pole that labelled it, are drawn
+layers        only these layers (their names are in the error message of a wrong one)
+wireframe, smooth   surfaces: draw the edges; smooth shading
+legend        the legend and the title
+zoom          of the fitted camera: below 1 zooms in
+ball_every    draw the polar balls of every k-th pole only
+yaw, pitch    3D: the direction the camera looks from, in radians)");
+
+  m.def("write", &write_result, py::arg("result"), py::arg("path"), py::arg("solid") = py::none(),
         py::arg("ascii") = false,
         "Writes the surface (.stl .ply .off .obj) or curve (.obj .svg), and the solid if a path "
-        "is given (.mesh .vtu .node/.ele): every file or none.");
+        "is given (.mesh .vtu .node/.ele): every file or none. STL and PLY are binary unless "
+        "ascii=True. Paths are strings or pathlib paths.");
 }

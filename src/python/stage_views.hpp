@@ -88,7 +88,7 @@ py::dtype pole_type() {
   static_assert(sizeof(std::size_t) == 8 && sizeof(bool) == 1);
   return record_type({{"center", "(" + std::to_string(D) + ",)f8", offsetof(P, center)},
                       {"radius", "f8", offsetof(P, radius)},
-                      {"cell", "u8", offsetof(P, cell)},
+                      {"cell", "i8", offsetof(P, cell)},
                       {"sites", "(" + std::to_string(D + 1) + ",)i4", offsetof(P, sites)},
                       {"convex", "?", offsetof(P, convex)}},
                      sizeof(P));

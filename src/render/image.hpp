@@ -8,6 +8,9 @@
 
 namespace sculpt::render {
 
+// The largest side of a picture: 4x multisampled colour and depth of 8192^2 take 2 GiB already.
+inline constexpr int max_image_side = 8192;
+
 struct Image {
   int width = 0, height = 0;
   std::vector<std::uint8_t> rgba;  // rows from the top

@@ -103,7 +103,7 @@ class Osmesa_offscreen : public Offscreen_renderer {
 
   Image render(const scene::Scene& scene, const Camera& camera, int width, int height,
                const Draw_options& options) override {
-    if (width <= 0 || height <= 0 || width > 16384 || height > 16384) {
+    if (width <= 0 || height <= 0 || width > max_image_side || height > max_image_side) {
       throw std::runtime_error("image size out of range: " + std::to_string(width) + "x" +
                                std::to_string(height));
     }

@@ -74,6 +74,9 @@ class Scene_builder {
           labelled_poles(r_.propagation.labels, /*only_inserted=*/false);
           break;
         }
+        // Without the triangulations kept, the solid was read off the first DT by queries and
+        // DT(S + OUP) never built.
+        if (!r_.options.keep_triangulations) throw std::invalid_argument(triangulations_not_kept);
         require_cells(r_.sculpted_delaunay);
         edges_of(r_.sculpted_delaunay.cells, "sculpted-delaunay", "Delaunay edges DT(S + OUP)",
                  palette::delaunay_edge);
@@ -146,11 +149,13 @@ class Scene_builder {
     for (int s = 0; s < n_; ++s) layer.positions.push_back(vec(r_.sites[s]));
   }
 
+  static constexpr const char* triangulations_not_kept =
+      "this stage needs the triangulations, which the reconstruction did not keep "
+      "(keep_triangulations)";
+
   void require_cells(const Delaunay_stage<D>& stage) const {
-    if (stage.cells.size() != stage.cell_count) {
-      throw std::invalid_argument(
-          "this stage needs the triangulations kept (Options::keep_triangulations)");
-    }
+    if (stage.cells.size() != stage.cell_count)
+      throw std::invalid_argument(triangulations_not_kept);
   }
 
   void edges_of(const std::vector<Cell<D>>& cells, const char* id, const std::string& label,

@@ -69,16 +69,23 @@ def test_the_arrays_are_read_only_views_that_keep_the_result_alive():
         surface[0, 0] = 5
 
 
-def test_the_statistics_and_verdict_are_the_command_lines(bumpy, sculpt_cli, tmp_path):
-    stats = tmp_path / "bumpy.json"
-    run = sculpt_cli("reconstruct", "--example", "bumpy", "-o", tmp_path / "bumpy.stl",
+@pytest.mark.parametrize("example, method", [("bumpy", "robust"), ("blob", "paper"),
+                                             ("bumpy", "cocone")])
+def test_the_statistics_and_verdict_are_the_command_lines(example, method, sculpt_cli, tmp_path):
+    stats = tmp_path / "stats.json"
+    run = sculpt_cli("reconstruct", "--example", example, "--method", method,
+                     "-o", tmp_path / ("out.stl" if example == "bumpy" else "out.svg"),
                      "--stats", stats)
     assert run.returncode == 0, run.stderr
     cli = json.loads(stats.read_text())
-    for field in ("verdict", "method", "kind", "rule", "facets", "poles", "components",
-                  "euler_characteristic", "carved_cells", "unused_samples", "box_factor"):
-        assert bumpy.stats[field] == cli[field], field
-    assert f"verdict: {bumpy.verdict}" in run.stdout
+    # As the command line computes: without keeping the triangulations.
+    result = sculpt.reconstruct(sculpt.example(example), method=method, keep_triangulations=False)
+    timings = {"input", "read_seconds", "write_seconds", "total_seconds", "stages"}
+    assert set(result.stats) == set(cli) - {"input", "read_seconds", "write_seconds"}
+    for field in set(cli) - timings:
+        assert result.stats[field] == cli[field], field
+    assert [s["name"] for s in result.stats["stages"]] == [s["name"] for s in cli["stages"]]
+    assert f"verdict: {result.verdict}" in run.stdout
 
 
 def test_every_method_by_name_where_it_applies(sculpt_cli):
@@ -111,12 +118,34 @@ def test_bad_input_raises_the_command_lines_message(sculpt_cli, tmp_path):
         with pytest.raises(sculpt.InputError) as raised:
             sculpt.reconstruct(sculpt.read_points(str(path)))
         assert run.stderr == f"sculpt: error: {raised.value}\n"
-    with pytest.raises(ValueError, match=r"shape \(n, 2\) or \(n, 3\), not \(4, 4\)"):
-        sculpt.reconstruct(np.zeros((4, 4)))
-    with pytest.raises(ValueError, match="methods: robust, paper"):
-        sculpt.reconstruct(sculpt.example("star"), method="sculpting")
-    with pytest.raises(sculpt.InputError, match="stages: samples"):
-        sculpt.render(sculpt.reconstruct(sculpt.example("star")), stage="nothing")
+
+    # The arguments themselves: an InputError (a ValueError) each, in one line.
+    star = sculpt.reconstruct(sculpt.example("star"))
+    bad_calls = {
+        r"shape \(n, 2\) or \(n, 3\), not \(4, 4\)": lambda: sculpt.reconstruct(np.zeros((4, 4))),
+        r"not \(6,\)": lambda: sculpt.reconstruct(np.zeros(6)),
+        "must be numbers": lambda: sculpt.reconstruct([["a", "b"], ["c", "d"]]),
+        "methods: robust, paper": lambda: sculpt.reconstruct(star.samples, method="sculpting"),
+        "kinds: closed, bordered": lambda: sculpt.reconstruct(star.samples, kind="open"),
+        "rules: auto": lambda: sculpt.reconstruct(star.samples, rule="best"),
+        "box factor": lambda: sculpt.reconstruct(star.samples, box_factor=1e308),
+        "stages: samples": lambda: sculpt.render(star, stage="nothing"),
+        "does not reconstruct in 3D": lambda: sculpt.stages("nn-crust", 3),
+        "examples\(\) lists them": lambda: sculpt.example("teapot"),
+        "size is \(width, height\)": lambda: sculpt.render(star, size=(0, 10)),
+        "from 1 to 8192 pixels": lambda: sculpt.render(star, size=(20000, 10)),
+        "zoom must be a positive": lambda: sculpt.render(star, zoom=0),
+        "finite angles": lambda: sculpt.render(star, yaw=float("nan")),
+        "ball_every": lambda: sculpt.render(star, ball_every=0),
+        "step must be": lambda: sculpt.render(star, step=-2),
+        "keep_triangulations": lambda: sculpt.render(
+            sculpt.reconstruct(star.samples, method="paper", keep_triangulations=False),
+            stage="sculpted-delaunay"),
+    }
+    for message, call in bad_calls.items():
+        with pytest.raises(sculpt.InputError, match=message) as raised:
+            call()
+        assert "\n" not in str(raised.value)
 
 
 def test_repeated_points_are_refused_until_merged():
@@ -127,6 +156,20 @@ def test_repeated_points_are_refused_until_merged():
     merged = sculpt.merge_duplicates(repeated)
     assert np.array_equal(merged, points)
     assert sculpt.reconstruct(merged).manifold
+    assert sculpt.reconstruct(repeated, merge_duplicates=True).stats["samples"] == len(points)
+
+
+def test_plain_python_values_are_accepted(tmp_path):
+    star = sculpt.example("star")
+    result = sculpt.reconstruct(star.tolist())  # a list of points
+    assert result.manifold and result.samples.dtype == np.float64
+    path = tmp_path / "star.xy"
+    np.savetxt(path, star)
+    assert np.allclose(sculpt.read_points(path), star)  # a pathlib path
+    sculpt.write(result, tmp_path / "star.svg")
+    assert (tmp_path / "star.svg").exists()
+    assert sculpt.render(result, size=50).shape == (50, 50, 4)  # one number: a square
+    assert list(sculpt.methods(dimension=2)) == ["robust", "paper", "crust", "nn-crust"]
 
 
 def test_reconstruction_releases_the_gil():
@@ -165,6 +208,8 @@ def test_progress_is_reported_and_can_cancel():
     stages = [stage for stage, _ in seen]
     assert "delaunay" in stages and "poles" in stages
     assert all(0 <= fraction <= 1 for _, fraction in seen)
+    for stage in set(stages):  # each stage starts at 0 and ends at 1
+        assert (stage, 0.0) in seen and (stage, 1.0) in seen, stage
     with pytest.raises(sculpt.Cancelled):
         sculpt.reconstruct(points, progress=lambda stage, fraction: stage != "poles")
 
@@ -206,3 +251,16 @@ def test_writes_every_file_or_none(bumpy, tmp_path):
     with pytest.raises(sculpt.InputError, match="cannot write a solid"):
         sculpt.write(bumpy, str(tmp_path / "again.stl"), solid=str(tmp_path / "again.txt"))
     assert not (tmp_path / "again.stl").exists()
+
+
+def test_a_method_without_a_solid_writes_none(sculpt_cli, tmp_path):
+    cocone = sculpt.reconstruct(sculpt.example("bumpy"), method="cocone")
+    with pytest.raises(sculpt.InputError) as raised:
+        sculpt.write(cocone, tmp_path / "a.stl", solid=tmp_path / "a.vtu")
+    assert str(raised.value) == "the method cocone builds no solid (robust, paper, alpha-shape do)"
+    assert list(tmp_path.iterdir()) == []
+    run = sculpt_cli("reconstruct", "--example", "bumpy", "--method", "cocone",
+                     "-o", tmp_path / "a.stl", "--solid", tmp_path / "a.vtu")
+    assert run.returncode == 2
+    assert f"usage error: {raised.value}" in run.stderr
+    assert list(tmp_path.iterdir()) == []
