@@ -242,6 +242,81 @@ TEST(Cli, BenchMeasuresEachJobInAProcessOfItsOwn) {
   EXPECT_FALSE(rows[1].contains("advancing_front"));                // a curve: no surface method
 }
 
+// A PNG's width and height, from its header.
+std::pair<int, int> png_size(const std::string& path) {
+  const std::string bytes = read_file(path);
+  if (bytes.size() < 24 || bytes.compare(1, 3, "PNG") != 0) return {0, 0};
+  const auto big_endian = [&](int at) {
+    int value = 0;
+    for (int k = 0; k < 4; ++k) value = value * 256 + static_cast<unsigned char>(bytes[at + k]);
+    return value;
+  };
+  return {big_endian(16), big_endian(20)};
+}
+
+TEST(Cli, CompareTablesTheMethodsAndDrawsThemSideBySide) {
+  const auto markdown = output_path("compare.md"), json = output_path("compare.json"),
+             pictures = output_path("compare.png");
+  const Command_result run = run_sculpt(
+      "compare --example bumpy --methods robust,cocone,nn-crust --tile 160x120 --markdown " +
+      markdown + " --json " + json + " --pictures " + pictures);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_EQ(read_file(markdown), run.out);
+  EXPECT_NE(run.out.find("| input | n | method | seconds | × DT |"), std::string::npos);
+  EXPECT_NE(run.out.find("| bumpy | 6000 | robust |"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("| bumpy | 6000 | cocone |"), std::string::npos) << run.out;
+  EXPECT_EQ(run.out.find("nn-crust |"), std::string::npos);  // curves only: no row
+  const auto rows = nlohmann::json::parse(read_file(json));
+  ASSERT_EQ(rows.size(), 1u);
+  const auto& robust = rows[0]["methods"]["robust"];
+  EXPECT_TRUE(robust["manifold"].get<bool>());
+  EXPECT_EQ(robust["output_vertices"].get<int>(), 6000);
+  EXPECT_GT(double(robust["process"]["cpu_seconds"]), 0.0);
+  EXPECT_FALSE(robust.contains("hausdorff"));  // no reference for an example
+  // One row of three tiles: robust, cocone, and nn-crust's samples saying it does not apply.
+  EXPECT_EQ(png_size(pictures), std::make_pair(3 * 160, 120));
+}
+
+TEST(Cli, CompareMeasuresAgainstAReferenceMesh) {
+  const auto mesh = output_path("bumpy_reference.off"), json = output_path("reference.json");
+  ASSERT_EQ(run_sculpt("reconstruct --example bumpy -o " + mesh).exit_code, 0);
+  // A mesh input is its own reference: the robust method gives it back exactly.
+  const Command_result run =
+      run_sculpt("compare " + mesh + " --methods robust,alpha-shape --json " + json);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  auto rows = nlohmann::json::parse(read_file(json));
+  const auto& robust = rows[0]["methods"]["robust"];
+  EXPECT_DOUBLE_EQ(double(robust["reproduced"]), 1.0);
+  EXPECT_LT(double(robust["hausdorff"]), 1e-12);  // zero, but for rounding
+  const auto& alpha = rows[0]["methods"]["alpha-shape"];
+  EXPECT_LT(double(alpha["reproduced"]), 1.0);
+  EXPECT_GT(double(alpha["hausdorff_per_diagonal"]), 0.0);
+  EXPECT_NE(run.out.find("| 100.0% | 0.0000 |"), std::string::npos) << run.out;
+  // The same mesh given as --reference of the example whose samples it was made from.
+  const Command_result again = run_sculpt("compare --example bumpy --methods robust --reference " +
+                                          mesh + " --json " + json);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  rows = nlohmann::json::parse(read_file(json));
+  EXPECT_DOUBLE_EQ(double(rows[0]["methods"]["robust"]["reproduced"]), 1.0);
+  EXPECT_LT(double(rows[0]["methods"]["robust"]["hausdorff"]), 1e-12);
+}
+
+TEST(Cli, CompareRefusesBadRequestsBeforeAnyWork) {
+  const auto table = output_path("refused.md");
+  for (const std::string& arguments :
+       {"compare --example bumpy --example star --reference " + output_path("x.off"),
+        "compare --example bumpy --markdown " + output_path("table.txt"),
+        "compare --example bumpy --tile 0x10 --markdown " + table,
+        "compare --example bumpy --methods sculpting --markdown " + table,
+        std::string("compare")}) {
+    SCOPED_TRACE(arguments);
+    const Command_result run = run_sculpt(arguments);
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(table));
+  }
+}
+
 TEST(Cli, VersionAndHelp) {
   EXPECT_EQ(run_sculpt("--version").exit_code, 0);
   const Command_result help = run_sculpt("reconstruct --help");

@@ -392,6 +392,11 @@ double delaunay_seconds(const std::vector<Point<2>>& points);
 double delaunay_seconds(const std::vector<Point<3>>& points);
 // CGAL's Advancing Front Surface Reconstruction, default parameters: its triangles.
 std::vector<Facet<3>> cgal_advancing_front(const std::vector<Point<3>>& points);
+// The two-sided Hausdorff distance between two triangle meshes (each its points and triangles),
+// from samples of each measured exactly to the other (CGAL's AABB tree): a lower bound within a
+// 400th of the meshes' diagonal. Infinite when either has no triangle of positive area.
+double hausdorff_distance(const std::vector<Point<3>>& a_points, const std::vector<Facet<3>>& a,
+                          const std::vector<Point<3>>& b_points, const std::vector<Facet<3>>& b);
 
 const char* to_string(Method method);
 const char* to_string(Carve_reason reason);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
 #include <initializer_list>
 #include <iostream>
 #include <map>
@@ -21,6 +22,18 @@
 
 namespace sculpt::cli {
 namespace {
+
+// The peak resident memory of this process's own image, in MiB (VmHWM). Unlike the rusage
+// maximum, it does not carry over the memory of the parent that forked it (Linux keeps that high
+// mark across exec): a job started by a large process reports its own peak.
+double own_peak_mib() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line)) {
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;  // kB
+  }
+  return 0;
+}
 
 // Runs this executable as `sculpt bench-job ARGUMENTS...` and returns the JSON it prints, with
 // the process's CPU time (user + system), wall time and peak resident memory.
@@ -62,9 +75,10 @@ nlohmann::json run_job_process(const std::vector<std::string>& arguments) {
   auto result = nlohmann::json::parse(text, nullptr, false);
   if (result.is_discarded()) return {{"error", "the measuring process wrote no JSON"}};
   const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-  result["process"] = {{"cpu_seconds", seconds(usage.ru_utime) + seconds(usage.ru_stime)},
-                       {"wall_seconds", wall},
-                       {"peak_mib", double(usage.ru_maxrss) / 1024.0}};
+  result["process"] = {
+      {"cpu_seconds", seconds(usage.ru_utime) + seconds(usage.ru_stime)},
+      {"wall_seconds", wall},
+      {"peak_mib", result.value("own_peak_mib", double(usage.ru_maxrss) / 1024.0)}};
   return result;
 }
 
@@ -79,47 +93,6 @@ nlohmann::json median_run(std::vector<nlohmann::json> runs) {
     return double(a["process"]["cpu_seconds"]) < double(b["process"]["cpu_seconds"]);
   });
   return good[(good.size() - 1) / 2];
-}
-
-// One row: CGAL's Delaunay of the points, CGAL's Advancing Front and every method on the same
-// points, each in a process of its own, `runs` times interleaved.
-nlohmann::json measure(const std::string& name, const std::vector<std::string>& source,
-                       const Bench_arguments& args) {
-  std::vector<std::string> methods = args.methods;
-  if (methods.empty()) methods.assign(method_names().begin(), method_names().end());
-  std::vector<std::pair<std::string, std::vector<std::string>>> jobs = {
-      {"delaunay", {"--job", "delaunay"}}};
-  // CGAL's own run on the raw points, apart from our method of the same name (which also runs
-  // stages 1 and 2): its label must not be a method's.
-  const std::string cgal_front = "cgal:advancing-front";
-  if (args.advancing_front) jobs.push_back({cgal_front, {"--job", "advancing-front"}});
-  for (const auto& method : methods)
-    jobs.push_back({method, {"--job", "method", "--method", method}});
-
-  std::map<std::string, std::vector<nlohmann::json>> runs;
-  for (int run = 0; run < std::max(1, args.runs); ++run) {
-    for (auto [label, arguments] : jobs) {
-      if (label != "delaunay") {  // measured first: it says the input's dimension
-        const int dimension = runs["delaunay"].front().value("dimension", 0);
-        if (label == cgal_front && dimension != 3) {
-          continue;  // a surface method: not for curves (nor for an input nothing could read)
-        }
-        Method method;
-        if (parse_method(label, method) && !reconstructs_in(method, dimension)) continue;
-      }
-      arguments.insert(arguments.end(), source.begin(), source.end());
-      runs[label].push_back(run_job_process(arguments));
-    }
-  }
-  nlohmann::json row;
-  row["input"] = name;
-  row["delaunay_only"] = median_run(runs["delaunay"]);
-  row["samples"] = row["delaunay_only"].value("samples", 0);
-  for (const auto& method : methods) {
-    if (!runs[method].empty()) row["methods"][method] = median_run(runs[method]);
-  }
-  if (!runs[cgal_front].empty()) row["advancing_front"] = median_run(runs[cgal_front]);
-  return row;
 }
 
 double stage_seconds(const nlohmann::json& stats, std::initializer_list<const char*> names) {
@@ -338,39 +311,87 @@ int run_bench_job(const Bench_job& job) {
   } catch (const std::exception& e) {
     out = {{"error", e.what()}};
   }
+  out["own_peak_mib"] = own_peak_mib();
   std::cout << out.dump() << '\n';
   return 0;
 }
 
-int run_bench(const Bench_arguments& args) {
+std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
+    const Bench_arguments& args) {
   for (const auto& method : args.methods) {
     Method parsed;
     if (!parse_method(method, parsed))
       throw frontend::Usage_error("unknown method '" + method + "'");
   }
-  std::vector<nlohmann::json> rows;
-  const auto add = [&](nlohmann::json row) {
-    if (isatty(STDERR_FILENO)) {  // progress for a person watching; never in a log
-      std::cerr << "sculpt bench: " << row["input"].get<std::string>() << " done\n";
-    }
-    rows.push_back(std::move(row));
-  };
+  std::vector<std::pair<std::string, std::vector<std::string>>> inputs;
   for (const auto& path : args.inputs) {
     std::vector<std::string> source = {"--input", path};
     if (args.bordered) source.push_back("--bordered");
     if (args.merge_duplicates) source.push_back("--merge-duplicates");
-    add(measure(path.substr(path.find_last_of('/') + 1), source, args));
+    inputs.emplace_back(path.substr(path.find_last_of('/') + 1), source);
   }
   for (const auto& example : args.examples) {
     const auto* known = shapes::find_example(example);
     if (!known) throw frontend::Usage_error("unknown example '" + example + "'");
     std::vector<std::string> source = {"--example", example};
     if (known->bordered) source.push_back("--bordered");
-    add(measure(example, source, args));
+    inputs.emplace_back(example, source);
   }
   if (args.torus_points > 0) {
-    add(measure(fmt::format("torus {}", args.torus_points),
-                {"--torus", std::to_string(args.torus_points)}, args));
+    inputs.emplace_back(fmt::format("torus {}", args.torus_points),
+                        std::vector<std::string>{"--torus", std::to_string(args.torus_points)});
+  }
+  return inputs;
+}
+
+// One row: CGAL's Delaunay of the points, CGAL's Advancing Front and every method on the same
+// points, each in a process of its own, `runs` times interleaved.
+nlohmann::json measure_input(const std::string& name, const std::vector<std::string>& source,
+                             const Bench_arguments& args) {
+  std::vector<std::string> methods = args.methods;
+  if (methods.empty()) methods.assign(method_names().begin(), method_names().end());
+  std::vector<std::pair<std::string, std::vector<std::string>>> jobs = {
+      {"delaunay", {"--job", "delaunay"}}};
+  // CGAL's own run on the raw points, apart from our method of the same name (which also runs
+  // stages 1 and 2): its label must not be a method's.
+  const std::string cgal_front = "cgal:advancing-front";
+  if (args.advancing_front) jobs.push_back({cgal_front, {"--job", "advancing-front"}});
+  for (const auto& method : methods)
+    jobs.push_back({method, {"--job", "method", "--method", method}});
+
+  std::map<std::string, std::vector<nlohmann::json>> runs;
+  for (int run = 0; run < std::max(1, args.runs); ++run) {
+    for (auto [label, arguments] : jobs) {
+      if (label != "delaunay") {  // measured first: it says the input's dimension
+        const int dimension = runs["delaunay"].front().value("dimension", 0);
+        if (label == cgal_front && dimension != 3) {
+          continue;  // a surface method: not for curves (nor for an input nothing could read)
+        }
+        Method method;
+        if (parse_method(label, method) && !reconstructs_in(method, dimension)) continue;
+      }
+      arguments.insert(arguments.end(), source.begin(), source.end());
+      runs[label].push_back(run_job_process(arguments));
+    }
+  }
+  nlohmann::json row;
+  row["input"] = name;
+  row["delaunay_only"] = median_run(runs["delaunay"]);
+  row["samples"] = row["delaunay_only"].value("samples", 0);
+  for (const auto& method : methods) {
+    if (!runs[method].empty()) row["methods"][method] = median_run(runs[method]);
+  }
+  if (!runs[cgal_front].empty()) row["advancing_front"] = median_run(runs[cgal_front]);
+  return row;
+}
+
+int run_bench(const Bench_arguments& args) {
+  std::vector<nlohmann::json> rows;
+  for (const auto& [name, source] : bench_inputs(args)) {
+    rows.push_back(measure_input(name, source, args));
+    if (isatty(STDERR_FILENO)) {  // progress for a person watching; never in a log
+      std::cerr << "sculpt bench: " << name << " done\n";
+    }
   }
   print_rows(rows);
   if (args.render_triangles > 0) {

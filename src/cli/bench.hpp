@@ -4,7 +4,9 @@
 // input included, as a user would measure `sculpt reconstruct` with /usr/bin/time.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sculpt::cli {
@@ -23,6 +25,17 @@ struct Bench_arguments {
 };
 
 int run_bench(const Bench_arguments& args);
+
+// The inputs of a benchmark (files, examples, the torus) as names and the arguments that give
+// them to a measuring process. Throws Usage_error for an unknown method or example.
+std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
+    const Bench_arguments& args);
+
+// One input measured: CGAL's Delaunay triangulation of it ("delaunay_only"), CGAL's Advancing
+// Front if asked ("advancing_front") and every method that applies ("methods"), each in a
+// process of its own, the median of args.runs runs.
+nlohmann::json measure_input(const std::string& name, const std::vector<std::string>& source,
+                             const Bench_arguments& args);
 
 // One measurement, in the process `sculpt bench` starts: prints its JSON on standard output.
 struct Bench_job {

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "bench.hpp"
+#include "compare.hpp"
 #include "figures/gallery.hpp"
 #include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
@@ -266,6 +267,34 @@ int main(int argc, char** argv) {
   bench->add_flag("!--no-advancing-front", bench_args.advancing_front,
                   "Leave out CGAL's Advancing Front");
 
+  Compare_arguments compare_args;
+  auto* compare = app.add_subcommand(
+      "compare",
+      "The methods side by side on the same inputs: a markdown table (time and memory against "
+      "CGAL's Delaunay of the same points, the verdict and its counts; against a reference mesh "
+      "the triangles reproduced and the Hausdorff distance) and a picture grid");
+  compare->add_option("inputs", compare_args.inputs.inputs, "Point files or meshes");
+  compare->add_option("--example", compare_args.inputs.examples, "Built-in examples");
+  compare->add_option("--methods", compare_args.inputs.methods, "Only these methods (default: all)")
+      ->delimiter(',')
+      ->check(CLI::IsMember(sculpt::method_names()));
+  compare->add_option("--reference", compare_args.reference,
+                      "A mesh to measure the results of the (one) input against; a mesh input "
+                      "is its own reference");
+  compare->add_flag("--bordered", compare_args.inputs.bordered,
+                    "Treat the point files as bordered");
+  compare->add_flag("--merge-duplicates", compare_args.inputs.merge_duplicates,
+                    "Remove repeated points of the files instead of refusing them");
+  compare->add_option("--runs", compare_args.inputs.runs, "Time every method N times: medians")
+      ->check(CLI::Range(1, 99))
+      ->capture_default_str();
+  compare->add_option("--markdown", compare_args.markdown, "Also write the table to this .md file");
+  compare->add_option("--json", compare_args.json, "Also write the measurements as JSON");
+  compare->add_option("--pictures", compare_args.pictures,
+                      "Write a picture grid (inputs by methods, one camera per input) to this PNG");
+  compare->add_option("--tile", compare_args.tile, "Size of one picture of the grid, WxH")
+      ->capture_default_str();
+
   // One measurement of the benchmark, in a process of its own; not for people (no help entry).
   Bench_job bench_job;
   auto* bench_job_command = app.add_subcommand("bench-job", "");
@@ -293,6 +322,7 @@ int main(int argc, char** argv) {
   try {
     if (examples->parsed()) return run_examples();
     if (bench->parsed()) return run_bench(bench_args);
+    if (compare->parsed()) return run_compare(compare_args);
     if (bench_job_command->parsed()) return run_bench_job(bench_job);
     if (render->parsed()) return run_render(render_args);
     if (figures_command->parsed()) return sculpt::figures::generate(figure_options) > 0 ? 0 : 1;

@@ -25,6 +25,7 @@ struct Shot {
   double zoom = 1.0;               // applied to the fitted camera (< 1 zooms in)
   int ball_every = 1;              // polar balls of every k-th pole only
   double yaw = 0.6, pitch = 0.35;  // 3D: direction the fitted camera looks from (radians)
+  std::string title;               // replaces the stage's title, when given
   std::string output;
 };
 

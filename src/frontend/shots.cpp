@@ -14,6 +14,16 @@ namespace sculpt::frontend {
 
 namespace {
 
+render::Camera camera_or_error(const nlohmann::json& json) {
+  try {
+    return render::camera_from_json(json);
+  } catch (const std::invalid_argument& e) {
+    throw io::Error(e.what());
+  }
+}
+
+}  // namespace
+
 std::pair<int, int> parse_size(const std::string& size) {
   int width = 0, height = 0;
   char x = 0;
@@ -26,16 +36,6 @@ std::pair<int, int> parse_size(const std::string& size) {
   }
   return {width, height};
 }
-
-render::Camera camera_or_error(const nlohmann::json& json) {
-  try {
-    return render::camera_from_json(json);
-  } catch (const std::invalid_argument& e) {
-    throw io::Error(e.what());
-  }
-}
-
-}  // namespace
 
 nlohmann::json read_json(const std::string& path) {
   std::ifstream in(path);
@@ -71,6 +71,7 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.ball_every = j.value("ball_every", 1);
   shot.yaw = j.value("yaw", shot.yaw);
   shot.pitch = j.value("pitch", shot.pitch);
+  shot.title = j.value("title", "");
   shot.output = j.value("output", "");
   return shot;
 }
@@ -124,6 +125,7 @@ Picture draw_shot(render::Headless_renderer& renderer, const Shot& shot,
   } catch (const std::invalid_argument& e) {
     throw io::Error(e.what());
   }
+  if (!shot.title.empty()) picture.scene.title = shot.title;
   picture.camera =
       render::fit(picture.scene, float(width) / float(height), shot.zoom, shot.yaw, shot.pitch);
   if (inline_camera) picture.camera = camera_or_error(*inline_camera);

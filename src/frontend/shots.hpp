@@ -15,6 +15,9 @@
 
 namespace sculpt::frontend {
 
+// A picture size "WIDTHxHEIGHT"; throws io::Error with a one-line message.
+std::pair<int, int> parse_size(const std::string& size);
+
 // Reads a JSON file; throws io::Error with a one-line message.
 nlohmann::json read_json(const std::string& path);
 

@@ -1,0 +1,325 @@
+#include "compare.hpp"
+
+#include <fmt/format.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "frontend/command_line.hpp"
+#include "frontend/input.hpp"
+#include "frontend/shots.hpp"
+#include "io/atomic_file.hpp"
+#include "io/output_set.hpp"
+#include "io/point_reader.hpp"
+#include "render/headless.hpp"
+#include "render/image.hpp"
+#include "shapes/shapes.hpp"
+
+namespace sculpt::cli {
+namespace {
+
+// A reference mesh: its vertices and triangles.
+struct Reference {
+  std::vector<Point<3>> points;
+  std::vector<Facet<3>> triangles;
+  double diagonal = 0;
+};
+
+double diagonal_of(const std::vector<Point<3>>& points) {
+  Point<3> low = points.front(), high = points.front();
+  for (const auto& p : points) {
+    for (int k = 0; k < 3; ++k) {
+      low[k] = std::min(low[k], p[k]);
+      high[k] = std::max(high[k], p[k]);
+    }
+  }
+  return std::sqrt((high[0] - low[0]) * (high[0] - low[0]) +
+                   (high[1] - low[1]) * (high[1] - low[1]) +
+                   (high[2] - low[2]) * (high[2] - low[2]));
+}
+
+Reference read_reference(const std::string& path) {
+  const frontend::Input mesh = frontend::load_input(path, "", 3);
+  if (mesh.reference_triangles.empty()) {
+    throw io::Error("the reference '" + path + "' has no triangles: it must be a mesh");
+  }
+  Reference reference;
+  reference.points = std::get<std::vector<Point<3>>>(mesh.points);
+  reference.triangles = mesh.reference_triangles;
+  reference.diagonal = diagonal_of(reference.points);
+  return reference;
+}
+
+// The reference of an input: the --reference mesh, or a mesh input's own triangles; none for
+// curves and point files without one.
+std::optional<Reference> reference_of(const frontend::Input& input,
+                                      const std::optional<Reference>& given) {
+  if (input.dimension() != 3) return std::nullopt;
+  if (given) return given;
+  if (input.reference_triangles.empty()) return std::nullopt;
+  Reference reference;
+  reference.points = std::get<std::vector<Point<3>>>(input.points);
+  reference.triangles = input.reference_triangles;
+  reference.diagonal = diagonal_of(reference.points);
+  return reference;
+}
+
+// The verdict in a table cell: what the result is (before the counts), or what is wrong.
+std::string short_verdict(const std::string& line) {
+  const bool defective = line.rfind("NOT", 0) == 0;
+  return line.substr(0, line.find(defective ? ';' : ':'));
+}
+
+std::string number_or_dash(double value, const char* format) {
+  return std::isfinite(value) ? fmt::format(fmt::runtime(format), value) : std::string("—");
+}
+
+void paste(render::Image& canvas, const render::Image& tile, int left, int top) {
+  for (int y = 0; y < tile.height; ++y) {
+    std::copy_n(tile.pixel(0, y), 4 * tile.width,
+                &canvas.rgba[4 * (std::size_t(top + y) * canvas.width + left)]);
+  }
+}
+
+class Comparison {
+ public:
+  explicit Comparison(const Compare_arguments& args) : args_(args) {
+    methods_ = args.inputs.methods;
+    if (methods_.empty()) methods_.assign(method_names().begin(), method_names().end());
+  }
+
+  void run() {
+    const auto inputs = bench_inputs(args_.inputs);
+    if (!args_.reference.empty() && inputs.size() != 1) {
+      throw frontend::Usage_error("--reference goes with one input, not " +
+                                  std::to_string(inputs.size()));
+    }
+    if (!args_.reference.empty()) given_reference_ = read_reference(args_.reference);
+    Bench_arguments measuring = args_.inputs;
+    measuring.advancing_front = false;  // the method advancing-front is CGAL's, measured as one
+    // Every measuring process first, while this one is small; then the results again here.
+    for (const auto& [name, source] : inputs) {
+      nlohmann::json row = measure_input(name, source, measuring);
+      if (row["delaunay_only"].contains("error")) {
+        throw io::Error(name + ": " + row["delaunay_only"]["error"].get<std::string>());
+      }
+      for (auto& [method, s] : row["methods"].items()) {
+        if (s.contains("error")) continue;
+        // Interpolating methods: the result's vertices are the samples on it.
+        const std::size_t vertices =
+            s["samples"].get<std::size_t>() - s["unused_samples"].get<std::size_t>();
+        s["output_vertices"] = vertices;
+        s["output_vertices_per_sample"] = double(vertices) / s["samples"].get<double>();
+      }
+      rows_.push_back(std::move(row));
+      if (isatty(STDERR_FILENO)) std::cerr << "sculpt compare: " << name << " measured\n";
+    }
+    for (std::size_t k = 0; k < inputs.size(); ++k) measure_results(inputs[k].second, rows_[k]);
+  }
+
+  std::string markdown() const {
+    std::ostringstream out;
+    out << "| input | n | method | seconds | × DT | MiB | × DT | vertices / n | verdict | border "
+           "loops | non-manifold edges | pieces | Euler (mesh) | unused | reproduced | Hausdorff / "
+           "diagonal |\n";
+    out << "|---|--:|---|--:|--:|--:|--:|--:|---|--:|--:|--:|--:|--:|--:|--:|\n";
+    for (const auto& row : rows_) {
+      const auto& dt = row["delaunay_only"]["process"];
+      const double dt_seconds = dt["cpu_seconds"], dt_mib = dt["peak_mib"];
+      const auto reference = row["delaunay_only"].find("reference");
+      for (const auto& method : methods_) {              // in the order asked
+        if (!row["methods"].contains(method)) continue;  // not for this dimension
+        const auto& s = row["methods"][method];
+        const std::string input = row["input"];
+        if (s.contains("error")) {
+          out << fmt::format("| {} | {} | {} | failed: {} |||||||||||||\n", input,
+                             row["samples"].get<std::size_t>(), method,
+                             s["error"].get<std::string>());
+          continue;
+        }
+        const double seconds = s["process"]["cpu_seconds"], mib = s["process"]["peak_mib"];
+        const long euler = s["euler_characteristic"];
+        out << fmt::format(
+            "| {} | {} | {} | {:.3f} | {:.2f} | {:.0f} | {:.2f} | {:.3f} | {} | {} | {} | {} | {} "
+            "| "
+            "{} | {} | {} |\n",
+            input, row["samples"].get<std::size_t>(), method, seconds, seconds / dt_seconds, mib,
+            mib / dt_mib, s.value("output_vertices_per_sample", 0.0), short_verdict(s["verdict"]),
+            s["boundary_loops"].get<std::size_t>(), s["non_manifold_ridges"].get<std::size_t>(),
+            s["components"].get<std::size_t>(),
+            reference != row["delaunay_only"].end()
+                ? fmt::format("{} ({})", euler, (*reference)["euler_characteristic"].get<long>())
+                : std::to_string(euler),
+            s["unused_samples"].get<std::size_t>(),
+            number_or_dash(s.value("reproduced", std::nan("")) * 100, "{:.1f}%"),
+            number_or_dash(s.value("hausdorff_per_diagonal", std::nan("")), "{:.4f}"));
+      }
+    }
+    out << "\nseconds, MiB: CPU time and peak memory of a process that reads the input and runs "
+           "the method; × DT: against the process that builds CGAL's Delaunay triangulation of "
+           "the same points, in the same run. vertices / n: the result's vertices per sample. "
+           "Hausdorff: two-sided, to the reference mesh, over its bounding box's diagonal.\n";
+    return out.str();
+  }
+
+  const std::vector<nlohmann::json>& rows() const { return rows_; }
+  const render::Image& pictures() const { return grid_; }
+
+ private:
+  // The results again, in this process (untimed): their vertices, their distance to the
+  // reference, and their pictures.
+  void measure_results(const std::vector<std::string>& source, nlohmann::json& row) {
+    const bool example = source.front() == "--example";
+    const frontend::Input input = frontend::load_input(
+        example ? "" : source[1], example ? source[1] : "", 0, args_.inputs.merge_duplicates);
+    const std::optional<Reference> reference = reference_of(input, given_reference_);
+    if (!reference && args_.pictures.empty()) return;  // nothing more to measure
+    if (given_reference_ && reference) {
+      const Statistics own = facet_topology(reference->points.size(), reference->triangles);
+      row["delaunay_only"]["reference"] = {{"triangles", reference->triangles.size()},
+                                           {"euler_characteristic", own.euler_characteristic},
+                                           {"components", own.components},
+                                           {"boundary_loops", own.boundary_loops}};
+    }
+    std::vector<render::Image> tiles;
+    for (const auto& method : methods_) {
+      frontend::Shot shot;
+      shot.input = example ? "" : source[1];
+      shot.example = example ? source[1] : "";
+      shot.bordered = std::find(source.begin(), source.end(), "--bordered") != source.end();
+      shot.method = method;
+      shot.stage = "surface";
+      shot.size = args_.tile;
+      if (!row["methods"].contains(method) || row["methods"][method].contains("error")) {
+        shot.stage = "samples";  // the method does not apply here, or failed
+        shot.title = method + ": " +
+                     (row["methods"].contains(method)
+                          ? "failed"
+                          : "not for " + std::to_string(input.dimension()) + "D");
+        shot.method = to_string(Options{}.method);
+        tiles.push_back(draw(shot, input));
+        continue;
+      }
+      auto& measured = row["methods"][method];
+      Method parsed;
+      parse_method(method, parsed);
+      Options options;
+      options.method = parsed;
+      options.kind = shot.bordered ? Surface_kind::bordered : Surface_kind::closed;
+      const frontend::Any_reconstruction result = std::visit(
+          [&](const auto& points) -> frontend::Any_reconstruction {
+            return reconstruct(points, options);
+          },
+          input.points);
+      const Statistics& stats =
+          std::visit([](const auto& r) -> const Statistics& { return r.stats; }, result);
+      if (reference) {
+        const auto& r = std::get<Reconstruction<3>>(result);
+        const std::vector<Point<3>> samples(r.sites.begin(), r.sites.begin() + r.sample_count());
+        const double distance =
+            hausdorff_distance(samples, r.surface, reference->points, reference->triangles);
+        measured["hausdorff"] = std::isfinite(distance) ? nlohmann::json(distance) : nullptr;
+        measured["hausdorff_per_diagonal"] =
+            std::isfinite(distance) ? nlohmann::json(distance / reference->diagonal) : nullptr;
+        if (given_reference_ && reference->points == samples) {  // same vertices, same order
+          measured["reproduced"] = triangles_reproduced(reference->triangles, r.surface);
+        }
+      }
+      // The table says what is wrong; a tile has room for whether anything is.
+      shot.title = method + (verdict(stats).manifold ? ": manifold" : ": NOT manifold");
+      tiles.push_back(draw(shot, result));
+    }
+    if (!args_.pictures.empty()) add_grid_row(tiles);
+  }
+
+  // A tile of the grid; every tile of an input fits the same box, the samples' (one camera).
+  render::Image draw(const frontend::Shot& shot, const frontend::Any_reconstruction& result) {
+    if (args_.pictures.empty()) return {};
+    if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
+    return frontend::draw_shot(*renderer_, shot, result).image;
+  }
+  render::Image draw(const frontend::Shot& shot, const frontend::Input& input) {
+    if (args_.pictures.empty()) return {};
+    Options options;
+    options.keep_triangulations = false;
+    return draw(shot, std::visit(
+                          [&](const auto& points) -> frontend::Any_reconstruction {
+                            return reconstruct(points, options);
+                          },
+                          input.points));
+  }
+
+  void add_grid_row(const std::vector<render::Image>& tiles) {
+    const int width = tiles.front().width, height = tiles.front().height;
+    render::Image grown;
+    grown.width = std::max(grid_.width, width * int(tiles.size()));
+    grown.height = grid_.height + height;
+    grown.rgba.assign(4 * std::size_t(grown.width) * grown.height, 255);
+    if (grid_.height > 0) paste(grown, grid_, 0, 0);
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      paste(grown, tiles[k], int(k) * width, grid_.height);
+    }
+    grid_ = std::move(grown);
+  }
+
+  const Compare_arguments& args_;
+  std::vector<std::string> methods_;
+  std::vector<nlohmann::json> rows_;
+  std::optional<Reference> given_reference_;  // --reference
+  std::unique_ptr<render::Headless_renderer> renderer_;
+  render::Image grid_;
+};
+
+void check_outputs(const Compare_arguments& args) {
+  const auto check = [](const std::string& path, const char* extension, const char* what) {
+    if (path.empty()) return;
+    if (io::extension_of(path) != extension) {
+      throw frontend::Usage_error(
+          fmt::format("the {} must end in {}: '{}'", what, extension, path));
+    }
+    io::check_output_folder(path);
+  };
+  check(args.markdown, ".md", "markdown table");
+  check(args.json, ".json", "JSON table");
+  check(args.pictures, ".png", "picture grid");
+  try {
+    frontend::parse_size(args.tile);
+  } catch (const io::Error& e) {
+    throw frontend::Usage_error(e.what());
+  }
+}
+
+}  // namespace
+
+int run_compare(const Compare_arguments& args) {
+  check_outputs(args);
+  if (args.inputs.inputs.empty() && args.inputs.examples.empty()) {
+    throw frontend::Usage_error("compare needs an input file or --example");
+  }
+  Comparison comparison(args);
+  comparison.run();
+  const std::string table = comparison.markdown();
+  io::Output_set outputs;  // every file or none
+  if (!args.markdown.empty()) {
+    io::Atomic_file file(outputs.stage(args.markdown), false);
+    file.stream() << table;
+    file.commit();
+  }
+  if (!args.json.empty()) {
+    io::Atomic_file file(outputs.stage(args.json), false);
+    file.stream() << nlohmann::json(comparison.rows()).dump(2) << '\n';
+    file.commit();
+  }
+  if (!args.pictures.empty())
+    render::write_png(outputs.stage(args.pictures), comparison.pictures());
+  outputs.commit();
+  std::cout << table;
+  return 0;
+}
+
+}  // namespace sculpt::cli
