@@ -62,6 +62,31 @@ TEST(CgalMethods, TheAlphaShapeIsOneSolidHoldingEverySample) {
   testing::expect_every_stage_builds(result);
 }
 
+TEST(CgalMethods, TheAlphaShapeTakesTheRadiusItIsGiven) {
+  const auto samples = shapes::torso(8000);
+  Options options = testing::with_method(Method::alpha_shape);
+  const auto chosen = reconstruct(samples, options);
+  // Given back the radius it chose, in the input's units, it makes the same solid.
+  options.alpha = chosen.stats.alpha;
+  const auto same = reconstruct(samples, options);
+  EXPECT_NEAR(same.stats.alpha, chosen.stats.alpha, 1e-9 * chosen.stats.alpha);
+  EXPECT_EQ(same.stats.solid_cells, chosen.stats.solid_cells);
+  // Smaller, it holds fewer cells and leaves samples off its surface; larger than the shape,
+  // it is the convex hull: more cells than any other, a sphere's topology.
+  options.alpha = 0.5 * chosen.stats.alpha;
+  const auto smaller = reconstruct(samples, options);
+  EXPECT_LT(smaller.stats.solid_cells, chosen.stats.solid_cells);
+  EXPECT_GT(smaller.stats.unused_samples, chosen.stats.unused_samples);
+  options.alpha = 1e3;
+  const auto hull = reconstruct(samples, options);
+  EXPECT_GT(hull.stats.solid_cells, chosen.stats.solid_cells);
+  EXPECT_EQ(hull.stats.components, 1u);
+  EXPECT_EQ(hull.stats.euler_characteristic, 2);
+  EXPECT_NEAR(hull.stats.alpha, 1e3, 1e-9);
+  options.alpha = -1;
+  EXPECT_THROW(reconstruct(samples, options), Input_error);
+}
+
 TEST(CgalMethods, BothReconstructSurfacesOnly) {
   for (Method method : {Method::advancing_front, Method::alpha_shape}) {
     EXPECT_FALSE(reconstructs_in(method, 2));

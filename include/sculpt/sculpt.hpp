@@ -94,6 +94,9 @@ struct Options {
   Surface_rule rule = Surface_rule::automatic;
   // Side lengths of the bounding box BB relative to those of the samples' bounding box.
   double box_factor = 5.0;
+  // The alpha shape's radius, in the input's units; 0 chooses the smallest alpha whose solid is
+  // one piece holding every sample.
+  double alpha = 0;
   // Bordered surfaces start from one convex pole. -1 chooses p+ of the lowest-index sample whose
   // p+ is convex, a choice that does not depend on CGAL's internal order; otherwise the convex
   // pole (p+ or p-) of the given sample.

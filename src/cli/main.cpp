@@ -30,6 +30,7 @@ struct Reconstruct_arguments {
   int dimension = 0;  // 0: as the input says
   int seed_sample = Options{}.bordered_seed_sample;
   double box_factor = Options{}.box_factor;
+  double alpha = Options{}.alpha;
   bool bordered = false, ascii = false, quiet = false, merge_duplicates = false;
   bool require_manifold = false;
 };
@@ -107,6 +108,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   options.kind = args.bordered ? Surface_kind::bordered : Surface_kind::closed;
   parse_rule(args.rule, options.rule);
   options.box_factor = args.box_factor;
+  options.alpha = args.alpha;
   options.bordered_seed_sample = args.seed_sample;
   options.keep_triangulations = false;
   options.keep_solid = !args.solid.empty();
@@ -207,6 +209,11 @@ int main(int argc, char** argv) {
       ->add_option("--box-factor", args.box_factor, "Bounding box BB relative to the samples' box")
       ->capture_default_str()
       ->check(CLI::Range(1.0 + 1e-9, 1e6));
+  reconstruct
+      ->add_option("--alpha", args.alpha,
+                   "alpha-shape: the radius alpha, in the input's units (default: the smallest "
+                   "giving one solid with every sample)")
+      ->check(sculpt::frontend::positive_length());
   reconstruct
       ->add_option("--rule", args.rule,
                    "Surface rule: auto (skin when closed, extraction when bordered), "

@@ -38,6 +38,8 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->capture_default_str()
       ->check(CLI::IsMember(sculpt::method_names()));
   render->add_option("--box-factor", shot.box_factor, "Bounding box factor")->capture_default_str();
+  render->add_option("--alpha", shot.alpha, "alpha-shape: the radius (default: chosen)")
+      ->check(frontend::positive_length());
   render->add_option("--rule", shot.rule, "Surface rule: auto, skin or extraction")
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
   render->add_option("--layers", shot.layers, "Only these layers (comma separated)")

@@ -54,6 +54,9 @@ void check_input(const std::vector<Point<Traits::dimension>>& samples, const Opt
   if (!(options.box_factor > 1.0) || !(options.box_factor <= 1e6)) {
     throw Input_error("the box factor must be greater than 1 and at most 1e6");
   }
+  if (!(options.alpha >= 0) || !std::isfinite(options.alpha)) {
+    throw Input_error("alpha must be a positive radius, or 0 to choose it");
+  }
   if (samples.size() < static_cast<std::size_t>(D + 1)) {
     throw Input_error("a " + std::to_string(D) + "D reconstruction needs at least " +
                       std::to_string(D + 1) + " points, got " + std::to_string(samples.size()));

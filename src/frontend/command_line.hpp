@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <optional>
 #include <sculpt/sculpt.hpp>
@@ -47,6 +48,21 @@ inline std::string no_solid_message(Method method) {
     if (builds_solid(other)) builders += std::string(builders.empty() ? "" : ", ") + name;
   }
   return std::string("the method ") + to_string(method) + " builds no solid (" + builders + " do)";
+}
+
+// A positive finite length (--alpha), said in one short line when it is not.
+inline CLI::Validator positive_length() {
+  return CLI::Validator(
+      [](std::string& text) {
+        try {
+          std::size_t used = 0;
+          const double value = std::stod(text, &used);
+          if (used == text.size() && value > 0 && std::isfinite(value)) return std::string();
+        } catch (const std::exception&) {
+        }
+        return "'" + text + "' is not a positive length";
+      },
+      "LENGTH");
 }
 
 // A mistake in the arguments themselves (exit code 2), found before any work is done.

@@ -17,6 +17,7 @@ struct Shot {
   int focus_sample = -1, focus_pole = -1;
   std::string method = to_string(Options{}.method);
   double box_factor = Options{}.box_factor;
+  double alpha = Options{}.alpha;
   std::string rule = "auto";
   std::vector<std::string> layers;
   std::string camera_file, save_camera;

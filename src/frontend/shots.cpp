@@ -59,6 +59,7 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.focus_pole = j.value("focus_pole", -1);
   shot.method = j.value("method", shot.method);
   shot.box_factor = j.value("box_factor", shot.box_factor);
+  shot.alpha = j.value("alpha", shot.alpha);
   shot.rule = j.value("rule", shot.rule);
   shot.layers = j.value("layers", std::vector<std::string>{});
   shot.camera_file = j.value("camera_file", "");
@@ -163,7 +164,8 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   const std::string key = shot.input + "|" + shot.example + "|" + std::to_string(shot.bordered) +
                           "|" + std::to_string(shot.dimension) + "|" +
-                          std::to_string(shot.box_factor) + "|" + shot.rule + "|" + shot.method;
+                          std::to_string(shot.box_factor) + "|" + shot.rule + "|" + shot.method +
+                          "|" + std::to_string(shot.alpha);
   auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
   const frontend::Input input = frontend::load_input(shot.input, shot.example, shot.dimension);
@@ -178,6 +180,7 @@ const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   }
   options.kind = shot.bordered ? Surface_kind::bordered : Surface_kind::closed;
   options.box_factor = shot.box_factor;
+  options.alpha = shot.alpha;
   Any_reconstruction result = std::visit(
       [&](const auto& points) -> Any_reconstruction { return reconstruct(points, options); },
       input.points);

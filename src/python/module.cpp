@@ -123,7 +123,8 @@ struct Progress_bridge {
 };
 
 Options options_from(const std::string& method, const std::string& kind, const std::string& rule,
-                     double box_factor, int bordered_seed_sample, bool keep_triangulations) {
+                     double box_factor, double alpha, int bordered_seed_sample,
+                     bool keep_triangulations) {
   Options options;
   if (!parse_method(method, options.method)) {
     std::string names;
@@ -138,6 +139,7 @@ Options options_from(const std::string& method, const std::string& kind, const s
     throw Input_error("no surface rule '" + rule + "' (rules: auto, skin, extraction)");
   }
   options.box_factor = box_factor;
+  options.alpha = alpha;
   options.bordered_seed_sample = bordered_seed_sample;
   options.keep_triangulations = keep_triangulations;
   return options;
@@ -145,12 +147,12 @@ Options options_from(const std::string& method, const std::string& kind, const s
 
 Result reconstruct_points(const py::object& points, const std::string& method,
                           const std::string& kind, const std::string& rule, double box_factor,
-                          int bordered_seed_sample, bool keep_triangulations, bool merge_duplicates,
-                          const py::object& progress) {
+                          double alpha, int bordered_seed_sample, bool keep_triangulations,
+                          bool merge_duplicates, const py::object& progress) {
   const auto samples = points_from(points);
   Result result;
-  result.options =
-      options_from(method, kind, rule, box_factor, bordered_seed_sample, keep_triangulations);
+  result.options = options_from(method, kind, rule, box_factor, alpha, bordered_seed_sample,
+                                keep_triangulations);
   auto bridge = std::make_shared<Progress_bridge>();
   bridge->callback = progress;
   Options options = result.options;
@@ -512,6 +514,7 @@ PYBIND11_MODULE(_sculpt, m) {
   m.def("reconstruct", &reconstruct_points, py::arg("points"),
         py::arg("method") = to_string(defaults.method), py::arg("kind") = to_string(defaults.kind),
         py::arg("rule") = "auto", py::arg("box_factor") = defaults.box_factor,
+        py::arg("alpha") = defaults.alpha,
         py::arg("bordered_seed_sample") = defaults.bordered_seed_sample,
         py::arg("keep_triangulations") = defaults.keep_triangulations,
         py::arg("merge_duplicates") = false, py::arg("progress") = py::none(),
@@ -525,6 +528,8 @@ kind                 'closed', or 'bordered' for samples of a surface (curve) wi
 rule                 paper method: which facets make the surface, 'auto', 'skin' or
                      'extraction' (the paper's rule)
 box_factor           the bounding box's size relative to the samples' box (the paper: 5)
+alpha                alpha-shape: the radius, in the points' units; 0 chooses the smallest
+                     whose solid is one piece holding every sample (stats['alpha'] says which)
 bordered_seed_sample bordered: the sample whose convex pole seeds the labelling (-1: chosen)
 keep_triangulations  keep the cells of the triangulations (the stages' pictures need them);
                      False computes as the command line does, with less memory

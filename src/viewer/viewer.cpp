@@ -50,7 +50,8 @@ int view_width(int window_width) {
 std::string request_key(const Job_request& r) {
   return r.path + "|" + r.example + "|" + std::to_string(r.dimension) + "|" +
          to_string(r.options.method) + "|" + to_string(r.options.kind) + "|" +
-         std::to_string(r.options.box_factor) + "|" + to_string(r.options.rule);
+         std::to_string(r.options.box_factor) + "|" + to_string(r.options.rule) + "|" +
+         std::to_string(r.options.alpha);
 }
 
 int rule_index(const std::string& name) {
@@ -120,6 +121,7 @@ Job_request Viewer::with_options(Job_request request) const {
   request.options.method = method_at(method_);
   request.options.kind = bordered_ ? Surface_kind::bordered : Surface_kind::closed;
   request.options.box_factor = box_factor_;
+  request.options.alpha = alpha_;
   request.options.rule = rule_ == 1   ? Surface_rule::skin
                          : rule_ == 2 ? Surface_rule::extraction
                                       : Surface_rule::automatic;
@@ -325,6 +327,7 @@ void Viewer::show_tour_panel() {
   set_method(method);
   bordered_ = shot.bordered;
   box_factor_ = static_cast<float>(shot.box_factor);
+  alpha_ = static_cast<float>(shot.alpha);
   rule_ = rule_index(shot.rule);
   Job_request request;
   request.path = shot.input;
@@ -695,6 +698,7 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
                          {"ball_every", request_.ball_every},
                          {"bordered", shown.options.kind == Surface_kind::bordered},
                          {"box_factor", shown.options.box_factor},
+                         {"alpha", shown.options.alpha},
                          {"rule", to_string(shown.options.rule)},
                          {"method", to_string(shown.options.method)},
                          {"dimension", shown.dimension},
@@ -920,6 +924,15 @@ void Viewer::draw_panel(int height) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(method_at(method_)));
     ImGui::Checkbox("bordered surface", &bordered_);
     ImGui::SliderFloat("box factor", &box_factor_, 1.1f, 10.0f, "%.1f");
+    if (method_at(method_) == Method::alpha_shape) {
+      // One radius for the whole shape: the lesson of what it fills and what it leaves open.
+      if (ImGui::InputFloat("alpha (0: chosen)", &alpha_, 0, 0, "%g"))
+        alpha_ = std::max(alpha_, 0.0f);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "The radius of the alpha shape, in the input's units; 0 takes the smallest "
+            "whose solid is one piece holding every sample");
+    }
     ImGui::Combo("surface rule", &rule_, rule_names, 3);
     if (ImGui::Button("Reconstruct again") && !busy() &&
         (!last_request_.path.empty() || !last_request_.example.empty()))

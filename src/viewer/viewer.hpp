@@ -145,6 +145,7 @@ class Viewer {
   // Options for the next run.
   bool bordered_ = false;
   float box_factor_ = static_cast<float>(Options{}.box_factor);
+  float alpha_ = static_cast<float>(Options{}.alpha);
   int rule_ = 0;    // auto, skin, extraction
   int method_ = 0;  // index in method_names()
 

@@ -61,6 +61,18 @@ def test_every_stage_is_consistent_with_the_others(star):
     assert np.all(stages["seeds"].outer_seeds < len(poles.radius))
 
 
+def test_the_alpha_shape_takes_a_given_radius():
+    torso = sculpt.example("torso")
+    chosen = sculpt.reconstruct(torso, method="alpha-shape")
+    again = sculpt.reconstruct(torso, method="alpha-shape", alpha=chosen.stats["alpha"])
+    assert again.stats["solid_cells"] == chosen.stats["solid_cells"] == len(chosen.solid)
+    smaller = sculpt.reconstruct(torso, method="alpha-shape", alpha=chosen.stats["alpha"] / 2)
+    assert smaller.stats["alpha"] == pytest.approx(chosen.stats["alpha"] / 2)
+    assert len(smaller.solid) < len(chosen.solid)
+    with pytest.raises(sculpt.InputError, match="alpha must be a positive radius"):
+        sculpt.reconstruct(torso, method="alpha-shape", alpha=float("inf"))
+
+
 def test_the_arrays_are_read_only_views_that_keep_the_result_alive():
     surface = sculpt.reconstruct(sculpt.example("star")).surface
     gc.collect()  # the result is gone from Python; its arrays must still hold it

@@ -1,9 +1,9 @@
 // Alpha shapes (Edelsbrunner & Mücke, 1994) through CGAL: the Delaunay cells whose circumball is
 // smaller than a ball of radius alpha make a solid, and its boundary is the surface. One alpha
 // serves the whole shape, so where the sampling is coarser than alpha the solid has holes, and
-// where alpha is larger than a thin part or a cavity, it fills them. We take the smallest alpha
-// whose solid is one piece holding every sample (CGAL's find_optimal_alpha(1)), in REGULARIZED
-// mode (no dangling faces).
+// where alpha is larger than a thin part or a cavity, it fills them. Unless the user gives alpha,
+// we take the smallest whose solid is one piece holding every sample (CGAL's
+// find_optimal_alpha(1)), in REGULARIZED mode (no dangling faces).
 #pragma once
 
 #include <CGAL/Alpha_shape_3.h>
@@ -39,12 +39,17 @@ void run_alpha_shape_method(Reconstruction<3>& result, Stage_clock& clock) {
   for (int s = 0; s < n; ++s) sites.push_back({Traits::to_cgal(result.sites[s]), s});
   Delaunay triangulation(sites.begin(), sites.end());
   Alpha_shape shape(triangulation, 0, Alpha_shape::REGULARIZED);
-  const auto optimal = shape.find_optimal_alpha(1);
-  if (optimal == shape.alpha_end()) return;  // no alpha gives one piece: no surface
-  shape.set_alpha(*optimal);
-  // Stored in the input's units (the sites are scaled by 2^scale_exponent).
-  result.stats.alpha =
-      std::ldexp(std::sqrt(CGAL::to_double(*optimal)), -result.stats.scale_exponent);
+  // CGAL's alpha is a squared radius; the sites are the input scaled by 2^scale_exponent.
+  const int scale = result.stats.scale_exponent;
+  if (result.options.alpha > 0) {
+    const double radius = std::ldexp(result.options.alpha, scale);
+    shape.set_alpha(radius * radius);
+  } else {
+    const auto optimal = shape.find_optimal_alpha(1);
+    if (optimal == shape.alpha_end()) return;  // no alpha gives one piece: no surface
+    shape.set_alpha(*optimal);
+  }
+  result.stats.alpha = std::ldexp(std::sqrt(CGAL::to_double(shape.get_alpha())), -scale);
 
   clock.start("surface");
   for (auto cell : shape.finite_cell_handles()) {
