@@ -317,6 +317,30 @@ TEST(Cli, CompareRefusesBadRequestsBeforeAnyWork) {
   }
 }
 
+TEST(Cli, ABorderedExampleIsReconstructedBorderedWithoutBeingTold) {
+  const Command_result run =
+      run_sculpt("reconstruct --example saddle --require-manifold -o " + output_path("saddle.ply"));
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("verdict: bordered 2-manifold with 1 border loop"), std::string::npos)
+      << run.out;
+}
+
+TEST(Cli, RenderMergesRepeatedPointsWhenTold) {
+  std::string text;
+  for (const auto& p : shapes::sphere(300)) text += fmt::format("{} {} {}\n", p[0], p[1], p[2]);
+  text += text.substr(0, text.find('\n') + 1);  // the first point again
+  const std::string scan = testing::write_file("render-repeated.xyz", text);
+  const std::string picture = output_path("render-repeated.png");
+  const Command_result refused = run_sculpt("render " + scan + " --stage samples -o " + picture);
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_NE(refused.err.find("--merge-duplicates"), std::string::npos) << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(picture));
+  EXPECT_EQ(
+      run_sculpt("render " + scan + " --merge-duplicates --stage samples -o " + picture).exit_code,
+      0);
+  EXPECT_TRUE(std::filesystem::exists(picture));
+}
+
 TEST(Cli, VersionAndHelp) {
   EXPECT_EQ(run_sculpt("--version").exit_code, 0);
   const Command_result help = run_sculpt("reconstruct --help");

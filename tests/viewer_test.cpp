@@ -24,6 +24,10 @@ using testing::panel_width;
 using testing::run;
 using testing::run_viewer_script;
 
+std::string fmt_point(const Point<3>& p) {
+  return std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+}
+
 std::size_t dark_pixels(const render::Image& image, int x0, int y0, int x1, int y1) {
   std::size_t count = 0;
   for (int y = y0; y < y1; ++y) {
@@ -151,6 +155,26 @@ TEST(Viewer, SwitchesMethodOnTheSamePoints) {
                                   "method paper\nwait\nstage propagation\nframes 1\nquit\n"),
             0);
   EXPECT_GT(render::read_png(crust).width, 0);
+}
+
+TEST(Viewer, OpensAScanWithRepeatedPointsWhenToldToMergeThem) {
+  std::string text;
+  for (const auto& p : shapes::sphere(500)) text += fmt_point(p);
+  text += fmt_point(shapes::sphere(500)[7]);  // a scan's repeated point
+  const std::string scan = testing::write_file("repeated.xyz", text);
+  EXPECT_NE(run_viewer_script("repeated-refused", "wait\nquit\n", scan), 0);
+  EXPECT_EQ(run_viewer_script("repeated-merged", "wait\nquit\n", "--merge-duplicates " + scan), 0);
+}
+
+TEST(Viewer, TakesItsWindowSizeAsWidthByHeight) {
+  const std::string shot = testing::output_path("viewer-size.png");
+  EXPECT_EQ(run_viewer_script("size", "wait\nscreenshot " + shot + "\nquit\n", "--size 1024x600"),
+            0);
+  const auto image = render::read_png(shot);
+  EXPECT_EQ(image.width, 1024);
+  EXPECT_EQ(image.height, 600);
+  const int code = run(std::string(SCULPT_VIEW_EXECUTABLE) + " --size 1024 >/dev/null 2>&1");
+  EXPECT_EQ(code, 2);  // a width alone is a usage error, in one line
 }
 
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {

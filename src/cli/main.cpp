@@ -31,7 +31,7 @@ struct Reconstruct_arguments {
   int seed_sample = Options{}.bordered_seed_sample;
   double box_factor = Options{}.box_factor;
   double alpha = Options{}.alpha;
-  bool bordered = false, ascii = false, quiet = false, merge_duplicates = false;
+  bool bordered = false, closed = false, ascii = false, quiet = false, merge_duplicates = false;
   bool require_manifold = false;
 };
 
@@ -148,7 +148,10 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
                                                     : frontend::exit_defective_result;
 }
 
-int run_reconstruct(const Reconstruct_arguments& args) {
+int run_reconstruct(Reconstruct_arguments args) {
+  // An example is reconstructed as its own kind, as in the viewer and the benchmark.
+  const shapes::Example* example = shapes::find_example(args.example);
+  args.bordered = !args.closed && (args.bordered || (example && example->bordered));
   const frontend::Input input =
       frontend::load_input(args.input, args.example, args.dimension, args.merge_duplicates);
   check_output_formats(args, input.dimension());
@@ -202,7 +205,11 @@ int main(int argc, char** argv) {
                         "Exit with code 3 when the result is not a closed (or, with --bordered, "
                         "bordered) 2-manifold through every sample; the output is still written");
   reconstruct->add_flag("--bordered", args.bordered,
-                        "The samples come from a surface (curve) with a border");
+                        "The samples come from a surface (curve) with a border (a bordered "
+                        "example is reconstructed so without it)");
+  reconstruct
+      ->add_flag("--closed", args.closed, "Reconstruct a bordered example as if it were closed")
+      ->excludes("--bordered");
   reconstruct->add_option("--solid", args.solid,
                           "Also write the sculpted solid: .mesh (Medit), .vtu, .node/.ele");
   reconstruct

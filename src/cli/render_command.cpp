@@ -47,7 +47,13 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   render->add_option("--camera", shot.camera_file, "Camera JSON (default: fit the samples)");
   render->add_option("--save-camera", shot.save_camera, "Write the camera used as JSON");
   render->add_option("--size", shot.size, "Image size WIDTHxHEIGHT")->capture_default_str();
-  render->add_flag("--bordered", shot.bordered, "Reconstruct a bordered surface");
+  render->add_flag("--bordered", shot.bordered,
+                   "Reconstruct a bordered surface (an example is reconstructed as its own kind "
+                   "otherwise)");
+  render->add_flag("--closed", shot.closed, "Reconstruct a bordered example as if it were closed")
+      ->excludes("--bordered");
+  render->add_flag("--merge-duplicates", shot.merge_duplicates,
+                   "Drop the file's repeated points instead of refusing it");
   render->add_option("--dim", shot.dimension, "Force 2 or 3 dimensions")
       ->check(CLI::IsMember({2, 3}));
   render->add_flag("--wireframe", shot.wireframe, "Surface: draw its edges");

@@ -27,6 +27,12 @@ Shot bordered(Shot s, double box_factor = sculpt::Options{}.box_factor) {
   return s;
 }
 
+// A bordered example reconstructed as if closed: what the closed algorithm does to a sheet.
+Shot closed(Shot s) {
+  s.closed = true;
+  return s;
+}
+
 Shot with_layers(Shot s, std::vector<std::string> layers) {
   s.layers = std::move(layers);
   return s;
@@ -233,7 +239,7 @@ const std::vector<Figure>& paper_figures() {
           {"b", "closed: the sheet breaks into the skins of thin slivers, with no border anywhere",
            "The closed method on the same sheet, for comparison: a sheet has no inside, so only "
            "thin slivers survive and their skins double the sheet, with no border.",
-           wire(shot("example:saddle", "surface"))},
+           wire(closed(shot("example:saddle", "surface")))},
           {"c", "bordered: the border is created",
            "Bordered again: the facets kept are those with an outer pole for an apex, and the "
            "sheet ends where the samples end.",

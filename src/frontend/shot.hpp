@@ -6,11 +6,16 @@
 #include <string>
 #include <vector>
 
+#include "shapes/shapes.hpp"
+
 namespace sculpt::frontend {
 
 struct Shot {
   std::string input, example;
-  bool bordered = false;
+  // The kind of surface: bordered if asked or if the example is so, unless closed is forced
+  // (a lesson on what the closed algorithm does to a sheet): reconstructs_bordered().
+  bool bordered = false, closed = false;
+  bool merge_duplicates = false;  // drop a file's repeated points instead of refusing it
   int dimension = 0;
   std::string stage = "surface";
   long step = -1;
@@ -29,5 +34,11 @@ struct Shot {
   std::string title;               // replaces the stage's title, when given
   std::string output;
 };
+
+// Whether a shot's input is reconstructed as a bordered surface (open curves in 2D).
+inline bool reconstructs_bordered(const Shot& shot) {
+  const shapes::Example* example = shapes::find_example(shot.example);
+  return !shot.closed && (shot.bordered || (example && example->bordered));
+}
 
 }  // namespace sculpt::frontend

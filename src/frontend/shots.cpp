@@ -9,6 +9,7 @@
 #include "io/io_error.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
+#include "shapes/shapes.hpp"
 
 namespace sculpt::frontend {
 
@@ -52,6 +53,7 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.input = j.value("input", "");
   shot.example = j.value("example", "");
   shot.bordered = j.value("bordered", false);
+  shot.closed = j.value("closed", false);
   shot.dimension = j.value("dimension", 0);
   shot.stage = j.value("stage", shot.stage);
   shot.step = j.value("step", -1L);
@@ -60,6 +62,7 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.method = j.value("method", shot.method);
   shot.box_factor = j.value("box_factor", shot.box_factor);
   shot.alpha = j.value("alpha", shot.alpha);
+  shot.merge_duplicates = j.value("merge_duplicates", false);
   shot.rule = j.value("rule", shot.rule);
   shot.layers = j.value("layers", std::vector<std::string>{});
   shot.camera_file = j.value("camera_file", "");
@@ -162,13 +165,16 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
 }
 
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
-  const std::string key = shot.input + "|" + shot.example + "|" + std::to_string(shot.bordered) +
+  const std::string key = shot.input + "|" + shot.example + "|" +
+                          std::to_string(reconstructs_bordered(shot)) +
                           "|" + std::to_string(shot.dimension) + "|" +
                           std::to_string(shot.box_factor) + "|" + shot.rule + "|" + shot.method +
-                          "|" + std::to_string(shot.alpha);
+                          "|" + std::to_string(shot.alpha) + "|" +
+                          std::to_string(shot.merge_duplicates);
   auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
-  const frontend::Input input = frontend::load_input(shot.input, shot.example, shot.dimension);
+  const frontend::Input input =
+      frontend::load_input(shot.input, shot.example, shot.dimension, shot.merge_duplicates);
   Options options;
   if (!parse_method(shot.method, options.method)) {
     std::string names;
@@ -178,7 +184,8 @@ const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   if (!parse_rule(shot.rule, options.rule)) {
     throw io::Error("no surface rule '" + shot.rule + "' (rules: auto, skin, extraction)");
   }
-  options.kind = shot.bordered ? Surface_kind::bordered : Surface_kind::closed;
+  // An example is reconstructed as its own kind, as in the viewer and the command line.
+  options.kind = reconstructs_bordered(shot) ? Surface_kind::bordered : Surface_kind::closed;
   options.box_factor = shot.box_factor;
   options.alpha = shot.alpha;
   Any_reconstruction result = std::visit(

@@ -39,11 +39,17 @@ void on_drop(GLFWwindow* window, int count, const char** paths) {
 int main(int argc, char** argv) {
   CLI::App app{"sculpt-view: step through the sculpting reconstruction, in 2D and 3D"};
   std::string file, example = "star", script_path, screenshot;
-  int frames = 0, width = 1280, height = 860;
-  bool bordered = false;
+  int frames = 0;
+  std::string size = "1280x720";  // fits a 1366x768 laptop screen, title bar and task bar included
+  float font_scale = 1.0f;
+  bool bordered = false, merge_duplicates = false;
   app.add_option("file", file, "Point file to open (default: the built-in example)");
   app.add_option("--example", example, "Built-in example to open")->capture_default_str();
-  app.add_flag("--bordered", bordered, "Reconstruct a bordered surface");
+  app.add_flag("--bordered", bordered,
+               "Reconstruct a bordered surface (an example is reconstructed as its own kind "
+               "otherwise)");
+  app.add_flag("--merge-duplicates", merge_duplicates,
+               "Drop a file's repeated points instead of refusing the file");
   std::string method = sculpt::to_string(sculpt::Options{}.method);
   app.add_option("--method", method, sculpt::frontend::methods_help())
       ->capture_default_str()
@@ -64,7 +70,20 @@ int main(int argc, char** argv) {
   app.add_option("--frames", frames, "Draw this many frames, then quit");
   app.add_option("--screenshot", screenshot,
                  "With --frames: save the window to this PNG at the end");
-  app.add_option("--size", width, "Window width")->capture_default_str();
+  app.add_option("--size", size, "Window size WIDTHxHEIGHT")
+      ->capture_default_str()
+      ->check([](const std::string& text) {
+        int w = 0, h = 0;
+        char x = 0, extra = 0;
+        return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) == 3 && x == 'x' &&
+                       w >= 320 && h >= 240 && w <= 16384 && h <= 16384
+                   ? std::string()
+                   : "'" + text + "' is not WIDTHxHEIGHT from 320x240";
+      });
+  app.add_option("--font-scale", font_scale,
+                 "Scale the panel's text, e.g. 1.5 for a projector (also in the View menu)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.5f, 4.0f));
   app.footer(sculpt::frontend::exit_codes_help);
   if (const auto stop = sculpt::frontend::parse_command_line(app, argc, argv, "sculpt-view")) {
     return *stop;
@@ -82,6 +101,8 @@ int main(int argc, char** argv) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, 4);
+  int width = 0, height = 0;
+  std::sscanf(size.c_str(), "%dx%d", &width, &height);
   GLFWwindow* window = glfwCreateWindow(width, height, "Sculpt", nullptr, nullptr);
   if (!window) {
     std::cerr << "sculpt-view: cannot open an OpenGL 3.3 window (" << glfw_error
@@ -95,6 +116,7 @@ int main(int argc, char** argv) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+  ImGui::GetIO().FontGlobalScale = font_scale;
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
@@ -128,9 +150,10 @@ int main(int argc, char** argv) {
       }
     } else if (!file.empty()) {
       viewer.set_bordered(bordered);
+      viewer.set_merge_duplicates(merge_duplicates);
       viewer.open_file(file);
     } else {
-      viewer.open_example(example);
+      viewer.open_example(example, bordered);
     }
 
     double last = glfwGetTime();

@@ -15,8 +15,9 @@ namespace sculpt::viewer {
 using Any_reconstruction = std::variant<Reconstruction<2>, Reconstruction<3>>;
 
 struct Job_request {
-  std::string path, example;  // one of them
-  int dimension = 0;          // 0: as the file says
+  std::string path, example;      // one of them
+  int dimension = 0;              // 0: as the file says
+  bool merge_duplicates = false;  // drop a file's repeated points instead of refusing them
   std::string shown_as;  // how to name the input when not by its path (e.g. "CGAL's fandisk.off")
   Options options;
 };

@@ -24,7 +24,10 @@
 namespace sculpt::viewer {
 namespace {
 
-constexpr float panel_width = 360.0f;
+// The panel's width: 360 pixels at the normal text size, wider as the text is scaled up.
+float panel_width() {
+  return 360.0f * std::max(1.0f, ImGui::GetIO().FontGlobalScale);
+}
 constexpr double stage_dwell_seconds = 0.25;      // each stage walked through on the way to a panel
 constexpr float camera_move_seconds = 0.7f;       // the camera's flight to a panel's
 constexpr double propagation_play_seconds = 1.5;  // playing the labelling up to a panel's step
@@ -43,7 +46,7 @@ ImVec4 imgui_color(const scene::Color& c) {
 }
 
 int view_width(int window_width) {
-  return std::max(1, window_width - int(panel_width));
+  return std::max(1, window_width - int(panel_width()));
 }
 
 // What makes two reconstructions the same: their input and options.
@@ -51,7 +54,7 @@ std::string request_key(const Job_request& r) {
   return r.path + "|" + r.example + "|" + std::to_string(r.dimension) + "|" +
          to_string(r.options.method) + "|" + to_string(r.options.kind) + "|" +
          std::to_string(r.options.box_factor) + "|" + to_string(r.options.rule) + "|" +
-         std::to_string(r.options.alpha);
+         std::to_string(r.options.alpha) + "|" + std::to_string(r.merge_duplicates);
 }
 
 int rule_index(const std::string& name) {
@@ -81,11 +84,13 @@ Viewer::Viewer() : renderer_(std::make_unique<render::Renderer>()) {}
 // ---------------------------------------------------------------------------------------------
 // Reconstructions
 
-void Viewer::open_example(const std::string& name) {
+void Viewer::open_example(const std::string& name, bool force_bordered) {
   close_tour();
   Job_request request;
   request.example = name;
-  if (const auto* example = shapes::find_example(name)) bordered_ = example->bordered;
+  if (const auto* example = shapes::find_example(name)) {
+    bordered_ = force_bordered || example->bordered;
+  }
   start_job(request);
 }
 
@@ -122,6 +127,7 @@ Job_request Viewer::with_options(Job_request request) const {
   request.options.kind = bordered_ ? Surface_kind::bordered : Surface_kind::closed;
   request.options.box_factor = box_factor_;
   request.options.alpha = alpha_;
+  request.merge_duplicates = merge_duplicates_;
   request.options.rule = rule_ == 1   ? Surface_rule::skin
                          : rule_ == 2 ? Surface_rule::extraction
                                       : Surface_rule::automatic;
@@ -325,7 +331,7 @@ void Viewer::show_tour_panel() {
   Method method = Options{}.method;
   parse_method(shot.method, method);
   set_method(method);
-  bordered_ = shot.bordered;
+  bordered_ = frontend::reconstructs_bordered(shot);
   box_factor_ = static_cast<float>(shot.box_factor);
   alpha_ = static_cast<float>(shot.alpha);
   rule_ = rule_index(shot.rule);
@@ -523,7 +529,7 @@ void Viewer::frame(int width, int height, double seconds) {
     options.legend = options.title = false;  // the panel shows both
     options.hidden_layers = hidden_layers_;
     // The picture takes the window right of the panel, above the figure's caption.
-    options.viewport_x = int(panel_width);
+    options.viewport_x = int(panel_width());
     options.viewport_y = caption_height_;
     renderer_->draw(camera_, view_width(width), view_height(height), options);
   }
@@ -586,7 +592,7 @@ void Viewer::handle_input(int width, int height) {
   if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
     const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
     if (drag.x * drag.x + drag.y * drag.y < 9.0f) {
-      click({io.MousePos.x - panel_width, io.MousePos.y}, view_width(width), view_height(height));
+      click({io.MousePos.x - panel_width(), io.MousePos.y}, view_width(width), view_height(height));
     }
   }
 }
@@ -697,6 +703,7 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
                          {"smooth", request_.smooth},
                          {"ball_every", request_.ball_every},
                          {"bordered", shown.options.kind == Surface_kind::bordered},
+                         {"closed", shown.options.kind == Surface_kind::closed},
                          {"box_factor", shown.options.box_factor},
                          {"alpha", shown.options.alpha},
                          {"rule", to_string(shown.options.rule)},
@@ -797,6 +804,8 @@ void Viewer::draw_menu() {
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Fit / reset camera", "R")) reset_camera(), scene_dirty_ = true;
     if (ImGui::MenuItem("Controls", "H", show_help_)) show_help_ = !show_help_;
+    // Projector mode: text large enough for the back of a room.
+    ImGui::SliderFloat("text size", &ImGui::GetIO().FontGlobalScale, 0.5f, 3.0f, "%.1fx");
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();
@@ -841,7 +850,7 @@ void Viewer::draw_caption(int width, int height) {
     caption_figure_ = tour_.figure().id;
     caption_min_height_ = 0;
   }
-  ImGui::SetNextWindowPos(ImVec2(panel_width, float(height)), ImGuiCond_Always, ImVec2(0, 1));
+  ImGui::SetNextWindowPos(ImVec2(panel_width(), float(height)), ImGuiCond_Always, ImVec2(0, 1));
   const float caption_max_height = 0.45f * float(height);
   ImGui::SetNextWindowSizeConstraints(
       ImVec2(caption_width, std::min(caption_min_height_, caption_max_height)),
@@ -903,7 +912,7 @@ void Viewer::draw_caption(int width, int height) {
 void Viewer::draw_panel(int height) {
   const float top = ImGui::GetFrameHeight();
   ImGui::SetNextWindowPos(ImVec2(0, top), ImGuiCond_Always);
-  ImGui::SetNextWindowSize(ImVec2(panel_width, float(height) - top), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(panel_width(), float(height) - top), ImGuiCond_Always);
   ImGui::Begin("Sculpt", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::TextWrapped("%s", message_.c_str());
@@ -923,6 +932,10 @@ void Viewer::draw_panel(int height) {
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(method_at(method_)));
     ImGui::Checkbox("bordered surface", &bordered_);
+    ImGui::Checkbox("merge repeated points", &merge_duplicates_);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Scans often repeat a few points: drop the copies instead of refusing the file");
     ImGui::SliderFloat("box factor", &box_factor_, 1.1f, 10.0f, "%.1f");
     if (method_at(method_) == Method::alpha_shape) {
       // One radius for the whole shape: the lesson of what it fills and what it leaves open.
@@ -1116,7 +1129,7 @@ void Viewer::draw_statistics() {
 }
 
 void Viewer::draw_help() {
-  ImGui::SetNextWindowPos(ImVec2(panel_width + 20, 40), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowPos(ImVec2(panel_width() + 20, 40), ImGuiCond_FirstUseEver);
   ImGui::Begin("Controls", &show_help_, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::TextUnformatted(
       "left / right arrow   previous / next stage\n"

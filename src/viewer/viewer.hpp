@@ -24,13 +24,15 @@ class Viewer {
   Viewer();
 
   // Reconstruction inputs; each starts a background job.
-  void open_example(const std::string& name);
+  // An example is reconstructed as its own kind (bordered or closed), or bordered if forced.
+  void open_example(const std::string& name, bool force_bordered = false);
   void open_file(const std::string& path);
   void rerun();  // same input, current options
   // Reconstructs the loaded input again with another method ("crust", "paper", ...), keeping
   // the camera; false, with a message, for an unknown method or nothing loaded.
   bool switch_method(const std::string& name);
   void set_bordered(bool bordered) { bordered_ = bordered; }
+  void set_merge_duplicates(bool merge) { merge_duplicates_ = merge; }
   void set_method(Method method) {
     const auto& names = method_names();
     method_ = static_cast<int>(
@@ -145,6 +147,7 @@ class Viewer {
   // Options for the next run.
   bool bordered_ = false;
   float box_factor_ = static_cast<float>(Options{}.box_factor);
+  bool merge_duplicates_ = false;
   float alpha_ = static_cast<float>(Options{}.alpha);
   int rule_ = 0;    // auto, skin, extraction
   int method_ = 0;  // index in method_names()
