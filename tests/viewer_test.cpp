@@ -8,6 +8,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <map>
 #include <utility>
 #include <vector>
 
@@ -73,9 +75,10 @@ TEST(Viewer, StepsThroughEveryStageIn2dAnd3d) {
     const render::Image image = render::read_png(shot);
     ASSERT_GT(image.width, panel_width + 100);
     EXPECT_GT(drawn_pixels(image), 500u) << "the stage draws nothing";
-    // The panel: ImGui's dark window fills the left strip below the menu bar.
+    // The panel: ImGui's dark window fills the left strip below the menu bar (a third at
+    // least: its headers are lighter bars).
     const std::size_t panel = std::size_t(panel_width - 20) * 200;
-    EXPECT_GT(dark_pixels(image, 10, 40, panel_width - 10, 240), panel / 2) << "no UI panel";
+    EXPECT_GT(dark_pixels(image, 10, 40, panel_width - 10, 240), panel / 3) << "no UI panel";
     if (previous) {
       EXPECT_GT(render::compare(*previous, image, 8).mismatch_ratio, 0.001)
           << "same picture as the stage before";
@@ -175,6 +178,42 @@ TEST(Viewer, TakesItsWindowSizeAsWidthByHeight) {
   EXPECT_EQ(image.height, 600);
   const int code = run(std::string(SCULPT_VIEW_EXECUTABLE) + " --size 1024 >/dev/null 2>&1");
   EXPECT_EQ(code, 2);  // a width alone is a usage error, in one line
+}
+
+// The share of the drawing area (right of the panel) covered by its most common colour other
+// than the white background: near 1 for a wall of one colour.
+double most_common_colour_share(const render::Image& image) {
+  std::map<std::uint32_t, std::size_t> counts;
+  std::size_t total = 0;
+  for (int y = 30; y < image.height; ++y) {
+    for (int x = panel_width + 1; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      const std::uint32_t colour = (std::uint32_t(p[0]) << 16) | (std::uint32_t(p[1]) << 8) | p[2];
+      ++total;
+      if (colour != 0xffffff) ++counts[colour];
+    }
+  }
+  std::size_t most = 0;
+  for (const auto& [colour, count] : counts) most = std::max(most, count);
+  return double(most) / double(total);
+}
+
+TEST(Viewer, ACutAwayShowsInsideTheDelaunayTriangulation) {
+  const std::string whole = testing::output_path("viewer-delaunay-whole.png"),
+                    cut = testing::output_path("viewer-delaunay-cut.png");
+  ASSERT_EQ(
+      run_viewer_script("cut-away", "example bumpy\nwait\nstage delaunay\nframes 2\nscreenshot " +
+                                        whole + "\nclip 0.5 30 60 0.06\nframes 2\nscreenshot " +
+                                        cut + "\nclip off\nclip 2 0 0\nquit\n"),
+      1);  // the last command is refused: a position beyond 1
+  const double whole_share = most_common_colour_share(render::read_png(whole));
+  const double cut_share = most_common_colour_share(render::read_png(cut));
+  // Whole, the edges are a wall of one colour; cut, the cells behind the plane are seen apart,
+  // their edges with space between them.
+  EXPECT_LT(cut_share, 0.5) << "whole: " << whole_share;
+  EXPECT_LT(cut_share, whole_share / 2) << "whole: " << whole_share;
+  std::cout << "cut-away: " << cut_share << " of the drawing area one colour, whole " << whole_share
+            << "\n";
 }
 
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {

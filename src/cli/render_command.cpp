@@ -44,6 +44,11 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
   render->add_option("--layers", shot.layers, "Only these layers (comma separated)")
       ->delimiter(',');
+  render->add_option("--clip", shot.clip,
+                     "3D: cut away what lies beyond a plane, POSITION,AZIMUTH,ELEVATION[,SLAB] (0 "
+                     "to 1 across the samples' box along the normal; the normal's angles in "
+                     "degrees; a slab's thickness as a share of the box), e.g. 0.5,0,90 shows "
+                     "the lower half");
   render->add_option("--camera", shot.camera_file, "Camera JSON (default: fit the samples)");
   render->add_option("--save-camera", shot.save_camera, "Write the camera used as JSON");
   render->add_option("--size", shot.size, "Image size WIDTHxHEIGHT")->capture_default_str();

@@ -25,6 +25,7 @@ struct Shot {
   double alpha = Options{}.alpha;
   std::string rule = "auto";
   std::vector<std::string> layers;
+  std::string clip;  // 3D cut-away "POSITION,AZIMUTH,ELEVATION" (scene::Clip); empty: none
   std::string camera_file, save_camera;
   std::string size = "800x800";
   bool wireframe = false, smooth = false, no_legend = false;

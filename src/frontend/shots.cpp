@@ -65,6 +65,7 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.merge_duplicates = j.value("merge_duplicates", false);
   shot.rule = j.value("rule", shot.rule);
   shot.layers = j.value("layers", std::vector<std::string>{});
+  shot.clip = j.value("clip", "");
   shot.camera_file = j.value("camera_file", "");
   shot.save_camera = j.value("save_camera", "");
   shot.size = j.value("size", shot.size);
@@ -104,6 +105,24 @@ scene::Request request_of(const Shot& shot) {
   if (shot.ball_every < 1) {
     throw io::Error("ball_every must be at least 1 (every k-th polar ball): " +
                     std::to_string(shot.ball_every));
+  }
+  if (!shot.clip.empty()) {
+    char comma1 = 0, comma2 = 0;
+    std::istringstream in(shot.clip);
+    auto& c = request.clip;
+    char comma3 = ',';
+    const bool read = in >> c.position >> comma1 >> c.azimuth >> comma2 >> c.elevation &&
+                      (!(in >> std::ws >> comma3) || (comma3 == ',' && in >> c.slab));
+    if (!read || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
+        !(c.position >= 0 && c.position <= 1) || !std::isfinite(c.azimuth) ||
+        !std::isfinite(c.elevation) || !(c.slab >= 0 && c.slab <= 1)) {
+      throw io::Error(
+          "the clip must be POSITION,AZIMUTH,ELEVATION[,SLAB]: a position 0 to 1 "
+          "across the samples' box, the plane's normal in degrees, a slab's "
+          "thickness 0 to 1, e.g. 0.5,0,90: '" +
+          shot.clip + "'");
+    }
+    request.clipped = true;
   }
   request.step = shot.step;
   request.focus_sample = shot.focus_sample;
@@ -166,11 +185,10 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
 
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   const std::string key = shot.input + "|" + shot.example + "|" +
-                          std::to_string(reconstructs_bordered(shot)) +
-                          "|" + std::to_string(shot.dimension) + "|" +
-                          std::to_string(shot.box_factor) + "|" + shot.rule + "|" + shot.method +
-                          "|" + std::to_string(shot.alpha) + "|" +
-                          std::to_string(shot.merge_duplicates);
+                          std::to_string(reconstructs_bordered(shot)) + "|" +
+                          std::to_string(shot.dimension) + "|" + std::to_string(shot.box_factor) +
+                          "|" + shot.rule + "|" + shot.method + "|" + std::to_string(shot.alpha) +
+                          "|" + std::to_string(shot.merge_duplicates);
   auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
   const frontend::Input input =

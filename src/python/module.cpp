@@ -2,12 +2,15 @@
 // what users import). It calls the same core as the command line: methods and stages by the same
 // names, the same one-line messages for bad input, the same statistics (statistics_json).
 // Reconstruction and rendering release the GIL; the progress callback takes it back briefly.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <pybind11/functional.h>
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <array>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -546,7 +549,8 @@ next progress report.)");
       "render",
       [](const Result& result, const std::string& stage, const py::object& size, long step,
          int focus_sample, int focus_pole, std::vector<std::string> layers, bool wireframe,
-         bool smooth, bool legend, double zoom, int ball_every, double yaw, double pitch) {
+         bool smooth, bool legend, double zoom, int ball_every, double yaw, double pitch,
+         std::optional<std::vector<double>> clip) {
         frontend::Shot shot;
         shot.stage = stage;
         shot.size = size_of(size);
@@ -561,6 +565,11 @@ next progress report.)");
         shot.ball_every = ball_every;
         shot.yaw = yaw;
         shot.pitch = pitch;
+        if (clip) {
+          if (clip->size() != 3 && clip->size() != 4)
+            throw Input_error("clip is (position, azimuth, elevation) or with a slab, 4 numbers");
+          shot.clip = fmt::format("{}", fmt::join(*clip, ","));
+        }
         return render_stage(result, shot);
       },
       py::arg("result"), py::arg("stage") = shot_defaults.stage,
@@ -571,7 +580,7 @@ next progress report.)");
       py::arg("wireframe") = shot_defaults.wireframe, py::arg("smooth") = shot_defaults.smooth,
       py::arg("legend") = !shot_defaults.no_legend, py::arg("zoom") = shot_defaults.zoom,
       py::arg("ball_every") = shot_defaults.ball_every, py::arg("yaw") = shot_defaults.yaw,
-      py::arg("pitch") = shot_defaults.pitch,
+      py::arg("pitch") = shot_defaults.pitch, py::arg("clip") = py::none(),
       R"(A picture of a stage, as `sculpt render` and the viewer draw it: an (height, width, 4)
 uint8 RGBA array (matplotlib's imshow shows it).
 
@@ -586,7 +595,11 @@ wireframe, smooth   surfaces: draw the edges; smooth shading
 legend        the legend and the title
 zoom          of the fitted camera: below 1 zooms in
 ball_every    draw the polar balls of every k-th pole only
-yaw, pitch    3D: the direction the camera looks from, in radians)");
+yaw, pitch    3D: the direction the camera looks from, in radians
+clip          3D: (position, azimuth, elevation[, slab]) cuts away what lies beyond a plane:
+              position 0 to 1 across the samples' box along its normal, the normal's angles in
+              degrees, and a slab (a share of the box) keeps only that thickness before it;
+              (0.5, 0, 90) shows the lower half of the Delaunay cells, whole)");
 
   m.def("write", &write_result, py::arg("result"), py::arg("path"), py::arg("solid") = py::none(),
         py::arg("ascii") = false,

@@ -66,6 +66,15 @@ const char* stage_id(Stage stage);     // "delaunay", "outer-concave", ...
 const char* stage_title(Stage stage);  // "Delaunay triangulation DT(S ∪ BBV)", ...
 bool parse_stage(const std::string& id, Stage& stage);
 
+// A cut-away plane for 3D stages (clipping.hpp): where it crosses the samples' box (0 at one
+// end, 1 at the other, along its normal) and how it is tilted.
+struct Clip {
+  float position = 0.5f;  // 0..1 across the samples' box along the normal; 1 keeps everything
+  float azimuth = 0;      // the normal's direction about z, in degrees (0: +x)
+  float elevation = 0;    // the normal's angle above the xy plane, in degrees (90: +z)
+  float slab = 0;  // 0: all before the plane; else only a slab this thick (share of the box)
+};
+
 struct Request {
   Stage stage = Stage::surface;
   long step = -1;          // propagation: how many labelling events have happened; -1 = all
@@ -75,6 +84,8 @@ struct Request {
   bool smooth = false;     // surface: smooth instead of flat shading
   int ball_every = 1;  // polar balls: draw those of every k-th pole only (legible medial circles)
   std::vector<std::string> layers;  // only these layer ids; empty = the stage's own choice
+  bool clipped = false;  // 3D: leave out what lies beyond the plane `clip` (clipping.hpp)
+  Clip clip;
 };
 
 struct Scene {

@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "clipping.hpp"
 #include "core/facet_orientation.hpp"
 #include "palette.hpp"
 #include "scene.hpp"
@@ -604,7 +605,9 @@ Scene build_scene(const Reconstruction<2>& reconstruction, const Request& reques
 }
 
 Scene build_scene(const Reconstruction<3>& reconstruction, const Request& request) {
-  return Scene_builder<3>(reconstruction, request).build();
+  Scene scene = Scene_builder<3>(reconstruction, request).build();
+  if (request.clipped) clip(scene, request.clip);
+  return scene;
 }
 
 std::vector<std::string> layer_ids(const Scene& scene) {

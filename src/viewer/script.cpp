@@ -106,7 +106,7 @@ std::string Script::before_frame(Viewer& viewer) {
     const auto done = [&](bool succeeded) {
       if (!succeeded) fail("'" + line + "': " + viewer.message());
     };
-    if (!extra.empty() && command != "export") {
+    if (!extra.empty() && command != "export" && command != "clip") {
       fail("'" + line + "': one argument expected");
       continue;
     }
@@ -129,6 +129,23 @@ std::string Script::before_frame(Viewer& viewer) {
     } else if (command == "step") {
       if (const auto events = count("a number of events (or -1 for all)", -1, 1L << 40)) {
         viewer.set_step(*events);
+      }
+    } else if (command == "clip") {
+      // clip POSITION AZIMUTH ELEVATION, or clip off
+      if (argument == "off") {
+        viewer.clear_clip();
+      } else {
+        scene::Clip clip;
+        std::istringstream numbers(argument + " " + extra);
+        numbers >> clip.position >> clip.azimuth;
+        if (numbers && (words >> clip.elevation) && clip.position >= 0 && clip.position <= 1) {
+          if (!(words >> clip.slab)) clip.slab = 0;  // optional
+          viewer.set_clip(clip);
+        } else {
+          fail("'" + line +
+               "': expected clip POSITION AZIMUTH ELEVATION [SLAB] (position 0 to 1, angles "
+               "in degrees, slab a share of the box) or clip off");
+        }
       }
     } else if (command == "pick-sample") {
       if (const auto sample = count("a sample index (or -1)", -1, 1L << 31)) {

@@ -9,6 +9,7 @@
 //   stage poles         show a stage (next / previous step through them)
 //   method crust        reconstruct the loaded input again with another method
 //   step 25             propagation: show the first 25 labelling events
+//   clip 0.5 30 60      3D: cut away beyond a plane (position 0..1, azimuth, elevation); clip off
 //   pick-sample 10      select a sample (pick-pole N: a pole)
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included

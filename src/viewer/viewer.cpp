@@ -229,6 +229,34 @@ std::size_t pole_count(const Any_reconstruction& r) {
 int dimension_of(const Any_reconstruction& r) {
   return std::visit([](const auto& x) { return x.stats.dimension; }, r);
 }
+}  // namespace
+
+// A cut-away plane for the 3D stages that fill space: the cells in front of it go, so those
+// behind are seen whole, in section.
+void Viewer::draw_clip_controls() {
+  if (!ImGui::CollapsingHeader("Cut away (3D)")) return;
+  bool changed = ImGui::Checkbox("cut at a plane", &request_.clipped);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Leave out every cell, edge, face and ball whose centre lies beyond the "
+        "plane, to see inside the Delaunay triangulation, the Voronoi diagram or "
+        "the solid");
+  if (request_.clipped) {
+    auto& clip = request_.clip;
+    changed |= ImGui::SliderFloat("position", &clip.position, 0.0f, 1.0f, "%.2f");
+    changed |= ImGui::SliderFloat("azimuth", &clip.azimuth, -180.0f, 180.0f, "%.0f deg");
+    changed |= ImGui::SliderFloat("elevation", &clip.elevation, -90.0f, 90.0f, "%.0f deg");
+    changed |= ImGui::SliderFloat("slab", &clip.slab, 0.0f, 0.5f, clip.slab > 0 ? "%.2f" : "off");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip(
+          "Keep only a slab this thick before the plane (a share of the box): a "
+          "section of the cells instead of a half");
+  }
+  if (changed) scene_dirty_ = true;
+}
+
+namespace {
+
 // The paper's cube is a square in the plane.
 const char* reason_name(Label_reason reason, int dimension) {
   return dimension == 2 && reason == Label_reason::inscribed_cube ? "inscribed square"
@@ -953,6 +981,7 @@ void Viewer::draw_panel(int height) {
   }
   if (reconstruction_) {
     draw_stepper();
+    if (dimension_of(*reconstruction_) == 3) draw_clip_controls();
     if (request_.stage == scene::Stage::propagation) draw_propagation_controls();
     draw_pseudo_code();
     draw_layers();

@@ -45,6 +45,16 @@ class Viewer {
   bool set_stage(scene::Stage stage);  // false, with a message, if the method has no such stage
   void step_stage(int delta);
   void set_step(long events);  // propagation events shown; -1 = all
+  // 3D: cut away what lies beyond a plane (scene::Clip), or show everything again.
+  void set_clip(const scene::Clip& clip) {
+    request_.clipped = true;
+    request_.clip = clip;
+    scene_dirty_ = true;
+  }
+  void clear_clip() {
+    request_.clipped = false;
+    scene_dirty_ = true;
+  }
   // Each returns false, with a message, when the shown reconstruction has no such sample or pole.
   bool pick_sample(int sample) { return pick(sample, true); }  // -1 clears the selection
   bool pick_pole(int pole) { return pick(pole, false); }
@@ -118,6 +128,7 @@ class Viewer {
   void draw_pseudo_code();
   void draw_statistics();
   void draw_layers();
+  void draw_clip_controls();
   void draw_selection();
   void draw_help();
 

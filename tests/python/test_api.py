@@ -244,6 +244,12 @@ def test_pictures_are_the_command_lines(star, sculpt_cli, tmp_path):
     image = sculpt.render(star, stage="poles", size=(320, 240))
     assert image.shape == (240, 320, 4) and image.dtype == np.uint8
     assert np.abs(image.astype(int) - expected).max() <= 2
+    bumpy = sculpt.reconstruct(sculpt.example("bumpy"))
+    whole = sculpt.render(bumpy, stage="delaunay", size=120)
+    cut = sculpt.render(bumpy, stage="delaunay", size=120, clip=(0.5, 0, 90))
+    assert np.count_nonzero(np.any(cut != whole, axis=2)) > 1000
+    with pytest.raises(sculpt.InputError, match="the clip must be"):
+        sculpt.render(bumpy, stage="delaunay", clip=(1.5, 0, 0))
     other = sculpt.render(star, stage="surface", size=(320, 240))
     assert np.count_nonzero(np.any(other != image, axis=2)) > 1000
     # from another thread too (the GL context follows the caller)

@@ -1,0 +1,17 @@
+// A cut-away for the 3D stages that fill space (the Delaunay triangulations, the Voronoi
+// diagram, the solid): everything whose centre lies beyond a plane is left out, so whole cells
+// are seen in section, as mesh viewers show tetrahedra (scene::Clip says where the plane is),
+// and so is what reaches far outside the samples' box (edges to the box corners).
+#pragma once
+
+#include "scene/scene.hpp"
+
+namespace sculpt::scene {
+
+// Leaves out the points, segments, triangles and balls whose centre lies beyond the plane (on
+// the side its normal points to) or, with a slab, farther before it than the slab, or with a vertex
+// (a ball: its centre) more than 5% of the box's diagonal outside the samples' box. Layers keep
+// their ids: legends and toggles stay.
+void clip(Scene& scene, const Clip& clip);
+
+}  // namespace sculpt::scene
