@@ -179,6 +179,7 @@ class Comparison {
         example ? "" : source[1], example ? source[1] : "", 0, args_.inputs.merge_duplicates);
     const std::optional<Reference> reference = reference_of(input, given_reference_);
     if (!reference && args_.pictures.empty()) return;  // nothing more to measure
+    samples_only_.reset();                             // a new input
     if (given_reference_ && reference) {
       const Statistics own = facet_topology(reference->points.size(), reference->triangles);
       row["delaunay_only"]["reference"] = {{"triangles", reference->triangles.size()},
@@ -211,11 +212,7 @@ class Comparison {
       Options options;
       options.method = parsed;
       options.kind = shot.bordered ? Surface_kind::bordered : Surface_kind::closed;
-      const frontend::Any_reconstruction result = std::visit(
-          [&](const auto& points) -> frontend::Any_reconstruction {
-            return reconstruct(points, options);
-          },
-          input.points);
+      const frontend::Any_reconstruction result = frontend::reconstruct_input(input, options);
       const Statistics& stats =
           std::visit([](const auto& r) -> const Statistics& { return r.stats; }, result);
       if (reference) {
@@ -243,15 +240,16 @@ class Comparison {
     if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
     return frontend::draw_shot(*renderer_, shot, result).image;
   }
+  // A tile of the samples alone, where a method does not apply: drawn from one reconstruction
+  // per input, made only for them.
   render::Image draw(const frontend::Shot& shot, const frontend::Input& input) {
     if (args_.pictures.empty()) return {};
-    Options options;
-    options.keep_triangulations = false;
-    return draw(shot, std::visit(
-                          [&](const auto& points) -> frontend::Any_reconstruction {
-                            return reconstruct(points, options);
-                          },
-                          input.points));
+    if (!samples_only_) {
+      Options options;
+      options.keep_triangulations = false;
+      samples_only_ = frontend::reconstruct_input(input, options);
+    }
+    return draw(shot, *samples_only_);
   }
 
   void add_grid_row(const std::vector<render::Image>& tiles) {
@@ -272,6 +270,7 @@ class Comparison {
   std::vector<nlohmann::json> rows_;
   std::optional<Reference> given_reference_;  // --reference
   std::unique_ptr<render::Headless_renderer> renderer_;
+  std::optional<frontend::Any_reconstruction> samples_only_;  // this input's, for draw()
   render::Image grid_;
 };
 

@@ -161,6 +161,21 @@ inline Pseudo_code nn_crust_pseudo_code() {
   return code;
 }
 
+// The manifold extraction the crust and the co-cone share (extract_manifold in
+// src/methods/extraction/manifold_extraction.hpp), appended; returns its first line. Its last
+// line makes the surface.
+inline int add_manifold_extraction_lines(Pseudo_code& code) {
+  const int first = int(code.lines.size());
+  code.lines.insert(code.lines.end(), {
+                                          "prune t on an edge whose triangles fit in",
+                                          "    90 deg (a sharp fold) or",
+                                          "    with an edge of its own (only fins if",
+                                          "    that leaves a sample bare), repeatedly",
+                                          "surface <- outer boundary of T, walked",
+                                      });
+  return first;
+}
+
 // The crust for surfaces (src/methods/crust/surface_crust.hpp).
 inline Pseudo_code surface_crust_pseudo_code() {
   using scene::Stage;
@@ -174,16 +189,13 @@ inline Pseudo_code surface_crust_pseudo_code() {
       "T <- triangles of DT' between samples",
       "drop t if its normal leans from p+(s)-s",
       "    > 45 deg at its widest corner, > 67.5 else",
-      "prune t on an edge whose triangles fit in",
-      "    90 deg (a sharp fold) or",
-      "    with an edge of its own (only fins if",
-      "    that leaves a sample bare), repeatedly",
-      "surface <- outer boundary of T, walked",
   };
   // clang-format on
+  const int pruning = add_manifold_extraction_lines(code);
   code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert(
-      {{Stage::crust_delaunay, 3}, {Stage::candidates, 7}, {Stage::surface, 11}});
+  code.line_of_stage.insert({{Stage::crust_delaunay, 3},
+                             {Stage::candidates, pruning},
+                             {Stage::surface, int(code.lines.size()) - 1}});
   return code;
 }
 
@@ -199,14 +211,10 @@ inline Pseudo_code cocone_pseudo_code() {
       "                 of the plane normal to v(s)",
       "T <- triangles t of DT between samples whose",
       "    Voronoi edge meets cocone(s), s in t",
-      "prune t on an edge whose triangles fit in",
-      "    90 deg (a sharp fold) or",
-      "    with an edge of its own (only fins if",
-      "    that leaves a sample bare), repeatedly",
-      "surface <- outer boundary of T, walked",
   };
+  add_manifold_extraction_lines(code);
   code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::candidates, 5}, {Stage::surface, 11}});
+  code.line_of_stage.insert({{Stage::candidates, 5}, {Stage::surface, int(code.lines.size()) - 1}});
   return code;
 }
 

@@ -183,6 +183,12 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   return std::move(picture.scene);
 }
 
+Any_reconstruction reconstruct_input(const Input& input, const Options& options) {
+  return std::visit(
+      [&](const auto& points) -> Any_reconstruction { return reconstruct(points, options); },
+      input.points);
+}
+
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   const std::string key = shot.input + "|" + shot.example + "|" +
                           std::to_string(reconstructs_bordered(shot)) + "|" +
@@ -206,9 +212,7 @@ const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   options.kind = reconstructs_bordered(shot) ? Surface_kind::bordered : Surface_kind::closed;
   options.box_factor = shot.box_factor;
   options.alpha = shot.alpha;
-  Any_reconstruction result = std::visit(
-      [&](const auto& points) -> Any_reconstruction { return reconstruct(points, options); },
-      input.points);
+  Any_reconstruction result = reconstruct_input(input, options);
   return cache_.emplace(key, std::move(result)).first->second;
 }
 

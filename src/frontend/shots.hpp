@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "frontend/input.hpp"
 #include "frontend/shot.hpp"
 #include "render/headless.hpp"
 #include "scene/scene.hpp"
@@ -25,6 +26,9 @@ nlohmann::json read_json(const std::string& path);
 Shot shot_from_json(const nlohmann::json& json);
 
 using Any_reconstruction = std::variant<Reconstruction<2>, Reconstruction<3>>;
+
+// An input's points reconstructed, in their dimension.
+Any_reconstruction reconstruct_input(const Input& input, const Options& options);
 
 // A picture of a stage of a reconstruction as a shot describes it (the shot's input, method and
 // output are not read): the scene drawn, the camera, the image.
