@@ -67,6 +67,8 @@ enum class Method {
              // co-cones of their three samples, pruned and walked (surfaces)
   advancing_front,  // CGAL's Advancing Front Surface Reconstruction (Cohen-Steiner & Da 2004)
   alpha_shape,      // CGAL's alpha shapes: the smallest alpha giving one solid with every sample
+  power_crust,      // Amenta, Choi & Kolluri 2001: the power diagram faces between the cells of
+                    // inner and outer poles (does not interpolate: vertices of its own)
 };
 
 // Which facets of DT(S ∪ OUP) make the surface.
@@ -292,6 +294,10 @@ struct Statistics {
   std::size_t pruned_facets = 0;     // of those, removed at a sharp edge
   bool rims_kept = false;            // the pruning kept the rims of holes (Candidates_stage)
   double alpha = 0;                  // alpha-shape: the radius chosen, in the input's units
+  // A method that does not interpolate (the power crust): the vertices of its result, which are
+  // not samples; 0 when the result's vertices are the samples.
+  std::size_t surface_vertices = 0;
+  std::size_t unbounded_power_faces = 0;  // power crust: inner-outer faces reaching infinity
   std::size_t facets = 0;            // triangles (3D) or edges (2D) of the result
   // Of the result's ridges (edges of the surface in 3D, vertices of the curve in 2D):
   std::size_t boundary_ridges = 0;        // on one facet only: border edges, or curve end points
@@ -325,7 +331,16 @@ struct Reconstruction {
   Candidates_stage<D> candidates;       // 6d (crust and co-cone in 3D)
   std::vector<Cell<D>> solid;           // 7: cells of stage 6 whose vertices are all samples
   std::vector<Facet<D>> surface;        // 8: oriented facets; closed: normals point outward
+  // A method that does not interpolate (the power crust) makes vertices of its own: then the
+  // surface's facets index these instead of the samples.
+  std::vector<Point<D>> surface_vertices;
   Statistics stats;
+
+  bool interpolates() const { return surface_vertices.empty(); }
+  // The points the surface's facets index: the samples (the first sites), or its own vertices.
+  const std::vector<Point<D>>& surface_points() const {
+    return interpolates() ? sites : surface_vertices;
+  }
 
   std::size_t sample_count() const {
     return sites.size() - box_corner_count - insertion.inserted_poles.size();
@@ -374,6 +389,8 @@ const std::vector<const char*>& method_names();
 const char* describe(Method method);  // a few words for menus and help
 // Whether a method works in this dimension (the NN-crust reconstructs curves only, the co-cone
 // surfaces only).
+// Whether a method's result passes through the samples (all but the power crust).
+bool interpolates(Method method);
 bool reconstructs_in(Method method, int dimension);
 // Whether a method labels poles and sculpts a solid (paper, robust), or only reads the
 // triangulation and the poles (the crusts, the co-cone).

@@ -110,9 +110,12 @@ class Comparison {
       }
       for (auto& [method, s] : row["methods"].items()) {
         if (s.contains("error")) continue;
-        // Interpolating methods: the result's vertices are the samples on it.
+        // Interpolating methods: the result's vertices are the samples on it; the power crust
+        // counts its own.
+        const std::size_t own = s.value("surface_vertices", std::size_t{0});
         const std::size_t vertices =
-            s["samples"].get<std::size_t>() - s["unused_samples"].get<std::size_t>();
+            own > 0 ? own
+                    : s["samples"].get<std::size_t>() - s["unused_samples"].get<std::size_t>();
         s["output_vertices"] = vertices;
         s["output_vertices_per_sample"] = double(vertices) / s["samples"].get<double>();
       }
@@ -219,7 +222,8 @@ class Comparison {
         const auto& r = std::get<Reconstruction<3>>(result);
         const std::vector<Point<3>> samples(r.sites.begin(), r.sites.begin() + r.sample_count());
         const double distance =
-            hausdorff_distance(samples, r.surface, reference->points, reference->triangles);
+            hausdorff_distance(r.interpolates() ? samples : r.surface_vertices, r.surface,
+                               reference->points, reference->triangles);
         measured["hausdorff"] = std::isfinite(distance) ? nlohmann::json(distance) : nullptr;
         measured["hausdorff_per_diagonal"] =
             std::isfinite(distance) ? nlohmann::json(distance / reference->diagonal) : nullptr;

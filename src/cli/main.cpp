@@ -121,10 +121,12 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();
   io::Output_set outputs;
+  // The samples as read, or the vertices of a result that does not interpolate.
+  const std::vector<Point<D>>& vertices = result.interpolates() ? samples : result.surface_vertices;
   if constexpr (D == 3) {
-    io::write_surface(outputs.stage(args.output), samples, result.surface, args.ascii);
+    io::write_surface(outputs.stage(args.output), vertices, result.surface, args.ascii);
   } else {
-    io::write_curve(outputs.stage(args.output), samples, result.surface);
+    io::write_curve(outputs.stage(args.output), vertices, result.surface);
   }
   if (!args.solid.empty()) io::write_solid<D>(outputs.stage(args.solid), samples, result.solid);
   run.write_seconds = seconds_since(start);

@@ -65,7 +65,13 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   row(three ? "boundary loops" : "open curves", stats.boundary_loops);
   row("components", stats.components);
   row("Euler characteristic", stats.euler_characteristic);
-  row("unused samples", stats.unused_samples);
+  if (stats.surface_vertices > 0) {
+    row("vertices (its own)", fmt::format("{} ({:.1f} per sample)", stats.surface_vertices,
+                                          double(stats.surface_vertices) / double(stats.samples)));
+    row("faces reaching infinity", stats.unbounded_power_faces);
+  } else {
+    row("unused samples", stats.unused_samples);
+  }
 }
 
 nlohmann::json report_json(const Statistics& stats, const Run_description& run) {

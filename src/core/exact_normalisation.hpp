@@ -121,6 +121,7 @@ void undo_normalisation(Reconstruction<D>& result, const Normalisation<D>& n,
     pole.radius = std::ldexp(pole.radius, -n.exponent);
   }
   for (auto& vertex : result.crust.voronoi_vertices) vertex = n.undo(vertex);
+  for (auto& vertex : result.surface_vertices) vertex = n.undo(vertex);
 }
 
 }  // namespace sculpt

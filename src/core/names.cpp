@@ -49,6 +49,8 @@ const char* to_string(Method method) {
       return "advancing-front";
     case Method::alpha_shape:
       return "alpha-shape";
+    case Method::power_crust:
+      return "power-crust";
   }
   return "?";
 }
@@ -57,7 +59,7 @@ const std::vector<const char*>& method_names() {
   static const std::vector<const char*> names = {
       to_string(Options{}.method),   to_string(Method::paper),  to_string(Method::crust),
       to_string(Method::nn_crust),   to_string(Method::cocone), to_string(Method::advancing_front),
-      to_string(Method::alpha_shape)};
+      to_string(Method::alpha_shape), to_string(Method::power_crust)};
   return names;
 }
 
@@ -77,12 +79,18 @@ const char* describe(Method method) {
       return "CGAL's Advancing Front of Cohen-Steiner & Da (surfaces)";
     case Method::alpha_shape:
       return "CGAL's alpha shapes, the smallest alpha giving one solid (surfaces)";
+    case Method::power_crust:
+      return "the power crust of Amenta, Choi & Kolluri (not interpolating)";
   }
   return "?";
 }
 
 bool sculpts(Method method) {
   return method == Method::paper || method == Method::robust;
+}
+
+bool interpolates(Method method) {
+  return method != Method::power_crust;
 }
 
 bool builds_solid(Method method) {
@@ -100,7 +108,7 @@ bool reconstructs_in(Method method, int dimension) {
 
 bool parse_method(const std::string& name, Method& method) {
   for (Method m : {Method::paper, Method::robust, Method::crust, Method::nn_crust, Method::cocone,
-                   Method::advancing_front, Method::alpha_shape}) {
+                   Method::advancing_front, Method::alpha_shape, Method::power_crust}) {
     if (name == to_string(m)) {
       method = m;
       return true;

@@ -14,6 +14,7 @@
 #include "../methods/crust/nn_crust.hpp"
 #include "../methods/crust/surface_crust.hpp"
 #include "../methods/paper/paper_method.hpp"
+#include "../methods/power_crust/power_crust_method.hpp"
 #include "../methods/robust/robust_method.hpp"
 #include "delaunay.hpp"
 #include "exact_normalisation.hpp"
@@ -41,9 +42,9 @@ Reconstruction<Traits::dimension> reconstruct_with(
     throw Input_error(std::string("the method ") + to_string(options.method) +
                       (Traits::dimension == 3
                            ? " reconstructs curves (2D points) only; for surfaces use robust, "
-                             "paper, crust, cocone, advancing-front or alpha-shape"
+                             "paper, crust, cocone, advancing-front, alpha-shape or power-crust"
                            : " reconstructs surfaces (3D points) only; for curves use robust, "
-                             "paper, crust or nn-crust"));
+                             "paper, crust, nn-crust or power-crust"));
   }
   check_input<Traits>(samples, options);
   const Normalisation<Traits::dimension> normalisation =
@@ -96,10 +97,17 @@ Reconstruction<Traits::dimension> reconstruct_with(
     case Method::alpha_shape:
       if constexpr (Traits::dimension == 3) run_alpha_shape_method<Traits>(result, clock);
       break;
+    case Method::power_crust:
+      run_power_crust_method<Traits>(result, clock);
+      break;
   }
 
   clock.start("topology");
-  measure_topology<Traits::dimension>(samples.size(), result.surface, result.stats);
+  result.stats.surface_vertices = result.surface_vertices.size();
+  // A result that does not interpolate is measured on its own vertices (all of them used).
+  measure_topology<Traits::dimension>(
+      result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
+      result.stats);
   undo_normalisation<Traits::dimension>(result, normalisation, samples);
   clock.finish();
   return result;

@@ -42,7 +42,9 @@ Verdict verdict(const Statistics& s) {
                               : plural(s.boundary_ridges, "curve end", "curve ends"));
   }
   if (s.unused_samples > 0) {
-    defects.push_back(plural(s.unused_samples, "sample", "samples") + " not on it");
+    defects.push_back(s.surface_vertices > 0
+                          ? plural(s.unused_samples, "vertex", "vertices") + " on no face"
+                          : plural(s.unused_samples, "sample", "samples") + " not on it");
   }
 
   const std::string shape =
@@ -64,7 +66,11 @@ Verdict verdict(const Statistics& s) {
           fmt::format(" with {}", surface ? plural(s.boundary_loops, "border loop", "border loops")
                                           : plural(s.boundary_loops, "open curve", "open curves"));
     }
-    v.line = fmt::format("{}: {}, all {} samples on it", what, shape, s.samples);
+    // A result that does not interpolate passes near the samples, not through them.
+    v.line = s.surface_vertices > 0
+                 ? fmt::format("{}: {}, {} vertices of its own for {} samples", what, shape,
+                               s.surface_vertices, s.samples)
+                 : fmt::format("{}: {}, all {} samples on it", what, shape, s.samples);
   } else {
     v.line = fmt::format("NOT a {}: {}; {}", wanted, join(defects), shape);
   }

@@ -251,6 +251,36 @@ inline Pseudo_code alpha_shape_pseudo_code() {
   return code;
 }
 
+// The power crust of Amenta, Choi and Kolluri (src/methods/power_crust/power_crust_method.hpp).
+inline Pseudo_code power_crust_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",
+      "OSP <- convex poles: outer, weight 1",
+      "heap <- OSP   # largest |outer - inner| first",
+      "while heap not empty:",
+      "    p <- most confident pole; label it",
+      "    for q whose ball meets B(p) at s:",
+      "        ev(q, label p) max= cos(p s q)",
+      "    for q paired with p (antipodal):",
+      "        ev(q, other side) max= -cos(p s q)",
+      "PD <- power diagram of poles, weight r(p)^2",
+      "crust <- faces of PD between the cells of",
+      "    an inner and an outer pole",
+  };
+  code.line_of_stage = common_stage_lines(2);
+  code.line_of_stage.insert({{Stage::seeds, 3}, {Stage::surface, 12}});
+  code.line_of_reason = {{Label_reason::convex_seed, 3},
+                         {Label_reason::ball_overlap, 8},
+                         {Label_reason::pairing, 10},
+                         {Label_reason::inscribed_cube, 8}};
+  code.before_any_event = 4;
+  return code;
+}
+
 inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface_kind::closed,
                                       int dimension = 3) {
   static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code(),
@@ -259,7 +289,8 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
                            surface_crust = surface_crust_pseudo_code(),
                            cocone = cocone_pseudo_code(),
                            advancing_front = advancing_front_pseudo_code(),
-                           alpha_shape = alpha_shape_pseudo_code();
+                           alpha_shape = alpha_shape_pseudo_code(),
+                           power_crust = power_crust_pseudo_code();
   switch (method) {
     case Method::paper:
       return paper;
@@ -273,6 +304,8 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
       return alpha_shape;
     case Method::nn_crust:
       return nn_crust;
+    case Method::power_crust:
+      return power_crust;
     case Method::robust:
       break;
   }

@@ -42,6 +42,8 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"pruned_facets", stats.pruned_facets},
       {"rims_kept", stats.rims_kept},
       {"alpha", stats.alpha},
+      {"surface_vertices", stats.surface_vertices},
+      {"unbounded_power_faces", stats.unbounded_power_faces},
       {"facets", stats.facets},
       {"boundary_ridges", stats.boundary_ridges},
       {"non_manifold_ridges", stats.non_manifold_ridges},

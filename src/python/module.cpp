@@ -229,10 +229,11 @@ void write_result(const Result& result, const std::filesystem::path& path_name,
     io::check_output_folder(path);
     io::check_output_folder(solid);
     io::Output_set outputs;
+    const std::vector<Point<D>>& vertices = r.interpolates() ? samples : r.surface_vertices;
     if constexpr (D == 3) {
-      io::write_surface(outputs.stage(path), samples, r.surface, ascii);
+      io::write_surface(outputs.stage(path), vertices, r.surface, ascii);
     } else {
-      io::write_curve(outputs.stage(path), samples, r.surface);
+      io::write_curve(outputs.stage(path), vertices, r.surface);
     }
     if (!solid.empty()) io::write_solid<D>(outputs.stage(solid), samples, r.solid);
     outputs.commit();
@@ -471,7 +472,16 @@ PYBIND11_MODULE(_sculpt, m) {
                          [&](const auto& r) { return rows_view(self, r.surface); });
           },
           "The result: triangles (f, 3) of a surface or edges (f, 2) of a curve, as int32 indices "
-          "of samples; closed surfaces face outward.")
+          "of samples (of surface_vertices for the power crust, which does not interpolate); "
+          "closed surfaces face outward, closed curves run counterclockwise.")
+      .def_property_readonly(
+          "surface_vertices",
+          [](py::object self) {
+            return visit(self.cast<const Result&>(),
+                         [&](const auto& r) { return rows_view(self, r.surface_points()); });
+          },
+          "The points the surface's indices refer to, (v, d): the sites (whose first rows are "
+          "the samples) for an interpolating method, the power crust's own vertices otherwise.")
       .def_property_readonly(
           "solid",
           [](py::object self) {

@@ -451,11 +451,13 @@ class Scene_builder {
   }
 
   void surface() {
+    // The samples, or the vertices of a result that does not interpolate (the power crust).
+    const auto& points = r_.surface_points();
     if constexpr (D == 2) {
       Layer& layer = add("curve", "reconstructed curve", Primitive::lines, palette::curve, 3.0f);
       for (const auto& edge : r_.surface) {
-        layer.positions.push_back(vec(r_.sites[edge[0]]));
-        layer.positions.push_back(vec(r_.sites[edge[1]]));
+        layer.positions.push_back(vec(points[edge[0]]));
+        layer.positions.push_back(vec(points[edge[1]]));
       }
       borders_and_defects();
     } else {
@@ -463,17 +465,17 @@ class Scene_builder {
           add("surface", "reconstructed surface", Primitive::triangles, palette::surface, 1.0f);
       layer.lit = true;
       for (const auto& t : r_.surface) {
-        for (int v : t) layer.positions.push_back(vec(r_.sites[v]));
+        for (int v : t) layer.positions.push_back(vec(points[v]));
       }
-      if (request_.smooth) layer.normals = vertex_normals(r_.sites, r_.surface, n_);
+      if (request_.smooth) layer.normals = vertex_normals(points, r_.surface, static_cast<int>(points.size()));
       borders_and_defects();
       if (request_.wireframe) {
         Layer& wire = add("wireframe", "edges", Primitive::lines, palette::wireframe, 1.0f);
         wire.in_legend = false;
         for (const auto& t : r_.surface) {
           for (int j = 0; j < 3; ++j) {
-            wire.positions.push_back(vec(r_.sites[t[j]]));
-            wire.positions.push_back(vec(r_.sites[t[(j + 1) % 3]]));
+            wire.positions.push_back(vec(points[t[j]]));
+            wire.positions.push_back(vec(points[t[(j + 1) % 3]]));
           }
         }
       }
@@ -564,7 +566,7 @@ class Scene_builder {
       if (!layer) continue;
       for (const auto& [ridge, facets] : facets_on) {
         if (border ? facets != 1 : facets <= 2) continue;
-        for (int v : ridge) layer->positions.push_back(vec(r_.sites[v]));
+        for (int v : ridge) layer->positions.push_back(vec(r_.surface_points()[v]));
       }
     }
   }

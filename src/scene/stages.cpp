@@ -32,7 +32,13 @@ const std::vector<Stage>& stages_of(Method method, int dimension) {
   static const std::vector<Stage> advancing_front = nn_crust;
   static const std::vector<Stage> alpha_shape = {Stage::samples, Stage::delaunay, Stage::solid,
                                                  Stage::surface};
+  static const std::vector<Stage> power_crust = {Stage::samples, Stage::delaunay,
+                                                 Stage::voronoi, Stage::poles,
+                                                 Stage::seeds,   Stage::propagation,
+                                                 Stage::surface};
   switch (method) {
+    case Method::power_crust:
+      return power_crust;
     case Method::crust:
       return dimension == 2 ? curve_crust : surface_crust;
     case Method::cocone:

@@ -229,4 +229,11 @@ class Confidence_labelling {
   std::priority_queue<Entry> queue_;
 };
 
+// Stage 4 of the robust method and of the power crust: every pole labelled, seeds first.
+template <int D>
+void label_poles_by_confidence(Reconstruction<D>& result, const Stage_clock& clock) {
+  const Pole_evidence evidence = pole_evidence(result);
+  Confidence_labelling<D>(result, evidence, clock).run(result.seeds);
+}
+
 }  // namespace sculpt

@@ -27,10 +27,7 @@ template <class Traits>
 void run_robust_method(typename Traits::Triangulation& triangulation,
                        Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
   clock.start("labelling");
-  {
-    const Pole_evidence evidence = pole_evidence(result);
-    Confidence_labelling<Traits::dimension>(result, evidence, clock).run(result.seeds);
-  }
+  label_poles_by_confidence(result, clock);
   count_labels(result);
 
   if constexpr (Traits::dimension == 2) {
