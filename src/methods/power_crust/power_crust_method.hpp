@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <type_traits>
 #include <sculpt/sculpt.hpp>
@@ -164,6 +165,7 @@ void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& verti
     ring.clear();
     bool bounded = true;
     auto cell = regular.incident_cells(*edge), first = cell;
+    const auto second = std::next(first);
     do {
       if (regular.is_infinite(cell)) {
         bounded = false;
@@ -177,26 +179,21 @@ void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& verti
       continue;
     }
     if (ring.size() < 3) continue;  // the face has no area
-    // Orient the fan so that it faces from the inner pole to the outer one.
-    const auto& pu = u->point().point();
-    const auto& pv = v->point().point();
-    const std::array<double, 3> towards_outer =
-        inner_first ? std::array<double, 3>{pv.x() - pu.x(), pv.y() - pu.y(), pv.z() - pu.z()}
-                    : std::array<double, 3>{pu.x() - pv.x(), pu.y() - pv.y(), pu.z() - pv.z()};
-    std::array<double, 3> normal{0, 0, 0};
-    const Point<3>& origin = vertices[ring[0]];
-    for (std::size_t k = 1; k + 1 < ring.size(); ++k) {
-      const Point<3>& a = vertices[ring[k]];
-      const Point<3>& b = vertices[ring[k + 1]];
-      const std::array<double, 3> e1{a[0] - origin[0], a[1] - origin[1], a[2] - origin[2]};
-      const std::array<double, 3> e2{b[0] - origin[0], b[1] - origin[1], b[2] - origin[2]};
-      normal[0] += e1[1] * e2[2] - e1[2] * e2[1];
-      normal[1] += e1[2] * e2[0] - e1[0] * e2[2];
-      normal[2] += e1[0] * e2[1] - e1[1] * e2[0];
+    // The polygon turns about the edge u -> v as its cells do, and the cells' turn is decided
+    // exactly from the poles (the polygon's own vertices may be a rounding error apart): from
+    // the first cell's vertex y that the second cell lacks, to x that it shares.
+    typename Regular::Vertex_handle x, y;
+    for (int j = 0; j < 4; ++j) {
+      const auto w = first->vertex(j);
+      if (w == u || w == v) continue;
+      (second->has_vertex(w) ? x : y) = w;
     }
-    const bool reversed = normal[0] * towards_outer[0] + normal[1] * towards_outer[1] +
-                              normal[2] * towards_outer[2] <
-                          0;
+    const auto bare = [](typename Regular::Vertex_handle w) { return w->point().point(); };
+    const bool turns_positively =
+        CGAL::orientation(bare(u), bare(v), bare(y), bare(x)) == CGAL::POSITIVE;
+    // Counterclockwise seen from v, the fan faces along u -> v: toward the outer pole if u is
+    // the inner one.
+    const bool reversed = turns_positively != inner_first;
     for (std::size_t k = 1; k + 1 < ring.size(); ++k) {
       if (reversed) {
         faces.push_back({ring[0], ring[k + 1], ring[k]});
