@@ -181,7 +181,7 @@ def test_plain_python_values_are_accepted(tmp_path):
     sculpt.write(result, tmp_path / "star.svg")
     assert (tmp_path / "star.svg").exists()
     assert sculpt.render(result, size=50).shape == (50, 50, 4)  # one number: a square
-    assert list(sculpt.methods(dimension=2)) == ["robust", "paper", "crust", "nn-crust"]
+    assert list(sculpt.methods(dimension=2)) == ["robust", "paper", "crust", "nn-crust", "power-crust"]
 
 
 def test_reconstruction_releases_the_gil():
