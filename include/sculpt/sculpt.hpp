@@ -69,6 +69,8 @@ enum class Method {
   alpha_shape,      // CGAL's alpha shapes: the smallest alpha giving one solid with every sample
   power_crust,      // Amenta, Choi & Kolluri 2001: the power diagram faces between the cells of
                     // inner and outer poles (does not interpolate: vertices of its own)
+  tight_cocone,     // Dey & Goswami 2003: the co-cone's surface, then the Delaunay cells peeled
+                    // from the outside up to it; the rest is a solid, its skin watertight
 };
 
 // Which facets of DT(S ∪ OUP) make the surface.
@@ -255,11 +257,16 @@ struct Crust_stage {
 // surface from its rim), only those hanging free (held only where three or more triangles meet):
 // rims_kept. The surface is the outer boundary of the candidates left, walked from the outside
 // (ACDL 2000, sec. 4).
+// The co-cone also marks the samples where the sampling is too sparse for its rule
+// (undersampled: Dey & Giesen 2001); the tight co-cone, those whose triangles in the co-cone's
+// surface do not make one closed fan (no umbrella: Dey & Goswami 2003).
 template <int D>
 struct Candidates_stage {
   std::vector<Facet<D>> chosen;
   std::vector<Facet<D>> pruned;
   bool rims_kept = false;
+  std::vector<int> undersampled;
+  std::vector<int> without_umbrella;
 };
 
 struct Stage_measure {
@@ -293,6 +300,8 @@ struct Statistics {
   std::size_t candidate_facets = 0;  // crust, co-cone (3D): triangles the filter chose
   std::size_t pruned_facets = 0;     // of those, removed at a sharp edge
   bool rims_kept = false;            // the pruning kept the rims of holes (Candidates_stage)
+  std::size_t undersampled_samples = 0;      // co-cones: samples judged undersampled
+  std::size_t samples_without_umbrella = 0;  // tight co-cone: no closed fan in the co-cone's
   double alpha = 0;                  // alpha-shape: the radius chosen, in the input's units
   // A method that does not interpolate (the power crust): the vertices of its result, which are
   // not samples; 0 when the result's vertices are the samples.

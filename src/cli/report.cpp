@@ -58,6 +58,13 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     row("candidates / pruned", fmt::format("{} / {}{}", stats.candidate_facets, stats.pruned_facets,
                                            stats.rims_kept ? " (rims of holes kept)" : ""));
   }
+  if (stats.method == Method::cocone || stats.method == Method::tight_cocone) {
+    row("undersampled samples", stats.undersampled_samples);
+  }
+  if (stats.method == Method::tight_cocone) {
+    row("samples without umbrella", stats.samples_without_umbrella);
+    row("cells not peeled", stats.solid_cells);
+  }
   row(three ? "triangles" : "edges", stats.facets);
   row(three ? "boundary edges" : "curve end points", stats.boundary_ridges);
   row(three ? "non-manifold edges" : "branching samples", stats.non_manifold_ridges);

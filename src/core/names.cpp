@@ -51,6 +51,8 @@ const char* to_string(Method method) {
       return "alpha-shape";
     case Method::power_crust:
       return "power-crust";
+    case Method::tight_cocone:
+      return "tight-cocone";
   }
   return "?";
 }
@@ -59,7 +61,8 @@ const std::vector<const char*>& method_names() {
   static const std::vector<const char*> names = {
       to_string(Options{}.method),   to_string(Method::paper),  to_string(Method::crust),
       to_string(Method::nn_crust),   to_string(Method::cocone), to_string(Method::advancing_front),
-      to_string(Method::alpha_shape), to_string(Method::power_crust)};
+      to_string(Method::alpha_shape), to_string(Method::power_crust),
+      to_string(Method::tight_cocone)};
   return names;
 }
 
@@ -81,6 +84,8 @@ const char* describe(Method method) {
       return "CGAL's alpha shapes, the smallest alpha giving one solid (surfaces)";
     case Method::power_crust:
       return "the power crust of Amenta, Choi & Kolluri (not interpolating)";
+    case Method::tight_cocone:
+      return "the tight co-cone of Dey & Goswami: watertight (surfaces)";
   }
   return "?";
 }
@@ -94,13 +99,13 @@ bool interpolates(Method method) {
 }
 
 bool builds_solid(Method method) {
-  return sculpts(method) || method == Method::alpha_shape;
+  return sculpts(method) || method == Method::alpha_shape || method == Method::tight_cocone;
 }
 
 bool reconstructs_in(Method method, int dimension) {
   if (method == Method::nn_crust) return dimension == 2;
-  if (method == Method::cocone || method == Method::advancing_front ||
-      method == Method::alpha_shape) {
+  if (method == Method::cocone || method == Method::tight_cocone ||
+      method == Method::advancing_front || method == Method::alpha_shape) {
     return dimension == 3;
   }
   return true;
@@ -108,7 +113,8 @@ bool reconstructs_in(Method method, int dimension) {
 
 bool parse_method(const std::string& name, Method& method) {
   for (Method m : {Method::paper, Method::robust, Method::crust, Method::nn_crust, Method::cocone,
-                   Method::advancing_front, Method::alpha_shape, Method::power_crust}) {
+                   Method::advancing_front, Method::alpha_shape, Method::power_crust,
+                   Method::tight_cocone}) {
     if (name == to_string(m)) {
       method = m;
       return true;

@@ -10,6 +10,7 @@
 #include "../methods/cgal/advancing_front_method.hpp"
 #include "../methods/cgal/alpha_shape_method.hpp"
 #include "../methods/cocone/cocone_method.hpp"
+#include "../methods/cocone/tight_cocone_method.hpp"
 #include "../methods/crust/crust_method.hpp"
 #include "../methods/crust/nn_crust.hpp"
 #include "../methods/crust/surface_crust.hpp"
@@ -42,7 +43,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
     throw Input_error(std::string("the method ") + to_string(options.method) +
                       (Traits::dimension == 3
                            ? " reconstructs curves (2D points) only; for surfaces use robust, "
-                             "paper, crust, cocone, advancing-front, alpha-shape or power-crust"
+                             "paper, crust, cocone, tight-cocone, advancing-front, alpha-shape or power-crust"
                            : " reconstructs surfaces (3D points) only; for curves use robust, "
                              "paper, crust, nn-crust or power-crust"));
   }
@@ -99,6 +100,11 @@ Reconstruction<Traits::dimension> reconstruct_with(
       break;
     case Method::power_crust:
       run_power_crust_method<Traits>(result, clock);
+      break;
+    case Method::tight_cocone:
+      if constexpr (Traits::dimension == 3) {
+        run_tight_cocone_method<Traits>(triangulation, result, clock);
+      }
       break;
   }
 

@@ -209,12 +209,35 @@ inline Pseudo_code cocone_pseudo_code() {
       "    v(s) <- p+(s) - s   # pole vector",
       "    cocone(s) <- directions within 22.5 deg",
       "                 of the plane normal to v(s)",
+      "U <- undersampled s: Vor(s) not long and",
+      "    thin, or normals of neighbours disagree",
       "T <- triangles t of DT between samples whose",
-      "    Voronoi edge meets cocone(s), s in t",
+      "    Voronoi edge meets cocone(s), s in t - U",
   };
   add_manifold_extraction_lines(code);
   code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::candidates, 5}, {Stage::surface, int(code.lines.size()) - 1}});
+  code.line_of_stage.insert({{Stage::candidates, 7}, {Stage::surface, int(code.lines.size()) - 1}});
+  return code;
+}
+
+// The tight co-cone of Dey and Goswami (src/methods/cocone/tight_cocone_method.hpp): the
+// co-cone's lines, then the peeling.
+inline Pseudo_code tight_cocone_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code = cocone_pseudo_code();
+  code.lines.back() = "S0 <- outer boundary of T, walked";
+  const int first = int(code.lines.size());
+  code.lines.insert(code.lines.end(), {
+                                          "good <- samples with one closed fan in S0",
+                                          "out <- cells touching the box; peel from out",
+                                          "    across f not in S0 into cell d if a good",
+                                          "    s of d is on f, or d's are all bad and f",
+                                          "    is not d's smallest facet",
+                                          "solid <- cells not peeled",
+                                          "surface <- facets solid | out",
+                                      });
+  code.line_of_stage[Stage::solid] = first + 5;
+  code.line_of_stage[Stage::surface] = first + 6;
   return code;
 }
 
@@ -290,7 +313,8 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
                            cocone = cocone_pseudo_code(),
                            advancing_front = advancing_front_pseudo_code(),
                            alpha_shape = alpha_shape_pseudo_code(),
-                           power_crust = power_crust_pseudo_code();
+                           power_crust = power_crust_pseudo_code(),
+                           tight_cocone = tight_cocone_pseudo_code();
   switch (method) {
     case Method::paper:
       return paper;
@@ -306,6 +330,8 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
       return nn_crust;
     case Method::power_crust:
       return power_crust;
+    case Method::tight_cocone:
+      return tight_cocone;
     case Method::robust:
       break;
   }

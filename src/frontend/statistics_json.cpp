@@ -41,6 +41,8 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"candidate_facets", stats.candidate_facets},
       {"pruned_facets", stats.pruned_facets},
       {"rims_kept", stats.rims_kept},
+      {"undersampled_samples", stats.undersampled_samples},
+      {"samples_without_umbrella", stats.samples_without_umbrella},
       {"alpha", stats.alpha},
       {"surface_vertices", stats.surface_vertices},
       {"unbounded_power_faces", stats.unbounded_power_faces},

@@ -31,6 +31,9 @@ inline constexpr Color curve{0.05f, 0.05f, 0.05f};
 inline constexpr Color border{1.00f, 0.45f, 0.00f};
 inline constexpr Color non_manifold{0.90f, 0.00f, 0.00f};
 inline constexpr Color background{1.0f, 1.0f, 1.0f};
+// The co-cones' marks on samples: undersampled (Dey & Giesen), no umbrella (tight co-cone).
+inline constexpr Color undersampled{0.80f, 0.10f, 0.80f};
+inline constexpr Color without_umbrella{0.00f, 0.60f, 0.60f};
 
 inline Color outer_pole(int dimension) {
   return dimension == 2 ? outer_pole_2d : outer_pole_3d;

@@ -425,10 +425,14 @@ class Scene_builder {
       // Tetrahedra shrunk towards their centroids, and the front half (+z, towards the default
       // camera) cut away, so the inside of the solid shows.
       const bool alpha = r_.options.method == Method::alpha_shape;
+      const bool tight = r_.options.method == Method::tight_cocone;
       if (alpha) scene_.title = "Alpha solid: the cells of circumradius below alpha";
-      Layer& layer = add(
-          "solid", alpha ? "alpha solid (tetrahedra)" : "sculpted solid (all-sample tetrahedra)",
-          Primitive::triangles, palette::solid, 1.0f);
+      if (tight) scene_.title = "Tight co-cone: the cells left after peeling";
+      Layer& layer = add("solid",
+                         alpha   ? "alpha solid (tetrahedra)"
+                         : tight ? "cells not peeled (tetrahedra)"
+                                 : "sculpted solid (all-sample tetrahedra)",
+                         Primitive::triangles, palette::solid, 1.0f);
       layer.lit = true;
       const float cut = 0.5f * (scene_.lower[2] + scene_.upper[2]);
       for (const auto& cell : r_.solid) {
@@ -517,18 +521,31 @@ class Scene_builder {
       if (std::binary_search(pruned.begin(), pruned.end(), sorted)) continue;
       for (int v : facet) kept.positions.push_back(vec(r_.sites[v]));
     }
-    if (candidates.pruned.empty()) return;
-    Layer& removed =
-        add("pruned",
-            std::string(candidates.rims_kept ? "pruned, rims of holes kept (" : "pruned (") +
-                std::to_string(candidates.pruned.size()) + ")",
-            Primitive::lines, palette::non_manifold, 2.0f);
-    for (const auto& facet : candidates.pruned) {
-      for (int j = 0; j < D; ++j) {
-        removed.positions.push_back(vec(r_.sites[facet[j]]));
-        removed.positions.push_back(vec(r_.sites[facet[(j + 1) % D]]));
+    if (!candidates.pruned.empty()) {
+      Layer& removed =
+          add("pruned",
+              std::string(candidates.rims_kept ? "pruned, rims of holes kept (" : "pruned (") +
+                  std::to_string(candidates.pruned.size()) + ")",
+              Primitive::lines, palette::non_manifold, 2.0f);
+      for (const auto& facet : candidates.pruned) {
+        for (int j = 0; j < D; ++j) {
+          removed.positions.push_back(vec(r_.sites[facet[j]]));
+          removed.positions.push_back(vec(r_.sites[facet[(j + 1) % D]]));
+        }
       }
     }
+    // The samples the co-cone does not trust, and those the tight co-cone found no umbrella at.
+    const auto marked = [&](const char* id, const std::string& title,
+                            const std::vector<int>& samples, Color color) {
+      if (samples.empty()) return;
+      Layer& layer = add(id, title + " (" + std::to_string(samples.size()) + ")",
+                         Primitive::points, color, 7.0f);
+      for (int s : samples) layer.positions.push_back(vec(r_.sites[s]));
+    };
+    marked("undersampled", "undersampled samples", candidates.undersampled,
+           palette::undersampled);
+    marked("without-umbrella", "samples without umbrella", candidates.without_umbrella,
+           palette::without_umbrella);
   }
 
   // The result's border (curve ends in 2D, border edges in 3D) and its non-manifold ridges

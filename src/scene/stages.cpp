@@ -36,7 +36,12 @@ const std::vector<Stage>& stages_of(Method method, int dimension) {
                                                  Stage::voronoi, Stage::poles,
                                                  Stage::seeds,   Stage::propagation,
                                                  Stage::surface};
+  static const std::vector<Stage> tight_cocone = {
+      Stage::samples, Stage::delaunay,   Stage::voronoi, Stage::poles,
+      Stage::candidates, Stage::solid, Stage::surface};
   switch (method) {
+    case Method::tight_cocone:
+      return tight_cocone;
     case Method::power_crust:
       return power_crust;
     case Method::crust:

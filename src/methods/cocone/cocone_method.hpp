@@ -1,8 +1,10 @@
-// The co-cone of Amenta, Choi, Dey and Leekha (2000), for closed surfaces:
+// The co-cone of Amenta, Choi, Dey and Leekha (2000), with the undersampling detection of Dey
+// and Giesen (2001) that Kuo & Yau compare against (their Fig. 15b, the "modified co-cone"):
 //   for each sample p: v_p <- p+ - p, the direction to its positive pole (stage 2)
 //     cocone(p) <- the directions from p within θ = π/8 of the plane normal to v_p
+//   U <- the undersampled samples (undersampling.hpp)
 //   T <- the Delaunay triangles of S whose dual Voronoi edge meets the co-cone of each of
-//        their three vertices
+//        their vertices not in U (and that have one)
 //   prune T at sharp edges; the surface is the outer boundary of what is left
 // Near a well-sampled surface the pole vector is close to the normal, so the co-cone is a thick
 // slab about the tangent plane and the Voronoi edges dual to surface triangles cross it; a
@@ -20,6 +22,7 @@
 
 #include "../../core/stage_clock.hpp"
 #include "../extraction/manifold_extraction.hpp"
+#include "undersampling.hpp"
 
 namespace sculpt {
 
@@ -73,28 +76,50 @@ void run_cocone_method(const typename Traits::Triangulation& triangulation,
   for (auto cell : Traits::finite_cells(triangulation)) {
     circumcentres[cell->info()] = Traits::from_cgal(Traits::circumcenter(triangulation, cell));
   }
-  auto& chosen = result.candidates.chosen;
+  // Every triangle between samples, with its Voronoi edge and the co-cones that edge meets.
+  std::vector<Cocone_triangle> triangles;
   for (auto facet = triangulation.finite_facets_begin(); facet != triangulation.finite_facets_end();
        ++facet) {
     const auto& [cell, opposite] = *facet;
     const auto other = cell->neighbor(opposite);
     if (triangulation.is_infinite(cell) || triangulation.is_infinite(other)) continue;
-    Facet<3> triangle;
+    Cocone_triangle t;
     bool all_samples = true;
     for (int j = 0; j < 3; ++j) {
-      triangle[j] = cell->vertex(Traits::facet_vertex[opposite][j])->info();
-      all_samples = all_samples && triangle[j] < n;
+      t.samples[j] = cell->vertex(Traits::facet_vertex[opposite][j])->info();
+      all_samples = all_samples && t.samples[j] < n;
     }
     if (!all_samples) continue;
-    const Point<3>& from = circumcentres[cell->info()];
-    const Point<3>& to = circumcentres[other->info()];
-    bool in_all_cocones = true;
-    for (int v : triangle) {
-      in_all_cocones =
-          in_all_cocones && segment_meets_cocone(result.sites[v], vectors[v], from, to);
+    t.from = circumcentres[cell->info()];
+    t.to = circumcentres[other->info()];
+    for (int j = 0; j < 3; ++j) {
+      const int v = t.samples[j];
+      t.meets_cocone[j] = segment_meets_cocone(result.sites[v], vectors[v], t.from, t.to);
     }
-    if (in_all_cocones) chosen.push_back(triangle);
+    triangles.push_back(t);
   }
+  circumcentres = {};
+
+  clock.start("undersampling");
+  const std::vector<bool> undersampled = undersampled_samples(result, vectors, triangles);
+  for (int s = 0; s < n; ++s) {
+    if (undersampled[s]) result.candidates.undersampled.push_back(s);
+  }
+  result.stats.undersampled_samples = result.candidates.undersampled.size();
+
+  // A triangle is chosen when its Voronoi edge meets the co-cone of each of its well-sampled
+  // vertices, and it has one; an undersampled vertex imposes nothing (Dey & Giesen 2001).
+  auto& chosen = result.candidates.chosen;
+  for (const auto& t : triangles) {
+    bool well_sampled_vertex = false, meets_theirs = true;
+    for (int j = 0; j < 3; ++j) {
+      if (undersampled[t.samples[j]]) continue;
+      well_sampled_vertex = true;
+      meets_theirs = meets_theirs && t.meets_cocone[j];
+    }
+    if (well_sampled_vertex && meets_theirs) chosen.push_back(t.samples);
+  }
+  triangles = {};
   extract_manifold({result.sites.begin(), result.sites.begin() + n}, result, clock);
 }
 

@@ -1,0 +1,135 @@
+// Undersampling detection for the co-cone (Dey & Giesen 2001, "Detecting undersampling in
+// surface reconstruction"; the boundary co-cone of Dey's book, 2007, sec. 5.2): where the
+// samples are dense enough, a sample's Voronoi cell is long and thin along the normal, and its
+// neighbours' pole vectors agree with its own. Where they are not (a border, a sharp edge, a
+// thin part sampled too sparsely), the cell is fat or the normals disagree, and the co-cone's
+// rule there would choose wrong triangles. Such samples are marked and impose no co-cone: the
+// surface gets a hole there instead of a defect (the "modified co-cone" of Kuo & Yau, Fig. 15b).
+//
+//   r(p) <- the farthest point of Vor(p) in the plane through p normal to v(p) = p+ - p
+//           (the Voronoi edges of p that cross the plane: its width)
+//   h(p) <- the distance to the nearer pole (its height)
+//   R <- { p : r(p) <= ρ h(p), and v(q) within θ of ±v(p) for every co-cone neighbour q }
+//   grow R: add p with r(p) <= ρ h(p) and one co-cone neighbour q in R within θ, repeatedly
+//   the undersampled samples: those not in R
+// ρ = 1/1.2 and θ = π/3, the constants of Dey and Goswami's Tight Cocone program (the paper
+// leaves them to the implementation); a co-cone neighbour q of p shares with p a Delaunay
+// triangle whose Voronoi edge meets the co-cone of p.
+#pragma once
+
+#include <cmath>
+#include <deque>
+#include <sculpt/sculpt.hpp>
+#include <utility>
+#include <vector>
+
+#include "../extraction/manifold_extraction.hpp"
+
+namespace sculpt {
+
+// The width-to-height ratio below which a Voronoi cell counts as long and thin.
+inline constexpr double thin_cell_ratio = 1 / 1.2;
+// Neighbours' normals (unoriented) agree within this angle.
+inline constexpr double normal_agreement_angle = M_PI / 3;
+
+// What the detection needs to know about one Delaunay triangle between samples: its vertices,
+// the two ends of its Voronoi edge, and whether that edge meets each vertex's co-cone.
+struct Cocone_triangle {
+  Facet<3> samples;
+  Point<3> from, to;
+  std::array<bool, 3> meets_cocone;
+};
+
+// Returns, per sample, whether it is undersampled.
+inline std::vector<bool> undersampled_samples(const Reconstruction<3>& result,
+                                              const std::vector<std::array<double, 3>>& normals,
+                                              const std::vector<Cocone_triangle>& triangles) {
+  using namespace extraction_detail;
+  const int n = static_cast<int>(result.sample_count());
+  const auto& stage = result.poles;
+
+  // The width: where each Voronoi edge of p crosses the plane through p normal to v(p).
+  std::vector<double> width(n, 0);
+  for (const auto& t : triangles) {
+    for (int j = 0; j < 3; ++j) {
+      const int p = t.samples[j];
+      const Point<3>& at = result.sites[p];
+      const double a = dot(minus(t.from, at), normals[p]);
+      const double b = dot(minus(t.to, at), normals[p]);
+      if ((a > 0) == (b > 0) || a == b) continue;  // on one side of the plane
+      const double s = a / (a - b);
+      Point<3> crossing;
+      for (int k = 0; k < 3; ++k) crossing[k] = t.from[k] + s * (t.to[k] - t.from[k]);
+      const Vector d = minus(crossing, at);
+      width[p] = std::max(width[p], std::sqrt(dot(d, d)));
+    }
+  }
+  std::vector<bool> thin(n, false);
+  for (int p = 0; p < n; ++p) {
+    double height = INFINITY;
+    for (int pole : {stage.positive_pole[p], stage.negative_pole[p]}) {
+      if (pole >= 0) height = std::min(height, stage.poles[pole].radius);
+    }
+    thin[p] = std::isfinite(height) && width[p] <= thin_cell_ratio * height;
+  }
+
+  // Co-cone neighbours in compressed rows: q in the row of p when q is a co-cone neighbour of
+  // p, and p in the row of q of the reverse relation (it is not symmetric).
+  const auto rows = [&](bool reverse) {
+    std::pair<std::vector<int>, std::vector<int>> row_set;
+    auto& [offsets, entries] = row_set;
+    offsets.assign(n + 1, 0);
+    const auto for_each_pair = [&](auto&& use) {
+      for (const auto& t : triangles) {
+        for (int j = 0; j < 3; ++j) {
+          if (!t.meets_cocone[j]) continue;
+          for (int other : {t.samples[(j + 1) % 3], t.samples[(j + 2) % 3]}) {
+            reverse ? use(other, t.samples[j]) : use(t.samples[j], other);
+          }
+        }
+      }
+    };
+    for_each_pair([&](int p, int) { ++offsets[p + 1]; });
+    for (int p = 0; p < n; ++p) offsets[p + 1] += offsets[p];
+    entries.resize(offsets[n]);
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for_each_pair([&](int p, int q) { entries[fill[p]++] = q; });
+    return row_set;
+  };
+  const auto [offsets, neighbours] = rows(false);
+  const auto [reverse_offsets, neighbour_of] = rows(true);
+  static const double agreement = std::cos(normal_agreement_angle);
+  const auto agree = [&](int p, int q) {
+    return std::abs(dot(normals[p], normals[q])) >= agreement;
+  };
+
+  std::vector<bool> well_sampled(n, false);
+  std::deque<int> grown;
+  for (int p = 0; p < n; ++p) {
+    if (!thin[p]) continue;
+    bool all_agree = true;
+    for (int i = offsets[p]; i < offsets[p + 1] && all_agree; ++i) {
+      all_agree = agree(p, neighbours[i]);
+    }
+    if (all_agree) {
+      well_sampled[p] = true;
+      grown.push_back(p);
+    }
+  }
+  // Grow R: when q joins, every thin p that has q as a co-cone neighbour and agrees with it.
+  while (!grown.empty()) {
+    const int q = grown.front();
+    grown.pop_front();
+    for (int i = reverse_offsets[q]; i < reverse_offsets[q + 1]; ++i) {
+      const int p = neighbour_of[i];
+      if (well_sampled[p] || !thin[p] || !agree(p, q)) continue;
+      well_sampled[p] = true;
+      grown.push_back(p);
+    }
+  }
+  std::vector<bool> undersampled(n);
+  for (int p = 0; p < n; ++p) undersampled[p] = !well_sampled[p];
+  return undersampled;
+}
+
+}  // namespace sculpt
