@@ -71,6 +71,8 @@ enum class Method {
                     // inner and outer poles (does not interpolate: vertices of its own)
   tight_cocone,     // Dey & Goswami 2003: the co-cone's surface, then the Delaunay cells peeled
                     // from the outside up to it; the rest is a solid, its skin watertight
+  boissonnat,       // Boissonnat 1984: the hull's cells removed greedily, farthest-bulging
+                    // first, while the boundary stays a polyhedron, until every sample is on it
 };
 
 // Which facets of DT(S ∪ OUP) make the surface.
@@ -220,12 +222,13 @@ struct Insertion_stage {
   std::vector<int> inserted_poles;
 };
 
-// Stage 6b (robust method): the all-sample cells of DT(S ∪ BBV) removed from the hull, in the
-// order they were removed (cells are numbered as in stage 1), and those that stayed.
+// Stage 6b (robust method, Boissonnat's): the all-sample cells of DT(S ∪ BBV) removed from the
+// hull, in the order they were removed (cells are numbered as in stage 1), and those that stayed.
 enum class Carve_reason : std::uint8_t {
   outer_pole_inside,  // its circumball holds an outer pole: inserting OUP would destroy it
   outer_power_cell,   // its circumcentre lies in the power cell of an outer polar ball
   exposes_sample,     // removed so that a buried sample reaches the surface
+  largest_bulge,      // (Boissonnat) its circumsphere bulged farthest out of the solid
 };
 
 struct Carve_event {

@@ -53,6 +53,8 @@ const char* to_string(Method method) {
       return "power-crust";
     case Method::tight_cocone:
       return "tight-cocone";
+    case Method::boissonnat:
+      return "boissonnat";
   }
   return "?";
 }
@@ -62,7 +64,7 @@ const std::vector<const char*>& method_names() {
       to_string(Options{}.method),   to_string(Method::paper),  to_string(Method::crust),
       to_string(Method::nn_crust),   to_string(Method::cocone), to_string(Method::advancing_front),
       to_string(Method::alpha_shape), to_string(Method::power_crust),
-      to_string(Method::tight_cocone)};
+      to_string(Method::tight_cocone), to_string(Method::boissonnat)};
   return names;
 }
 
@@ -86,6 +88,8 @@ const char* describe(Method method) {
       return "the power crust of Amenta, Choi & Kolluri (not interpolating)";
     case Method::tight_cocone:
       return "the tight co-cone of Dey & Goswami: watertight (surfaces)";
+    case Method::boissonnat:
+      return "Boissonnat's greedy sculpting of the hull (1984)";
   }
   return "?";
 }
@@ -99,7 +103,8 @@ bool interpolates(Method method) {
 }
 
 bool builds_solid(Method method) {
-  return sculpts(method) || method == Method::alpha_shape || method == Method::tight_cocone;
+  return sculpts(method) || method == Method::alpha_shape || method == Method::tight_cocone ||
+         method == Method::boissonnat;
 }
 
 bool reconstructs_in(Method method, int dimension) {
@@ -114,7 +119,7 @@ bool reconstructs_in(Method method, int dimension) {
 bool parse_method(const std::string& name, Method& method) {
   for (Method m : {Method::paper, Method::robust, Method::crust, Method::nn_crust, Method::cocone,
                    Method::advancing_front, Method::alpha_shape, Method::power_crust,
-                   Method::tight_cocone}) {
+                   Method::tight_cocone, Method::boissonnat}) {
     if (name == to_string(m)) {
       method = m;
       return true;
@@ -131,6 +136,8 @@ const char* to_string(Carve_reason reason) {
       return "in the power cell of an outer ball";
     case Carve_reason::exposes_sample:
       return "exposes a buried sample";
+    case Carve_reason::largest_bulge:
+      return "its circumsphere bulges farthest out";
   }
   return "?";
 }

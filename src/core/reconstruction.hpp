@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "../methods/boissonnat/boissonnat_method.hpp"
 #include "../methods/cgal/advancing_front_method.hpp"
 #include "../methods/cgal/alpha_shape_method.hpp"
 #include "../methods/cocone/cocone_method.hpp"
@@ -43,9 +44,10 @@ Reconstruction<Traits::dimension> reconstruct_with(
     throw Input_error(std::string("the method ") + to_string(options.method) +
                       (Traits::dimension == 3
                            ? " reconstructs curves (2D points) only; for surfaces use robust, "
-                             "paper, crust, cocone, tight-cocone, advancing-front, alpha-shape or power-crust"
+                             "paper, crust, cocone, tight-cocone, advancing-front, alpha-shape, "
+                             "power-crust or boissonnat"
                            : " reconstructs surfaces (3D points) only; for curves use robust, "
-                             "paper, crust, nn-crust or power-crust"));
+                             "paper, crust, nn-crust, power-crust or boissonnat"));
   }
   check_input<Traits>(samples, options);
   const Normalisation<Traits::dimension> normalisation =
@@ -100,6 +102,9 @@ Reconstruction<Traits::dimension> reconstruct_with(
       break;
     case Method::power_crust:
       run_power_crust_method<Traits>(result, clock);
+      break;
+    case Method::boissonnat:
+      run_boissonnat_method<Traits>(triangulation, result, clock);
       break;
     case Method::tight_cocone:
       if constexpr (Traits::dimension == 3) {

@@ -304,6 +304,26 @@ inline Pseudo_code power_crust_pseudo_code() {
   return code;
 }
 
+// Boissonnat's sculpting (src/methods/boissonnat/boissonnat_method.hpp).
+inline Pseudo_code boissonnat_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  code.lines = {
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "solid <- cells of DT whose vertices are in S",
+      "while a sample is off the boundary:",
+      "    c <- removable cell whose circumsphere",
+      "         bulges farthest beyond its boundary",
+      "    # removable: 1 facet out, its apex off the",
+      "    # boundary; 2 out, their edge off it (3D)",
+      "    solid <- solid - c",
+      "surface <- facets solid | rest",
+  };
+  code.line_of_stage = {{Stage::samples, 0}, {Stage::delaunay, 0}, {Stage::hull, 1},
+                        {Stage::solid, 7},   {Stage::surface, 8}};
+  return code;
+}
+
 inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface_kind::closed,
                                       int dimension = 3) {
   static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code(),
@@ -314,7 +334,8 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
                            advancing_front = advancing_front_pseudo_code(),
                            alpha_shape = alpha_shape_pseudo_code(),
                            power_crust = power_crust_pseudo_code(),
-                           tight_cocone = tight_cocone_pseudo_code();
+                           tight_cocone = tight_cocone_pseudo_code(),
+                           boissonnat = boissonnat_pseudo_code();
   switch (method) {
     case Method::paper:
       return paper;
@@ -332,6 +353,8 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
       return power_crust;
     case Method::tight_cocone:
       return tight_cocone;
+    case Method::boissonnat:
+      return boissonnat;
     case Method::robust:
       break;
   }

@@ -348,7 +348,7 @@ PYBIND11_MODULE(_sculpt, m) {
 
   m.attr("LABELS") = names_of<Label>(3);
   m.attr("LABEL_REASONS") = names_of<Label_reason>(4);
-  m.attr("CARVE_REASONS") = names_of<Carve_reason>(3);
+  m.attr("CARVE_REASONS") = names_of<Carve_reason>(4);
   m.attr("DEFAULT_METHOD") = to_string(Options{}.method);
 
   m.def("version", &sculpt::version, "Sculpt's version, e.g. '0.1.0'.");

@@ -426,6 +426,9 @@ class Scene_builder {
       // camera) cut away, so the inside of the solid shows.
       const bool alpha = r_.options.method == Method::alpha_shape;
       const bool tight = r_.options.method == Method::tight_cocone;
+      if (r_.options.method == Method::boissonnat) {
+        scene_.title = "Boissonnat: the cells left when every sample is on the boundary";
+      }
       if (alpha) scene_.title = "Alpha solid: the cells of circumradius below alpha";
       if (tight) scene_.title = "Tight co-cone: the cells left after peeling";
       Layer& layer = add("solid",

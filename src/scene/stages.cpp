@@ -39,7 +39,11 @@ const std::vector<Stage>& stages_of(Method method, int dimension) {
   static const std::vector<Stage> tight_cocone = {
       Stage::samples, Stage::delaunay,   Stage::voronoi, Stage::poles,
       Stage::candidates, Stage::solid, Stage::surface};
+  static const std::vector<Stage> boissonnat = {Stage::samples, Stage::delaunay, Stage::hull,
+                                                Stage::solid, Stage::surface};
   switch (method) {
+    case Method::boissonnat:
+      return boissonnat;
     case Method::tight_cocone:
       return tight_cocone;
     case Method::power_crust:
