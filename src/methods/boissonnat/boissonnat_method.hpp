@@ -82,7 +82,7 @@ class Boissonnat_sculpting {
         }
       }
       outside_[cell->info()] = 1;
-      result_.carving.events.push_back({cell->info(), Carve_reason::outer_pole_inside});
+      result_.carving.events.push_back({cell->info(), Carve_reason::largest_bulge});
       for (int i = 0; i <= D; ++i) {
         if (!is_outside(cell->neighbor(i))) push(cell->neighbor(i));
       }
