@@ -111,7 +111,7 @@ def test_every_method_by_name_where_it_applies(sculpt_cli):
             try:
                 result = sculpt.reconstruct(points, method=name)
             except sculpt.InputError as error:  # the NN-crust has no surfaces, the co-cone no curves
-                assert name in ("nn-crust", "cocone", "advancing-front", "alpha-shape")
+                assert name in ("nn-crust", "cocone", "tight-cocone", "advancing-front", "alpha-shape")
                 assert "\n" not in str(error)
                 continue
             assert result.method == name and result.stats["method"] == name
@@ -181,7 +181,8 @@ def test_plain_python_values_are_accepted(tmp_path):
     sculpt.write(result, tmp_path / "star.svg")
     assert (tmp_path / "star.svg").exists()
     assert sculpt.render(result, size=50).shape == (50, 50, 4)  # one number: a square
-    assert list(sculpt.methods(dimension=2)) == ["robust", "paper", "crust", "nn-crust", "power-crust"]
+    assert list(sculpt.methods(dimension=2)) == [
+        "robust", "paper", "crust", "nn-crust", "power-crust", "boissonnat"]
 
 
 def test_reconstruction_releases_the_gil():

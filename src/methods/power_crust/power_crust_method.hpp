@@ -45,24 +45,23 @@ namespace sculpt {
 
 namespace power_crust_detail {
 
-// The crust's vertices: each weighted circumcentre once, also where cells of the regular
-// triangulation share one exactly (poles on one sphere). Centres a rounding error apart stay
-// apart: merging them would join power diagram vertices that are not adjacent and tear the
-// crust (measured on the built-in bumpy sphere: 310 non-manifold edges, against none), so the
-// crust keeps their faces of nearly zero area.
+// The crust's vertices: one per cell of the regular triangulation, numbered as first met. Cells
+// whose weighted circumcentres coincide, or lie a rounding error apart (poles nearly on one
+// sphere), keep a vertex each: joining them would join power diagram vertices that are not
+// adjacent and tear the crust (merging those within 2^-30 gave the built-in bumpy sphere 310
+// non-manifold edges, merging exact copies gave CGAL's knot1 two), whereas the crust of the
+// perturbed diagram is always a 2-manifold. It keeps their faces of nearly zero area.
 template <int D>
 class Vertex_pool {
  public:
   explicit Vertex_pool(std::vector<Point<D>>& vertices) : vertices_(vertices) {}
   int index_of(const Point<D>& p) {
-    const auto [place, added] = index_.try_emplace(p, static_cast<int>(vertices_.size()));
-    if (added) vertices_.push_back(p);
-    return place->second;
+    vertices_.push_back(p);
+    return static_cast<int>(vertices_.size()) - 1;
   }
 
  private:
   std::vector<Point<D>>& vertices_;
-  std::map<Point<D>, int> index_;
 };
 
 // The weighted circumcentre (the point of equal power to the cell's weighted points: a vertex of
