@@ -71,7 +71,12 @@ TEST(Figures, GeneratesEveryImageWithItsLayers) {
     EXPECT_GT(std::filesystem::file_size(out + "/" + name), 200u) << name;
   }
   const std::string gallery = testing::read_file(out + "/README.md");
-  EXPECT_NE(gallery.find("fig15a-femur.png"), std::string::npos);
+  // Every column of the paper's comparisons: the power crust, both co-cones, Table 2's.
+  for (const char* file : {"fig15a-femur.png", "fig14b.png", "fig15b-femur.png", "fig15c-knot.png"}) {
+    EXPECT_NE(gallery.find(file), std::string::npos) << file;
+  }
+  EXPECT_NE(testing::read_file(out + "/table2.md").find("verdict of the tight co-cone"),
+            std::string::npos);
   EXPECT_NE(gallery.find("label q like p"), std::string::npos) << "Fig. 5's pseudo-code";
 }
 
