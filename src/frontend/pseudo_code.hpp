@@ -62,9 +62,9 @@ inline Pseudo_code paper_pseudo_code() {
   return code;
 }
 
-inline Pseudo_code robust_pseudo_code() {
-  using scene::Stage;
-  Pseudo_code code;
+// The confidence labelling the robust method and the power crust share
+// (src/methods/robust/confidence_labelling.hpp), after the poles: its lines and their places.
+inline void add_confidence_labelling_lines(Pseudo_code& code) {
   code.lines = {
       "DT <- Delaunay(S + BBV)   # BB: 5x box",
       "for each sample s:",
@@ -77,23 +77,31 @@ inline Pseudo_code robust_pseudo_code() {
       "        ev(q, label p) max= cos(p s q)",
       "    for q paired with p (antipodal):",
       "        ev(q, other side) max= -cos(p s q)",
-      "outer(c) <- OUP in ball(c) or power(c) outer",
-      "carve outer c from outside, if manifold",
-      "open cavities, handles; expose samples",
-      "solid <- cells left",
-      "surface <- facets solid | outside",
   };
   code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::seeds, 3},
-                             {Stage::outer_concave, 11},
-                             {Stage::sculpted_delaunay, 12},
-                             {Stage::solid, 14},
-                             {Stage::surface, 15}});
+  code.line_of_stage.insert({scene::Stage::seeds, 3});
   code.line_of_reason = {{Label_reason::convex_seed, 3},
                          {Label_reason::ball_overlap, 8},
                          {Label_reason::pairing, 10},
                          {Label_reason::inscribed_cube, 8}};
   code.before_any_event = 4;
+}
+
+inline Pseudo_code robust_pseudo_code() {
+  using scene::Stage;
+  Pseudo_code code;
+  add_confidence_labelling_lines(code);
+  code.lines.insert(code.lines.end(), {
+                                          "outer(c) <- OUP in ball(c) or power(c) outer",
+                                          "carve outer c from outside, if manifold",
+                                          "open cavities, handles; expose samples",
+                                          "solid <- cells left",
+                                          "surface <- facets solid | outside",
+                                      });
+  code.line_of_stage.insert({{Stage::outer_concave, 11},
+                             {Stage::sculpted_delaunay, 12},
+                             {Stage::solid, 14},
+                             {Stage::surface, 15}});
   return code;
 }
 
@@ -278,29 +286,13 @@ inline Pseudo_code alpha_shape_pseudo_code() {
 inline Pseudo_code power_crust_pseudo_code() {
   using scene::Stage;
   Pseudo_code code;
-  code.lines = {
-      "DT <- Delaunay(S + BBV)   # BB: 5x box",
-      "for each sample s:",
-      "    p+(s), p-(s) <- poles of Vor(s)",
-      "OSP <- convex poles: outer, weight 1",
-      "heap <- OSP   # largest |outer - inner| first",
-      "while heap not empty:",
-      "    p <- most confident pole; label it",
-      "    for q whose ball meets B(p) at s:",
-      "        ev(q, label p) max= cos(p s q)",
-      "    for q paired with p (antipodal):",
-      "        ev(q, other side) max= -cos(p s q)",
-      "PD <- power diagram of poles, weight r(p)^2",
-      "crust <- faces of PD between the cells of",
-      "    an inner and an outer pole",
-  };
-  code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::seeds, 3}, {Stage::surface, 12}});
-  code.line_of_reason = {{Label_reason::convex_seed, 3},
-                         {Label_reason::ball_overlap, 8},
-                         {Label_reason::pairing, 10},
-                         {Label_reason::inscribed_cube, 8}};
-  code.before_any_event = 4;
+  add_confidence_labelling_lines(code);
+  code.lines.insert(code.lines.end(), {
+                                          "PD <- power diagram of poles, weight r(p)^2",
+                                          "crust <- faces of PD between the cells of",
+                                          "    an inner and an outer pole",
+                                      });
+  code.line_of_stage.insert({Stage::surface, 12});
   return code;
 }
 

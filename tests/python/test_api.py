@@ -276,7 +276,8 @@ def test_a_method_without_a_solid_writes_none(sculpt_cli, tmp_path):
     cocone = sculpt.reconstruct(sculpt.example("bumpy"), method="cocone")
     with pytest.raises(sculpt.InputError) as raised:
         sculpt.write(cocone, tmp_path / "a.stl", solid=tmp_path / "a.vtu")
-    assert str(raised.value) == "the method cocone builds no solid (robust, paper, alpha-shape do)"
+    assert str(raised.value) == (
+        "the method cocone builds no solid (robust, paper, alpha-shape, tight-cocone, boissonnat do)")
     assert list(tmp_path.iterdir()) == []
     run = sculpt_cli("reconstruct", "--example", "bumpy", "--method", "cocone",
                      "-o", tmp_path / "a.stl", "--solid", tmp_path / "a.vtu")

@@ -391,7 +391,13 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
 // candidates stage and the statistics record both.
 inline void extract_manifold(const std::vector<Point<3>>& samples, Reconstruction<3>& result,
                              Stage_clock& clock) {
-  const auto& chosen = result.candidates.chosen;
+  // In a canonical order: CGAL's facet iterator reports a facet from whichever of its two cells
+  // has the lower address, so the order the methods find them in (and their orientation) changes
+  // from run to run, and the pruning and the walk depend on it where the samples are degenerate
+  // (CGAL's femur: a few holes more or less from one run to the next in one process).
+  auto& chosen = result.candidates.chosen;
+  for (auto& t : chosen) std::sort(t.begin(), t.end());
+  std::sort(chosen.begin(), chosen.end());
   result.stats.candidate_facets = chosen.size();
   clock.start("pruning");
   std::vector<Facet<3>> kept = chosen;

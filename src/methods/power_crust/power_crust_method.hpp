@@ -109,6 +109,20 @@ Point<D> weighted_circumcentre(const std::array<Weighted, D + 1>& cell, const Po
   return rounded;
 }
 
+// The poles as weighted points (centre, squared radius), each with its index: `make` builds a
+// CGAL weighted point of the dimension from a centre and a weight.
+template <class Weighted, int D, class Make>
+std::vector<std::pair<Weighted, int>> weighted_poles(const Reconstruction<D>& result, Make&& make) {
+  const auto& poles = result.poles.poles;
+  std::vector<std::pair<Weighted, int>> weighted;
+  weighted.reserve(poles.size());
+  for (std::size_t p = 0; p < poles.size(); ++p) {
+    weighted.push_back({make(poles[p].center, poles[p].radius * poles[p].radius),
+                        static_cast<int>(p)});
+  }
+  return weighted;
+}
+
 // Whether the edge between two poles separates an inner cell from an outer one; `inner_first`
 // says which end is inner.
 inline bool separates(const std::vector<Label>& labels, int a, int b, bool& inner_first) {
@@ -132,51 +146,71 @@ void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& verti
   using Regular = CGAL::Regular_triangulation_3<Kernel, Tds>;
   using Weighted = typename Kernel::Weighted_point_3;
 
-  const auto& poles = result.poles.poles;
   const auto& labels = result.propagation.labels;
-  std::vector<std::pair<Weighted, int>> weighted;
-  weighted.reserve(poles.size());
-  for (std::size_t p = 0; p < poles.size(); ++p) {
-    const auto& c = poles[p].center;
-    weighted.push_back({Weighted(typename Kernel::Point_3(c[0], c[1], c[2]),
-                                 poles[p].radius * poles[p].radius),
-                        static_cast<int>(p)});
-  }
+  const auto weighted = weighted_poles<Weighted>(result, [](const Point<3>& c, double weight) {
+    return Weighted(typename Kernel::Point_3(c[0], c[1], c[2]), weight);
+  });
   Regular regular(weighted.begin(), weighted.end());
-  for (auto cell : regular.all_cell_handles()) cell->info() = -1;
+  // Cells numbered in the container's order, which does not depend on addresses; each gets its
+  // crust vertex when first used.
+  int cells = 0;
+  for (auto cell : regular.all_cell_handles()) cell->info() = cells++;
+  std::vector<int> vertex_of_cell(cells, -1);
 
   Vertex_pool<3> pool(vertices);
   const auto vertex_of = [&](typename Regular::Cell_handle cell) {
-    if (cell->info() < 0) {
+    int& vertex = vertex_of_cell[cell->info()];
+    if (vertex < 0) {
       const auto centre = regular.dual(cell);
       const std::array<Weighted, 4> points = {cell->vertex(0)->point(), cell->vertex(1)->point(),
                                               cell->vertex(2)->point(), cell->vertex(3)->point()};
-      cell->info() =
+      vertex =
           pool.index_of(weighted_circumcentre<3>(points, {centre.x(), centre.y(), centre.z()}));
     }
-    return cell->info();
+    return vertex;
   };
-  std::vector<int> ring;
+  // The faces in the order of their poles, so that a run's output does not depend on which cell
+  // CGAL's edge iterator reports an edge from (the lower address).
+  std::vector<std::pair<std::pair<int, int>, typename Regular::Edge>> separating;
   for (auto edge = regular.finite_edges_begin(); edge != regular.finite_edges_end(); ++edge) {
-    const auto u = edge->first->vertex(edge->second), v = edge->first->vertex(edge->third);
+    const int a = edge->first->vertex(edge->second)->info();
+    const int b = edge->first->vertex(edge->third)->info();
     bool inner_first = false;
-    if (!separates(labels, u->info(), v->info(), inner_first)) continue;
-    ring.clear();
+    if (separates(labels, a, b, inner_first)) separating.push_back({std::minmax(a, b), *edge});
+  }
+  std::sort(separating.begin(), separating.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<typename Regular::Cell_handle> around;
+  std::vector<int> ring;
+  for (const auto& [poles_of_edge, edge] : separating) {
+    const auto u = edge.first->vertex(edge.second), v = edge.first->vertex(edge.third);
+    bool inner_first = false;
+    separates(labels, u->info(), v->info(), inner_first);
+    around.clear();
     bool bounded = true;
-    auto cell = regular.incident_cells(*edge), first = cell;
+    auto cell = regular.incident_cells(edge), first = cell;
     const auto second = std::next(first);
     do {
       if (regular.is_infinite(cell)) {
         bounded = false;
         break;
       }
-      const int index = vertex_of(cell);
-      if (ring.empty() || (ring.back() != index && ring.front() != index)) ring.push_back(index);
+      around.push_back(cell);
     } while (++cell != first);
     if (!bounded) {
       ++unbounded_faces;
       continue;
     }
+    // Start the polygon at its cell first in the container and go on toward the lower of its
+    // two neighbours, whatever cell and direction the circulator began with.
+    std::rotate(around.begin(),
+                std::min_element(around.begin(), around.end(),
+                                 [](auto x, auto y) { return x->info() < y->info(); }),
+                around.end());
+    const bool backward = around.size() > 2 && around[1]->info() > around.back()->info();
+    if (backward) std::reverse(around.begin() + 1, around.end());
+    ring.clear();
+    for (auto c : around) ring.push_back(vertex_of(c));
     if (ring.size() < 3) continue;  // the face has no area
     // The polygon turns about the edge u -> v as its cells do, and the cells' turn is decided
     // exactly from the poles (the polygon's own vertices may be a rounding error apart): from
@@ -192,7 +226,7 @@ void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& verti
         CGAL::orientation(bare(u), bare(v), bare(y), bare(x)) == CGAL::POSITIVE;
     // Counterclockwise seen from v, the fan faces along u -> v: toward the outer pole if u is
     // the inner one.
-    const bool reversed = turns_positively != inner_first;
+    const bool reversed = (turns_positively != inner_first) != backward;
     for (std::size_t k = 1; k + 1 < ring.size(); ++k) {
       if (reversed) {
         faces.push_back({ring[0], ring[k + 1], ring[k]});
@@ -217,34 +251,45 @@ void power_faces_2(const Reconstruction<2>& result, std::vector<Point<2>>& verti
   using Regular = CGAL::Regular_triangulation_2<Kernel, Tds>;
   using Weighted = typename Kernel::Weighted_point_2;
 
-  const auto& poles = result.poles.poles;
   const auto& labels = result.propagation.labels;
-  std::vector<std::pair<Weighted, int>> weighted;
-  weighted.reserve(poles.size());
-  for (std::size_t p = 0; p < poles.size(); ++p) {
-    const auto& c = poles[p].center;
-    weighted.push_back(
-        {Weighted(typename Kernel::Point_2(c[0], c[1]), poles[p].radius * poles[p].radius),
-         static_cast<int>(p)});
-  }
+  const auto weighted = weighted_poles<Weighted>(result, [](const Point<2>& c, double weight) {
+    return Weighted(typename Kernel::Point_2(c[0], c[1]), weight);
+  });
   Regular regular(weighted.begin(), weighted.end());
-  for (auto face : regular.all_face_handles()) face->info() = -1;
+  int faces_counted = 0;
+  for (auto face : regular.all_face_handles()) face->info() = faces_counted++;
+  std::vector<int> vertex_of_face(faces_counted, -1);
 
   Vertex_pool<2> pool(vertices);
   const auto vertex_of = [&](typename Regular::Face_handle face) {
-    if (face->info() < 0) {
+    int& vertex = vertex_of_face[face->info()];
+    if (vertex < 0) {
       const auto centre = regular.weighted_circumcenter(face);
       const std::array<Weighted, 3> points = {face->vertex(0)->point(), face->vertex(1)->point(),
                                               face->vertex(2)->point()};
-      face->info() = pool.index_of(weighted_circumcentre<2>(points, {centre.x(), centre.y()}));
+      vertex = pool.index_of(weighted_circumcentre<2>(points, {centre.x(), centre.y()}));
     }
-    return face->info();
+    return vertex;
   };
+  // In the order of their poles (see power_faces_3).
+  std::vector<std::pair<std::pair<int, int>, typename Regular::Edge>> separating;
   for (auto edge = regular.finite_edges_begin(); edge != regular.finite_edges_end(); ++edge) {
     const auto [face, i] = *edge;
+    const int a = face->vertex(face->cw(i))->info(), b = face->vertex(face->ccw(i))->info();
+    bool inner_first = false;
+    if (separates(labels, a, b, inner_first)) separating.push_back({std::minmax(a, b), *edge});
+  }
+  std::sort(separating.begin(), separating.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& [poles_of_edge, reported] : separating) {
+    // Seen from its face first in the container, whichever one CGAL reported it from.
+    const auto edge = reported.first->info() < reported.first->neighbor(reported.second)->info()
+                          ? reported
+                          : regular.mirror_edge(reported);
+    const auto [face, i] = edge;
     const auto u = face->vertex(face->cw(i)), v = face->vertex(face->ccw(i));
     bool inner_first = false;
-    if (!separates(labels, u->info(), v->info(), inner_first)) continue;
+    separates(labels, u->info(), v->info(), inner_first);
     const auto other = face->neighbor(i);
     if (regular.is_infinite(face) || regular.is_infinite(other)) {
       ++unbounded_faces;
