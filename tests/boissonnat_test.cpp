@@ -12,10 +12,10 @@ namespace sculpt {
 namespace {
 
 TEST(Boissonnat, ExactOnCurvesThatOnlyDigIntoTheHull) {
-  for (const auto& [name, truth] : std::vector<std::pair<const char*, shapes::Sampled_curve>>{
-           {"circle", shapes::circle(64)},
-           {"star", shapes::star(200)},
-           {"blob", shapes::blob(150)}}) {
+  for (const auto& [name, truth] :
+       std::vector<std::pair<const char*, shapes::Sampled_curve>>{{"circle", shapes::circle(64)},
+                                                                  {"star", shapes::star(200)},
+                                                                  {"blob", shapes::blob(150)}}) {
     SCOPED_TRACE(name);
     const auto result = reconstruct(truth.samples, testing::with_method(Method::boissonnat));
     EXPECT_EQ(testing::undirected(result.surface), testing::undirected(truth.edges));

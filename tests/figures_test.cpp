@@ -72,7 +72,8 @@ TEST(Figures, GeneratesEveryImageWithItsLayers) {
   }
   const std::string gallery = testing::read_file(out + "/README.md");
   // Every column of the paper's comparisons: the power crust, both co-cones, Table 2's.
-  for (const char* file : {"fig15a-femur.png", "fig14b.png", "fig15b-femur.png", "fig15c-knot.png"}) {
+  for (const char* file :
+       {"fig15a-femur.png", "fig14b.png", "fig15b-femur.png", "fig15c-knot.png"}) {
     EXPECT_NE(gallery.find(file), std::string::npos) << file;
   }
   EXPECT_NE(testing::read_file(out + "/table2.md").find("verdict of the tight co-cone"),

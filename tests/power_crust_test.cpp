@@ -45,7 +45,8 @@ double diagonal(const std::vector<Point<D>>& points) {
 }
 
 TEST(PowerCrust, ClosedOutwardManifoldsOfTheShapesGenus) {
-  for (const auto& [name, samples, genus] : std::vector<std::tuple<const char*, std::vector<Point<3>>, int>>{
+  for (const auto& [name, samples, genus] :
+       std::vector<std::tuple<const char*, std::vector<Point<3>>, int>>{
            {"sphere", shapes::sphere(2000), 0},
            {"torus", shapes::torus(4000), 1},
            {"bumpy sphere", shapes::bumpy_sphere(6000), 0}}) {
@@ -78,7 +79,8 @@ TEST(PowerCrust, PassesNearTheSamplesThroughVerticesOfItsOwn) {
 }
 
 TEST(PowerCrust, ClosedCurvesCounterclockwiseAroundWhatTheyBound) {
-  for (const auto& [name, truth, curves] : std::vector<std::tuple<const char*, shapes::Sampled_curve, std::size_t>>{
+  for (const auto& [name, truth, curves] :
+       std::vector<std::tuple<const char*, shapes::Sampled_curve, std::size_t>>{
            {"circle", shapes::circle(64), 1},
            {"star", shapes::star(200), 1},
            {"blob", shapes::blob(150), 1},
@@ -112,8 +114,7 @@ TEST(PowerCrust, EveryStageBuildsAndItsFilesHoldItsOwnVertices) {
   const auto truth = shapes::star(200);
   const auto curve = reconstruct(truth.samples, testing::with_method(Method::power_crust));
   testing::expect_every_stage_builds(curve);
-  const auto surface =
-      reconstruct(shapes::sphere(500), testing::with_method(Method::power_crust));
+  const auto surface = reconstruct(shapes::sphere(500), testing::with_method(Method::power_crust));
   testing::expect_every_stage_builds(surface);
   // Labelled by the same confidence labelling as the robust method.
   const auto robust = reconstruct(truth.samples);

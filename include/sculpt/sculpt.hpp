@@ -300,17 +300,17 @@ struct Statistics {
   std::size_t delaunay_cells = 0;    // cells of DT(S ∪ BBV)
   std::size_t sculpted_cells = 0;    // cells of DT(S ∪ OUP); 0 when it was not built
   std::size_t solid_cells = 0;
-  std::size_t candidate_facets = 0;  // crust, co-cone (3D): triangles the filter chose
-  std::size_t pruned_facets = 0;     // of those, removed at a sharp edge
-  bool rims_kept = false;            // the pruning kept the rims of holes (Candidates_stage)
-  std::size_t undersampled_samples = 0;      // co-cones: samples judged undersampled
+  std::size_t candidate_facets = 0;      // crust, co-cone (3D): triangles the filter chose
+  std::size_t pruned_facets = 0;         // of those, removed at a sharp edge
+  bool rims_kept = false;                // the pruning kept the rims of holes (Candidates_stage)
+  std::size_t undersampled_samples = 0;  // co-cones: samples judged undersampled
   std::size_t samples_without_umbrella = 0;  // tight co-cone: no closed fan in the co-cone's
-  double alpha = 0;                  // alpha-shape: the radius chosen, in the input's units
+  double alpha = 0;                          // alpha-shape: the radius chosen, in the input's units
   // A method that does not interpolate (the power crust): the vertices of its result, which are
   // not samples; 0 when the result's vertices are the samples.
   std::size_t surface_vertices = 0;
   std::size_t unbounded_power_faces = 0;  // power crust: inner-outer faces reaching infinity
-  std::size_t facets = 0;            // triangles (3D) or edges (2D) of the result
+  std::size_t facets = 0;                 // triangles (3D) or edges (2D) of the result
   // Of the result's ridges (edges of the surface in 3D, vertices of the curve in 2D):
   std::size_t boundary_ridges = 0;        // on one facet only: border edges, or curve end points
   std::size_t non_manifold_ridges = 0;    // on more than two facets

@@ -61,9 +61,10 @@ const char* to_string(Method method) {
 
 const std::vector<const char*>& method_names() {
   static const std::vector<const char*> names = {
-      to_string(Options{}.method),   to_string(Method::paper),  to_string(Method::crust),
-      to_string(Method::nn_crust),   to_string(Method::cocone), to_string(Method::advancing_front),
-      to_string(Method::alpha_shape), to_string(Method::power_crust),
+      to_string(Options{}.method),     to_string(Method::paper),
+      to_string(Method::crust),        to_string(Method::nn_crust),
+      to_string(Method::cocone),       to_string(Method::advancing_front),
+      to_string(Method::alpha_shape),  to_string(Method::power_crust),
       to_string(Method::tight_cocone), to_string(Method::boissonnat)};
   return names;
 }

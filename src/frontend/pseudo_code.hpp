@@ -66,16 +66,11 @@ inline Pseudo_code paper_pseudo_code() {
 // (src/methods/robust/confidence_labelling.hpp), after the poles: its lines and their places.
 inline void add_confidence_labelling_lines(Pseudo_code& code) {
   code.lines = {
-      "DT <- Delaunay(S + BBV)   # BB: 5x box",
-      "for each sample s:",
-      "    p+(s), p-(s) <- poles of Vor(s)",
-      "OSP <- convex poles: outer, weight 1",
-      "heap <- OSP   # largest |outer - inner| first",
-      "while heap not empty:",
-      "    p <- most confident pole; label it",
-      "    for q whose ball meets B(p) at s:",
-      "        ev(q, label p) max= cos(p s q)",
-      "    for q paired with p (antipodal):",
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",        "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",           "OSP <- convex poles: outer, weight 1",
+      "heap <- OSP   # largest |outer - inner| first", "while heap not empty:",
+      "    p <- most confident pole; label it",        "    for q whose ball meets B(p) at s:",
+      "        ev(q, label p) max= cos(p s q)",        "    for q paired with p (antipodal):",
       "        ev(q, other side) max= -cos(p s q)",
   };
   code.line_of_stage = common_stage_lines(2);
@@ -311,8 +306,11 @@ inline Pseudo_code boissonnat_pseudo_code() {
       "    solid <- solid - c",
       "surface <- facets solid | rest",
   };
-  code.line_of_stage = {{Stage::samples, 0}, {Stage::delaunay, 0}, {Stage::hull, 1},
-                        {Stage::solid, 7},   {Stage::surface, 8}};
+  code.line_of_stage = {{Stage::samples, 0},
+                        {Stage::delaunay, 0},
+                        {Stage::hull, 1},
+                        {Stage::solid, 7},
+                        {Stage::surface, 8}};
   return code;
 }
 

@@ -474,7 +474,8 @@ class Scene_builder {
       for (const auto& t : r_.surface) {
         for (int v : t) layer.positions.push_back(vec(points[v]));
       }
-      if (request_.smooth) layer.normals = vertex_normals(points, r_.surface, static_cast<int>(points.size()));
+      if (request_.smooth)
+        layer.normals = vertex_normals(points, r_.surface, static_cast<int>(points.size()));
       borders_and_defects();
       if (request_.wireframe) {
         Layer& wire = add("wireframe", "edges", Primitive::lines, palette::wireframe, 1.0f);
@@ -541,12 +542,11 @@ class Scene_builder {
     const auto marked = [&](const char* id, const std::string& title,
                             const std::vector<int>& samples, Color color) {
       if (samples.empty()) return;
-      Layer& layer = add(id, title + " (" + std::to_string(samples.size()) + ")",
-                         Primitive::points, color, 7.0f);
+      Layer& layer = add(id, title + " (" + std::to_string(samples.size()) + ")", Primitive::points,
+                         color, 7.0f);
       for (int s : samples) layer.positions.push_back(vec(r_.sites[s]));
     };
-    marked("undersampled", "undersampled samples", candidates.undersampled,
-           palette::undersampled);
+    marked("undersampled", "undersampled samples", candidates.undersampled, palette::undersampled);
     marked("without-umbrella", "samples without umbrella", candidates.without_umbrella,
            palette::without_umbrella);
   }

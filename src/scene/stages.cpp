@@ -32,13 +32,12 @@ const std::vector<Stage>& stages_of(Method method, int dimension) {
   static const std::vector<Stage> advancing_front = nn_crust;
   static const std::vector<Stage> alpha_shape = {Stage::samples, Stage::delaunay, Stage::solid,
                                                  Stage::surface};
-  static const std::vector<Stage> power_crust = {Stage::samples, Stage::delaunay,
-                                                 Stage::voronoi, Stage::poles,
-                                                 Stage::seeds,   Stage::propagation,
-                                                 Stage::surface};
-  static const std::vector<Stage> tight_cocone = {
-      Stage::samples, Stage::delaunay,   Stage::voronoi, Stage::poles,
-      Stage::candidates, Stage::solid, Stage::surface};
+  static const std::vector<Stage> power_crust = {
+      Stage::samples, Stage::delaunay,    Stage::voronoi, Stage::poles,
+      Stage::seeds,   Stage::propagation, Stage::surface};
+  static const std::vector<Stage> tight_cocone = {Stage::samples, Stage::delaunay,   Stage::voronoi,
+                                                  Stage::poles,   Stage::candidates, Stage::solid,
+                                                  Stage::surface};
   static const std::vector<Stage> boissonnat = {Stage::samples, Stage::delaunay, Stage::hull,
                                                 Stage::solid, Stage::surface};
   switch (method) {

@@ -30,8 +30,8 @@
 #include <cmath>
 #include <iterator>
 #include <map>
-#include <type_traits>
 #include <sculpt/sculpt.hpp>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -86,8 +86,8 @@ Point<D> weighted_circumcentre(const std::array<Weighted, D + 1>& cell, const Po
   }
   if (accurate) return inexact;
   using Exact = Exact_rational_kernel;
-  using Exact_weighted = typename std::conditional<D == 2, Exact::Weighted_point_2,
-                                                   Exact::Weighted_point_3>::type;
+  using Exact_weighted =
+      typename std::conditional<D == 2, Exact::Weighted_point_2, Exact::Weighted_point_3>::type;
   std::array<Exact_weighted, D + 1> exact;
   for (int j = 0; j <= D; ++j) {
     const auto& p = cell[j].point();
@@ -102,8 +102,8 @@ Point<D> weighted_circumcentre(const std::array<Weighted, D + 1>& cell, const Po
     const auto c = Exact().construct_weighted_circumcenter_2_object()(exact[0], exact[1], exact[2]);
     rounded = {CGAL::to_double(c.x()), CGAL::to_double(c.y())};
   } else {
-    const auto c = Exact().construct_weighted_circumcenter_3_object()(exact[0], exact[1],
-                                                                     exact[2], exact[3]);
+    const auto c =
+        Exact().construct_weighted_circumcenter_3_object()(exact[0], exact[1], exact[2], exact[3]);
     rounded = {CGAL::to_double(c.x()), CGAL::to_double(c.y()), CGAL::to_double(c.z())};
   }
   return rounded;
@@ -117,8 +117,8 @@ std::vector<std::pair<Weighted, int>> weighted_poles(const Reconstruction<D>& re
   std::vector<std::pair<Weighted, int>> weighted;
   weighted.reserve(poles.size());
   for (std::size_t p = 0; p < poles.size(); ++p) {
-    weighted.push_back({make(poles[p].center, poles[p].radius * poles[p].radius),
-                        static_cast<int>(p)});
+    weighted.push_back(
+        {make(poles[p].center, poles[p].radius * poles[p].radius), static_cast<int>(p)});
   }
   return weighted;
 }
@@ -140,8 +140,9 @@ void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& verti
                    std::vector<Facet<3>>& faces, std::size_t& unbounded_faces) {
   using Vertex_base = CGAL::Triangulation_vertex_base_with_info_3<
       int, Kernel, CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
-  using Cell_base = CGAL::Triangulation_cell_base_with_info_3<
-      int, Kernel, CGAL::Regular_triangulation_cell_base_3<Kernel>>;
+  using Cell_base =
+      CGAL::Triangulation_cell_base_with_info_3<int, Kernel,
+                                                CGAL::Regular_triangulation_cell_base_3<Kernel>>;
   using Tds = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
   using Regular = CGAL::Regular_triangulation_3<Kernel, Tds>;
   using Weighted = typename Kernel::Weighted_point_3;
@@ -245,8 +246,9 @@ void power_faces_2(const Reconstruction<2>& result, std::vector<Point<2>>& verti
                    std::vector<Facet<2>>& faces, std::size_t& unbounded_faces) {
   using Vertex_base = CGAL::Triangulation_vertex_base_with_info_2<
       int, Kernel, CGAL::Regular_triangulation_vertex_base_2<Kernel>>;
-  using Face_base = CGAL::Triangulation_face_base_with_info_2<
-      int, Kernel, CGAL::Regular_triangulation_face_base_2<Kernel>>;
+  using Face_base =
+      CGAL::Triangulation_face_base_with_info_2<int, Kernel,
+                                                CGAL::Regular_triangulation_face_base_2<Kernel>>;
   using Tds = CGAL::Triangulation_data_structure_2<Vertex_base, Face_base>;
   using Regular = CGAL::Regular_triangulation_2<Kernel, Tds>;
   using Weighted = typename Kernel::Weighted_point_2;
