@@ -231,7 +231,7 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
     run.rule = surface_rule_name(options, D);
     const auto result = reconstruct(points, options);
     out = report_json(result.stats, run);
-    add_reproduced(result.surface);
+    if (result.interpolates()) add_reproduced(result.surface);  // else: vertices of its own
   }
   out["samples"] = points.size();
   out["dimension"] = D;

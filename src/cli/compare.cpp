@@ -227,7 +227,8 @@ class Comparison {
         measured["hausdorff"] = std::isfinite(distance) ? nlohmann::json(distance) : nullptr;
         measured["hausdorff_per_diagonal"] =
             std::isfinite(distance) ? nlohmann::json(distance / reference->diagonal) : nullptr;
-        if (given_reference_ && reference->points == samples) {  // same vertices, same order
+        // Same vertices, same order; a result with vertices of its own reproduces none.
+        if (given_reference_ && reference->points == samples && r.interpolates()) {
           measured["reproduced"] = triangles_reproduced(reference->triangles, r.surface);
         }
       }
