@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "file_support.hpp"
+#include "frontend/explanations.hpp"
 #include "render/image.hpp"
 #include "scene/scene.hpp"
 #include "shapes/shapes.hpp"
@@ -158,6 +159,28 @@ TEST(Viewer, SwitchesMethodOnTheSamePoints) {
                                   "method paper\nwait\nstage propagation\nframes 1\nquit\n"),
             0);
   EXPECT_GT(render::read_png(crust).width, 0);
+}
+
+// The Explanation panel follows the method and the stage; `explain` prints it.
+TEST(Viewer, ExplainsTheStageOnScreenForTheMethodThatRan) {
+  ASSERT_EQ(run_viewer_script("explain",
+                              "example bumpy\nwait\nstage poles\nexplain\nmethod tight-cocone\n"
+                              "wait\nstage solid\nexplain\nmethod power-crust\nwait\n"
+                              "stage surface\nexplain\nquit\n"),
+            0);
+  // (output_path would remove the log: it makes a fresh path.)
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/explain.log");
+  EXPECT_NE(log.find("explain poles: " + frontend::explanation(Method::robust, Surface_kind::closed,
+                                                               3, scene::Stage::poles)),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find("explain solid: The cells the peeling did not reach"), std::string::npos)
+      << log;
+  EXPECT_NE(log.find("explain surface: The reconstruction: triangles near the samples"),
+            std::string::npos)
+      << log;
+  // Before any reconstruction there is nothing to explain: one line, a failed run.
+  EXPECT_EQ(run_viewer_script("explain-nothing", "explain\nquit\n", "--example nonexistent"), 1);
 }
 
 TEST(Viewer, OpensAScanWithRepeatedPointsWhenToldToMergeThem) {

@@ -391,7 +391,8 @@ const std::vector<Figure>& paper_figures() {
          "the authors' Tight Cocone program. On the knot every column is closed (the paper "
          "method but for 2 non-manifold edges). On the femur none is right: the paper method "
          "has hundreds of non-manifold edges, the modified co-cone about 90 holes, the tight "
-         "co-cone a watertight skin with a few non-manifold edges that leaves about 550 samples "
+         "co-cone a watertight skin with a few dozen non-manifold edges that leaves about 550 "
+         "samples "
          "inside it; the paper reports its own method best there, and our robust default is "
          "(10 samples off the surface, no defect).",
          {{"a-knot", "the knot by sculpting (top row, column a)",

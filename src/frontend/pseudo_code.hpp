@@ -82,6 +82,26 @@ inline void add_confidence_labelling_lines(Pseudo_code& code) {
   code.before_any_event = 4;
 }
 
+// A bordered surface (section 4): one convex seed, every labelled pole inserted (UP), and the
+// facets between samples with an outer apex: the paper's lines, or the robust labelling's.
+inline Pseudo_code bordered_surface_pseudo_code(Pseudo_code code, int first_seed_line) {
+  using scene::Stage;
+  code.lines[first_seed_line] = "OSP <- one convex pole: outer   # bordered";
+  code.lines.resize(code.line_of_reason.at(Label_reason::pairing) + 1);
+  const int up = int(code.lines.size());
+  code.lines.insert(code.lines.end(), {
+                                          "UP <- labelled poles that are not convex",
+                                          "DT <- insert(DT, UP)",
+                                          "solid <- cells whose vertices are all in S",
+                                          "surface <- facets of S with an outer apex",
+                                      });
+  code.line_of_stage[Stage::outer_concave] = up;
+  code.line_of_stage[Stage::sculpted_delaunay] = up + 1;
+  code.line_of_stage[Stage::solid] = up + 2;
+  code.line_of_stage[Stage::surface] = up + 3;
+  return code;
+}
+
 inline Pseudo_code robust_pseudo_code() {
   using scene::Stage;
   Pseudo_code code;
@@ -316,6 +336,8 @@ inline Pseudo_code boissonnat_pseudo_code() {
 
 inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface_kind::closed,
                                       int dimension = 3) {
+  static const Pseudo_code paper_bordered = bordered_surface_pseudo_code(paper_pseudo_code(), 4),
+                           robust_bordered = bordered_surface_pseudo_code(robust_pseudo_code(), 3);
   static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code(),
                            open_curves = open_curves_pseudo_code(), crust = crust_pseudo_code(),
                            nn_crust = nn_crust_pseudo_code(),
@@ -328,7 +350,7 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
                            boissonnat = boissonnat_pseudo_code();
   switch (method) {
     case Method::paper:
-      return paper;
+      return kind == Surface_kind::bordered ? paper_bordered : paper;
     case Method::crust:
       return dimension == 2 ? crust : surface_crust;
     case Method::cocone:
@@ -348,7 +370,8 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
     case Method::robust:
       break;
   }
-  return joins_neighbours(method, kind, dimension) ? open_curves : robust;
+  if (joins_neighbours(method, kind, dimension)) return open_curves;
+  return inserts_poles(method, kind, dimension) ? robust_bordered : robust;
 }
 
 // The line to highlight for a stage; in the propagation, the line of the latest event's reason.

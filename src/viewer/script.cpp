@@ -205,6 +205,14 @@ std::string Script::before_frame(Viewer& viewer) {
         height = int(*h);
       }
       done(viewer.export_picture(argument, width, height));
+    } else if (command == "explain") {
+      // The Explanation panel's paragraph, on standard output: for demos and tests.
+      if (!viewer.has_reconstruction()) {
+        fail("'explain': no reconstruction on screen");
+        continue;
+      }
+      std::cout << "explain " << scene::stage_id(viewer.stage()) << ": " << viewer.explanation()
+                << std::endl;
     } else if (command == "cancel") {
       viewer.cancel();
     } else if (command == "expect-busy") {

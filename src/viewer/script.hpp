@@ -11,6 +11,7 @@
 //   step 25             propagation: show the first 25 labelling events
 //   clip 0.5 30 60      3D: cut away beyond a plane (position 0..1, azimuth, elevation); clip off
 //   pick-sample 10      select a sample (pick-pole N: a pole)
+//   explain             print the Explanation panel's paragraph for the stage on screen
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included
 //   export b.png 800x600  save a picture through the headless renderer

@@ -15,6 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include "frontend/explanations.hpp"
 #include "frontend/pseudo_code.hpp"
 #include "frontend/shot.hpp"
 #include "io/atomic_file.hpp"
@@ -983,6 +984,7 @@ void Viewer::draw_panel(int height) {
     draw_stepper();
     if (dimension_of(*reconstruction_) == 3) draw_clip_controls();
     if (request_.stage == scene::Stage::propagation) draw_propagation_controls();
+    draw_explanation();
     draw_pseudo_code();
     draw_layers();
     draw_selection();
@@ -1034,6 +1036,23 @@ void Viewer::draw_propagation_controls() {
       ImGui::TextUnformatted(")");
     }
   }
+}
+
+std::string Viewer::explanation() const {
+  if (!reconstruction_) return "";
+  const Options& options =
+      std::visit([](const auto& r) -> const Options& { return r.options; }, *reconstruction_);
+  return frontend::explanation(options.method, options.kind, dimension_of(*reconstruction_),
+                               request_.stage);
+}
+
+// What the stage on screen shows, why it matters and what to look for: open by default, so a
+// class reads it with the picture.
+void Viewer::draw_explanation() {
+  if (!ImGui::CollapsingHeader("Explanation", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::PushTextWrapPos(0.0f);  // wrap at the panel's edge
+  ImGui::TextUnformatted(explanation().c_str());
+  ImGui::PopTextWrapPos();
 }
 
 void Viewer::draw_pseudo_code() {

@@ -81,6 +81,8 @@ class Viewer {
   const std::string& message() const { return message_; }
   bool has_reconstruction() const { return reconstruction_ != nullptr; }
   scene::Stage stage() const { return request_.stage; }
+  // The Explanation panel's paragraph for the stage on screen ("" before any reconstruction).
+  std::string explanation() const;
 
   // One frame: take a finished job, handle the mouse and keys, build the panels, draw.
   void frame(int width, int height, double seconds_since_last_frame);
@@ -126,6 +128,7 @@ class Viewer {
   void draw_stepper();
   void draw_propagation_controls();
   void draw_pseudo_code();
+  void draw_explanation();
   void draw_statistics();
   void draw_layers();
   void draw_clip_controls();

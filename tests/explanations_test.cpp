@@ -1,0 +1,87 @@
+// The Explanation panel: every stage of every method, in each dimension it works in and for
+// either kind of surface, has its own paragraph that names what it draws.
+#include "frontend/explanations.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "frontend/pseudo_code.hpp"
+
+namespace sculpt {
+namespace {
+
+TEST(Explanations, EveryStageOfEveryMethodHasItsOwnParagraph) {
+  for (const char* name : method_names()) {
+    Method method;
+    ASSERT_TRUE(parse_method(name, method));
+    for (int dimension : {2, 3}) {
+      if (!reconstructs_in(method, dimension)) continue;
+      for (Surface_kind kind : {Surface_kind::closed, Surface_kind::bordered}) {
+        std::set<std::string> seen;
+        for (scene::Stage stage : scene::stages_of(method, dimension)) {
+          SCOPED_TRACE(std::string(name) + " " + std::to_string(dimension) + "D " +
+                       to_string(kind) + " " + scene::stage_id(stage));
+          const std::string text = frontend::explanation(method, kind, dimension, stage);
+          EXPECT_GT(text.size(), 120u) << text;  // what, why, what to look for
+          EXPECT_LT(text.size(), 700u) << text;  // a paragraph, not a page
+          EXPECT_TRUE(seen.insert(text).second) << "the same paragraph as another stage";
+          EXPECT_EQ(text.find("  "), std::string::npos) << text;
+          // Curves speak of curves and triangles, surfaces of surfaces and tetrahedra.
+          if (dimension == 2) EXPECT_EQ(text.find("tetrahedr"), std::string::npos) << text;
+        }
+      }
+    }
+  }
+}
+
+TEST(Explanations, EachMethodSaysWhatItsOwnSolidAndLabellingAre) {
+  using scene::Stage;
+  const auto explain = [](Method method, Stage stage) {
+    return frontend::explanation(method, Surface_kind::closed, 3, stage);
+  };
+  EXPECT_NE(explain(Method::alpha_shape, Stage::solid).find("alpha"), std::string::npos);
+  EXPECT_NE(explain(Method::tight_cocone, Stage::solid).find("peel"), std::string::npos);
+  EXPECT_NE(explain(Method::boissonnat, Stage::solid).find("Boissonnat"), std::string::npos);
+  EXPECT_NE(explain(Method::paper, Stage::propagation).find("inscribed"), std::string::npos);
+  EXPECT_NE(explain(Method::robust, Stage::propagation).find("confidence"), std::string::npos);
+  EXPECT_NE(explain(Method::power_crust, Stage::surface).find("not interpolate"),
+            std::string::npos);
+  EXPECT_NE(frontend::explanation(Method::paper, Surface_kind::bordered, 3, Stage::seeds)
+                .find("only one"),
+            std::string::npos);
+}
+
+// The pseudo-code follows the kind of surface: bordered, one seed and every labelled pole
+// inserted (UP), for the paper method and for the robust one on surfaces; each stage still has
+// its line.
+TEST(Explanations, TheBorderedPseudoCodeSeedsOnceAndInsertsEveryLabelledPole) {
+  for (Method method : {Method::paper, Method::robust}) {
+    SCOPED_TRACE(to_string(method));
+    const auto& code = frontend::pseudo_code(method, Surface_kind::bordered, 3);
+    const auto has = [&](const std::string& text) {
+      for (const char* line : code.lines) {
+        if (std::string(line).find(text) != std::string::npos) return true;
+      }
+      return false;
+    };
+    EXPECT_TRUE(has("one convex pole"));
+    EXPECT_TRUE(has("insert(DT, UP)"));
+    EXPECT_FALSE(has("OUP"));
+    for (scene::Stage stage : scene::stages_of(method, 3)) {
+      if (stage == scene::Stage::propagation) continue;
+      ASSERT_TRUE(code.line_of_stage.count(stage)) << scene::stage_id(stage);
+      EXPECT_LT(code.line_of_stage.at(stage), static_cast<int>(code.lines.size()));
+    }
+    EXPECT_NE(&code, &frontend::pseudo_code(method, Surface_kind::closed, 3));
+  }
+  // Bordered curves of the robust method join neighbours instead.
+  EXPECT_NE(
+      std::string(frontend::pseudo_code(Method::robust, Surface_kind::bordered, 2).lines.back())
+          .find("2 per sample"),
+      std::string::npos);
+}
+
+}  // namespace
+}  // namespace sculpt
