@@ -17,15 +17,6 @@
 namespace sculpt {
 namespace {
 
-std::set<std::array<int, 3>> sorted_triangles(const std::vector<Facet<3>>& triangles) {
-  std::set<std::array<int, 3>> set;
-  for (auto t : triangles) {
-    std::sort(t.begin(), t.end());
-    set.insert(t);
-  }
-  return set;
-}
-
 // A unit sphere of 3000 samples without those above z = 0.3: an opening of radius 0.95, wider
 // than the local feature size (undersampling.hpp says why a narrower one is not found).
 std::vector<Point<3>> sphere_with_an_opening() {
@@ -47,7 +38,7 @@ TEST(Cocones, NothingUndersampledOnDenseSmoothShapesAndBothCoconesAgree) {
     EXPECT_EQ(cocone.stats.undersampled_samples, 0u);
     EXPECT_EQ(tight.stats.samples_without_umbrella, 0u);
     EXPECT_TRUE(verdict(tight.stats).manifold) << verdict(tight.stats).line;
-    EXPECT_EQ(sorted_triangles(tight.surface), sorted_triangles(cocone.surface));
+    EXPECT_EQ(testing::unordered(tight.surface), testing::unordered(cocone.surface));
     // The surface is the skin of the cells left, facing out of them.
     EXPECT_GT(tight.solid.size(), 0u);
     EXPECT_TRUE(testing::consistently_oriented_closed(tight.surface));

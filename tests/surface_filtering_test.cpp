@@ -17,14 +17,7 @@
 namespace sculpt {
 namespace {
 
-std::set<std::array<int, 3>> unordered(const std::vector<Facet<3>>& triangles) {
-  std::set<std::array<int, 3>> result;
-  for (auto t : triangles) {
-    std::sort(t.begin(), t.end());
-    result.insert(t);
-  }
-  return result;
-}
+using testing::unordered;
 
 // An octahedron about the origin: its 8 faces, 6 vertices.
 const std::vector<Point<3>> octahedron_vertices = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},

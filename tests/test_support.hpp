@@ -36,6 +36,16 @@ inline std::map<std::array<int, 3>, int> faces_of(const std::vector<Cell<3>>& ce
   return faces;
 }
 
+// Triangles as vertex sets, whatever their orientation.
+inline std::set<std::array<int, 3>> unordered(const std::vector<Facet<3>>& triangles) {
+  std::set<std::array<int, 3>> result;
+  for (auto t : triangles) {
+    std::sort(t.begin(), t.end());
+    result.insert(t);
+  }
+  return result;
+}
+
 inline std::set<std::pair<int, int>> undirected(const std::vector<Facet<2>>& edges) {
   std::set<std::pair<int, int>> result;
   for (const auto& e : edges) result.insert(std::minmax(e[0], e[1]));

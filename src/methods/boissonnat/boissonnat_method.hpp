@@ -26,6 +26,7 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "../../core/cells_around_edge.hpp"
 #include "../../core/solid_and_skin.hpp"
 #include "../../core/stage_clock.hpp"
 
@@ -155,14 +156,8 @@ class Boissonnat_sculpting {
   bool vertex_on_boundary(int site) const { return site < n_ && boundary_facets_at_[site] > 0; }
 
   bool edge_on_boundary(Cell_handle cell, int i, int j) const {
-    if constexpr (D == 3) {
-      const auto first = triangulation_.incident_cells(cell, i, j);
-      auto c = first;
-      do {
-        if (is_outside(c)) return true;
-      } while (++c != first);
-    }
-    return false;
+    return any_cell_around_edge<Traits>(triangulation_, cell, i, j,
+                                        [&](Cell_handle c) { return is_outside(c); });
   }
 
   bool can_remove(Cell_handle cell) const {

@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/cells_around_edge.hpp"
 #include "../../core/circumball_query.hpp"
 #include "../../core/solid_and_skin.hpp"
 
@@ -158,14 +159,8 @@ class Manifold_carving {
   bool vertex_on_surface(Vertex_handle v) const { return outside_cells_at_[v->info()] > 0; }
 
   bool edge_on_surface(Cell_handle cell, int i, int j) const {
-    if constexpr (D == 3) {
-      const auto first = triangulation_.incident_cells(cell, i, j);
-      auto c = first;
-      do {
-        if (is_outside(c)) return true;
-      } while (++c != first);
-    }
-    return false;
+    return any_cell_around_edge<Traits>(triangulation_, cell, i, j,
+                                        [&](Cell_handle c) { return is_outside(c); });
   }
 
   // Boissonnat's condition, and no sample left off the solid.
