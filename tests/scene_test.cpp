@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "render/camera.hpp"
 #include "shapes/shapes.hpp"
 
@@ -36,7 +38,7 @@ TEST(Scene, StagesHaveTheirLayers) {
       {scene::Stage::outer_concave, {"inner-poles", "outer-poles", "samples"}},
       {scene::Stage::sculpted_delaunay,
        {"sculpted-delaunay", "inner-poles", "outer-poles", "samples"}},
-      {scene::Stage::solid, {"solid", "samples"}},
+      {scene::Stage::solid, {"solid", "sculpted-away", "samples"}},
       {scene::Stage::surface, {"curve", "samples"}},
   };
   for (const auto& [stage, ids] : expected) {
@@ -115,6 +117,44 @@ TEST(Scene, LayerSelectionAndErrors) {
   request = {};
   request.stage = scene::Stage::delaunay;
   EXPECT_THROW(scene::build_scene(without_cells, request), std::invalid_argument);
+}
+
+// The solid stage shows what sculpting took away from the hull beside what it kept: together
+// they are exactly the hull's cells (the all-sample cells of stage 1), in 2D and 3D.
+TEST(Scene, TheSolidStageShowsTheCellsSculptedAway) {
+  const auto hull_cells = [](const auto& r) {
+    std::size_t count = 0;
+    const int n = static_cast<int>(r.sample_count());
+    for (const auto& cell : r.delaunay.cells) {
+      count += std::all_of(cell.begin(), cell.end(), [&](int v) { return v < n; });
+    }
+    return count;
+  };
+  scene::Request request;
+  request.stage = scene::Stage::solid;
+  const scene::Scene curve = scene::build_scene(star(), request);
+  const scene::Layer* away = find(curve, "sculpted-away");
+  ASSERT_NE(away, nullptr);
+  EXPECT_EQ(away->positions.size() / 3 + star().solid.size(), hull_cells(star()));
+  EXPECT_GT(away->positions.size(), 0u);
+  EXPECT_NE(away->label.find(std::to_string(away->positions.size() / 3)), std::string::npos);
+
+  // In 3D (tetrahedra in the back half only, four triangles each): present, and labelled with
+  // the count of every cell removed.
+  const auto surface = reconstruct(shapes::bumpy_sphere(1500));
+  const scene::Scene solid = scene::build_scene(surface, request);
+  const scene::Layer* removed = find(solid, "sculpted-away");
+  ASSERT_NE(removed, nullptr);
+  EXPECT_GT(removed->positions.size(), 0u);
+  EXPECT_NE(removed->label.find(std::to_string(hull_cells(surface) - surface.solid.size())),
+            std::string::npos)
+      << removed->label;
+  // A method whose solid is not made of the hull's cells shows none.
+  Options alpha;
+  alpha.method = Method::alpha_shape;
+  const auto shape = reconstruct(shapes::bumpy_sphere(1500), alpha);
+  const scene::Scene alpha_solid = scene::build_scene(shape, request);
+  EXPECT_EQ(find(alpha_solid, "sculpted-away"), nullptr);
 }
 
 TEST(Scene, FocusShowsTwoBallsAndTheirSquares) {

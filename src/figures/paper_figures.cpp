@@ -100,8 +100,10 @@ const std::vector<Figure>& paper_figures() {
           {"b", "the outside triangles removed",
            "Only triangles with three sample corners are kept, so those reaching a box corner "
            "go at once; of the rest, the outer concave poles, once inserted, break those that "
-           "span a concavity. What remains is the solid, drawn as one fill.",
-           shot("example:blob", "solid")},
+           "span a concavity. What remains is the solid, drawn as one fill (the solid stage "
+           "also draws the removed triangles, layer sculpted-away, left out here as in the "
+           "paper).",
+           with_layers(shot("example:blob", "solid"), {"solid", "samples"})},
           {"c", "the boundary",
            "The curve is the solid's skin: the edges with solid on one side only, joining each "
            "sample to its two neighbours.",

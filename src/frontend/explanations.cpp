@@ -60,9 +60,10 @@ std::string solid(Method method, int dimension) {
              "membrane, an annulus stays a disc.";
     default:
       return "The sculpted solid (Kuo & Yau, sec. 3.3): the " + cells(dimension) +
-             " whose vertices are all samples and that survived the outer concave poles. The "
-             "cells sculpted away are those whose circumball held an outer pole. The surface is "
-             "this solid's skin; look for cells left in a concavity or missing in a thin part.";
+             " whose vertices are all samples and that survived the outer concave poles; the "
+             "hull's cells sculpted away (their circumball held an outer pole) are drawn beside "
+             "them in salmon. The surface is this solid's skin; look for cells left in a "
+             "concavity or missing in a thin part.";
   }
 }
 

@@ -24,6 +24,8 @@ inline constexpr Color inscribed_cube{0.85f, 0.20f, 0.45f};
 inline constexpr Color current_pole{1.00f, 0.85f, 0.00f};
 inline constexpr Color contradicted_pole{0.00f, 0.80f, 0.85f};  // cyan: apart from every label
 inline constexpr Color solid{0.55f, 0.70f, 0.90f};
+// What sculpting removed from the hull, beside what it kept (Kuo & Yau, Figs. 1 and 2).
+inline constexpr Color sculpted_away{0.95f, 0.60f, 0.55f};
 inline constexpr Color surface{0.78f, 0.80f, 0.86f};
 inline constexpr Color wireframe{0.15f, 0.15f, 0.20f};
 inline constexpr Color curve{0.05f, 0.05f, 0.05f};

@@ -414,16 +414,44 @@ class Scene_builder {
     }
   }
 
+  // The hull's cells that the method removed: the all-sample cells of stage 1 not in the solid
+  // (Kuo & Yau's Figs. 1 and 2: what sculpting takes away). Only for the methods whose solid is
+  // made of those cells, and when the triangulation was kept.
+  std::vector<Cell<D>> sculpted_away() const {
+    const Method m = r_.options.method;
+    const bool carves_the_hull = sculpts(m) || m == Method::boissonnat || m == Method::tight_cocone;
+    if (!carves_the_hull || r_.delaunay.cells.size() != r_.delaunay.cell_count) return {};
+    std::vector<Cell<D>> kept = r_.solid;
+    for (auto& cell : kept) std::sort(cell.begin(), cell.end());
+    std::sort(kept.begin(), kept.end());
+    std::vector<Cell<D>> removed;
+    for (const auto& cell : r_.delaunay.cells) {
+      if (std::any_of(cell.begin(), cell.end(), [&](int v) { return v >= n_; })) continue;
+      auto sorted = cell;
+      std::sort(sorted.begin(), sorted.end());
+      if (!std::binary_search(kept.begin(), kept.end(), sorted)) removed.push_back(cell);
+    }
+    return removed;
+  }
+
   void solid() {
+    const std::vector<Cell<D>> removed = sculpted_away();
     if constexpr (D == 2) {
       Layer& layer = add("solid", "sculpted solid (all-sample triangles)", Primitive::triangles,
                          palette::solid, 1.0f);
       for (const auto& cell : r_.solid) {
         for (int v : cell) layer.positions.push_back(vec(r_.sites[v]));
       }
+      if (!removed.empty()) {
+        Layer& away =
+            add("sculpted-away", "sculpted away (" + std::to_string(removed.size()) + " triangles)",
+                Primitive::triangles, palette::sculpted_away, 1.0f);
+        for (const auto& cell : removed) {
+          for (int v : cell) away.positions.push_back(vec(r_.sites[v]));
+        }
+      }
     } else {
-      // Tetrahedra shrunk towards their centroids, and the front half (+z, towards the default
-      // camera) cut away, so the inside of the solid shows.
+      // Shrunk, the front half cut away, so that the inside of the solid shows.
       const bool alpha = r_.options.method == Method::alpha_shape;
       const bool tight = r_.options.method == Method::tight_cocone;
       if (r_.options.method == Method::boissonnat) {
@@ -437,21 +465,34 @@ class Scene_builder {
                                  : "sculpted solid (all-sample tetrahedra)",
                          Primitive::triangles, palette::solid, 1.0f);
       layer.lit = true;
-      const float cut = 0.5f * (scene_.lower[2] + scene_.upper[2]);
-      for (const auto& cell : r_.solid) {
-        Vec3 corner[4], centroid{0, 0, 0};
+      shrunk_back_half(r_.solid, layer);
+      if (!removed.empty()) {
+        Layer& away = add("sculpted-away",
+                          "sculpted away (" + std::to_string(removed.size()) + " tetrahedra)",
+                          Primitive::triangles, palette::sculpted_away, 1.0f);
+        away.lit = true;
+        shrunk_back_half(removed, away);
+      }
+    }
+  }
+
+  // Tetrahedra shrunk towards their centroids, those in the front half (+z, towards the default
+  // camera) left out, so the inside shows.
+  void shrunk_back_half(const std::vector<Cell<D>>& cells, Layer& layer) const {
+    const float cut = 0.5f * (scene_.lower[2] + scene_.upper[2]);
+    for (const auto& cell : cells) {
+      Vec3 corner[4], centroid{0, 0, 0};
+      for (int i = 0; i < 4; ++i) {
+        corner[i] = vec(r_.sites[cell[i]]);
+        for (int k = 0; k < 3; ++k) centroid[k] += corner[i][k] / 4;
+      }
+      if (centroid[2] > cut) continue;
+      for (auto& c : corner) {
+        for (int k = 0; k < 3; ++k) c[k] = centroid[k] + 0.75f * (c[k] - centroid[k]);
+      }
+      for (int skip = 0; skip < 4; ++skip) {
         for (int i = 0; i < 4; ++i) {
-          corner[i] = vec(r_.sites[cell[i]]);
-          for (int k = 0; k < 3; ++k) centroid[k] += corner[i][k] / 4;
-        }
-        if (centroid[2] > cut) continue;
-        for (auto& c : corner) {
-          for (int k = 0; k < 3; ++k) c[k] = centroid[k] + 0.75f * (c[k] - centroid[k]);
-        }
-        for (int skip = 0; skip < 4; ++skip) {
-          for (int i = 0; i < 4; ++i) {
-            if (i != skip) layer.positions.push_back(corner[i]);
-          }
+          if (i != skip) layer.positions.push_back(corner[i]);
         }
       }
     }
