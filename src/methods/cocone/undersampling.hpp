@@ -79,8 +79,10 @@ inline std::vector<bool> undersampled_samples(const Reconstruction<3>& result,
   // Co-cone neighbours in compressed rows: q in the row of p when q is a co-cone neighbour of
   // p, and p in the row of q of the reverse relation (it is not symmetric).
   const auto rows = [&](bool reverse) {
+    // Named references, not a structured binding: C++17 lambdas cannot capture bindings.
     std::pair<std::vector<int>, std::vector<int>> row_set;
-    auto& [offsets, entries] = row_set;
+    std::vector<int>& offsets = row_set.first;
+    std::vector<int>& entries = row_set.second;
     offsets.assign(n + 1, 0);
     const auto for_each_pair = [&](auto&& use) {
       for (const auto& t : triangles) {
