@@ -141,5 +141,36 @@ TEST(Open_curves, ThePaperMethodKeepsItsLiteralRule) {
   EXPECT_NE(testing::undirected(result.surface), testing::undirected(arc.edges));
 }
 
+// A stroke drawn in the viewer becomes samples evenly spaced along it, its two ends included,
+// and the robust bordered rule gives it back as one open polyline.
+TEST(Open_curves, ADrawnStrokeBecomesEvenlySpacedSamplesThatGiveItBack) {
+  const std::vector<Point<2>> stroke = {{0, 0}, {1, 0}, {1, 0}, {1.5, 0.5}, {2, 0.3}};
+  const double spacing = 0.07;
+  const auto samples = shapes::resample_polyline(stroke, spacing);
+  ASSERT_GE(samples.size(), 3u);
+  EXPECT_EQ(samples.front(), stroke.front());
+  EXPECT_EQ(samples.back(), stroke.back());
+  double length = 0;
+  for (std::size_t i = 1; i < stroke.size(); ++i)
+    length += std::hypot(stroke[i][0] - stroke[i - 1][0], stroke[i][1] - stroke[i - 1][1]);
+  EXPECT_NEAR(double(samples.size() - 1), length / spacing, 1.0);
+  for (std::size_t i = 1; i < samples.size(); ++i) {
+    const double gap =
+        std::hypot(samples[i][0] - samples[i - 1][0], samples[i][1] - samples[i - 1][1]);
+    // Straight runs keep the spacing; across a corner the chord is shorter; the end may be
+    // up to one and a half spacings from the last.
+    EXPECT_LE(gap, 1.5 * spacing + 1e-12) << i;
+    EXPECT_GT(gap, 0.3 * spacing) << i;
+  }
+  const auto result = reconstruct(samples, robust_bordered());
+  EXPECT_EQ(result.stats.components, 1u);
+  EXPECT_EQ(result.stats.boundary_ridges, 2u);  // two end points
+  EXPECT_EQ(result.surface.size(), samples.size() - 1);
+  EXPECT_TRUE(chained(result.surface));
+  // Nothing to sample: no stroke, or no spacing.
+  EXPECT_TRUE(shapes::resample_polyline({}, spacing).empty());
+  EXPECT_TRUE(shapes::resample_polyline(stroke, 0).empty());
+}
+
 }  // namespace
 }  // namespace sculpt

@@ -270,6 +270,62 @@ nlohmann::json render_job(int triangles) {
           {"renderer", renderer.gl_renderer()}};
 }
 
+// The viewer's live 2D edit on `n` samples of the blob: one sample moved a little, the points
+// reconstructed with every stage kept (as the viewer does), and the scene of the Voronoi stage
+// (the busiest 2D picture) and of the curve built; the median of 21 edits, beside CGAL's
+// Delaunay triangulation of the same points.
+nlohmann::json edit_job(int n) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::time_point since) {
+    return std::chrono::duration<double>(Clock::now() - since).count();
+  };
+  auto points = shapes::blob(n).samples;
+  Options options;
+  options.keep_triangulations = true;
+  std::vector<double> reconstruct_times, scene_times, delaunay_times;
+  for (int edit = 0; edit < 21; ++edit) {
+    Point<2>& moved = points[(edit * 7919) % n];
+    moved[0] += edit % 2 ? -1e-3 : 1e-3;
+    delaunay_times.push_back(delaunay_seconds(points));
+    auto start = Clock::now();
+    const auto result = reconstruct(points, options);
+    reconstruct_times.push_back(seconds(start));
+    start = Clock::now();
+    for (scene::Stage stage : {scene::Stage::voronoi, scene::Stage::surface}) {
+      scene::Request request;
+      request.stage = stage;
+      scene::build_scene(result, request);
+    }
+    scene_times.push_back(seconds(start));
+  }
+  const auto median = [](std::vector<double> v) {
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+  };
+  return {{"samples", n},
+          {"reconstruct", median(reconstruct_times)},
+          {"scene", median(scene_times)},
+          {"delaunay", median(delaunay_times)}};
+}
+
+void print_edits(const std::vector<nlohmann::json>& rows) {
+  std::cout << "\nlive 2D edit (viewer): one sample moved, reconstructed with every stage kept "
+               "(robust), Voronoi and curve scenes built; median of 21 edits\n";
+  std::cout << fmt::format("{:>8}  {:>13}  {:>9}  {:>9}  {:>6}\n", "samples", "reconstruct",
+                           "scenes", "per edit", "x DT");
+  for (const auto& row : rows) {
+    if (row.contains("error")) {
+      std::cout << "edit timing failed: " << row["error"].get<std::string>() << '\n';
+      continue;
+    }
+    const double total = double(row["reconstruct"]) + double(row["scene"]);
+    std::cout << fmt::format("{:>8}  {:>10.1f} ms  {:>6.1f} ms  {:>6.1f} ms  {:>6.1f}\n",
+                             row["samples"].get<int>(), 1e3 * double(row["reconstruct"]),
+                             1e3 * double(row["scene"]), 1e3 * total,
+                             double(row["reconstruct"]) / double(row["delaunay"]));
+  }
+}
+
 void print_rendering(const nlohmann::json& measured) {
   if (measured.contains("error")) {
     std::cout << "rendering failed: " << measured["error"].get<std::string>() << '\n';
@@ -290,6 +346,10 @@ int run_bench_job(const Bench_job& job) {
   try {
     if (job.job == "render") {
       std::cout << render_job(job.torus_points).dump() << '\n';
+      return 0;
+    }
+    if (job.job == "edit") {
+      std::cout << edit_job(job.torus_points).dump() << '\n';
       return 0;
     }
     frontend::Input input;
@@ -394,6 +454,12 @@ int run_bench(const Bench_arguments& args) {
     }
   }
   print_rows(rows);
+  if (args.edits) {
+    std::vector<nlohmann::json> edits;
+    for (int n : {200, 1000, 5000})
+      edits.push_back(run_job_process({"--job", "edit", "--torus", std::to_string(n)}));
+    print_edits(edits);
+  }
   if (args.render_triangles > 0) {
     print_rendering(
         run_job_process({"--job", "render", "--torus", std::to_string(args.render_triangles)}));

@@ -16,6 +16,7 @@ struct Bench_arguments {
   std::vector<std::string> examples;  // built-in example names
   int torus_points = 0;               // also random points on a torus, if > 0
   int render_triangles = 0;           // also time a headless render of a surface this large
+  bool edits = false;                 // also time the viewer's live 2D edit (200 to 5,000 points)
   int runs = 1;                       // each measurement this many times, interleaved: the median
   std::vector<std::string> methods;   // empty: every method
   bool advancing_front = true;        // also CGAL's Advancing Front (3D)
@@ -39,7 +40,9 @@ nlohmann::json measure_input(const std::string& name, const std::vector<std::str
 
 // One measurement, in the process `sculpt bench` starts: prints its JSON on standard output.
 struct Bench_job {
-  std::string job;  // "delaunay", "method", "advancing-front" or "render" (a torus of N triangles)
+  // "delaunay", "method", "advancing-front", "render" (a torus of N triangles) or "edit" (a
+  // live 2D edit on N samples)
+  std::string job;
   std::string method;
   std::string input, example;
   int torus_points = 0;

@@ -270,6 +270,8 @@ int main(int argc, char** argv) {
   bench->add_option("--torus", bench_args.torus_points, "Also N random points on a torus");
   bench->add_option("--render", bench_args.render_triangles,
                     "Also time a headless 1600x1200 render of a surface of N triangles");
+  bench->add_flag("--edits", bench_args.edits,
+                  "Also time the viewer's live 2D edit on 200, 1,000 and 5,000 points");
   bench->add_flag("--bordered", bench_args.bordered, "Treat the point files as bordered");
   bench->add_flag("--merge-duplicates", bench_args.merge_duplicates,
                   "Remove repeated points of the files instead of refusing them");

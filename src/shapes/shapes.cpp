@@ -107,7 +107,7 @@ Sampled_curve spiral(double turns, double spacing) {
   return sample_open_curve(at, int(std::ceil(length / spacing)) + 1);
 }
 
-Sampled_curve two_strokes(double gap) {
+Sampled_curve two_strokes(double gap, int samples_per_stroke) {
   Sampled_curve result;
   for (int stroke = 0; stroke < 2; ++stroke) {
     const double phase = stroke, y = stroke * gap;
@@ -117,9 +117,9 @@ Sampled_curve two_strokes(double gap) {
           const double x = 2.0 * t;
           return Point<2>{x, y + 0.1 * std::sin(3 * x + phase)};
         },
-        41);
+        samples_per_stroke);
     result.samples.insert(result.samples.end(), one.samples.begin(), one.samples.end());
-    join_in_order(result, first, 41);
+    join_in_order(result, first, samples_per_stroke);
   }
   return result;
 }
@@ -386,6 +386,47 @@ std::vector<Point<2>> example_points_2(const std::string& name) {
   if (name == "spiral") return spiral().samples;
   if (name == "strokes") return two_strokes().samples;
   throw std::invalid_argument("no 2D example named '" + name + "'");
+}
+
+Sampled_curve example_curve_2(const std::string& name) {
+  constexpr int dense = 10;
+  if (name == "circle") return circle(64 * dense);
+  if (name == "star") return star(200 * dense);
+  if (name == "blob" || name == "blob-dense") return blob(600 * dense);
+  if (name == "nested") return nested_circles(120 * dense, 60 * dense);
+  if (name == "nonuniform") return nonuniform_ellipse(200 * dense);
+  if (name == "arc") return open_arc(60 * dense);
+  if (name == "wavy-arc") return wavy_arc(340, 150 * dense);
+  if (name == "spiral") return spiral(2.5, 0.2 / dense);
+  if (name == "strokes") return two_strokes(0.5, 40 * dense + 1);
+  throw std::invalid_argument("no 2D example named '" + name + "'");
+}
+
+std::vector<Point<2>> resample_polyline(const std::vector<Point<2>>& polyline, double spacing) {
+  std::vector<Point<2>> samples;
+  if (polyline.empty() || !(spacing > 0)) return samples;
+  samples.push_back(polyline.front());
+  double since_last = 0;  // arc length walked since the last sample
+  for (std::size_t i = 1; i < polyline.size(); ++i) {
+    const Point<2>& a = polyline[i - 1];
+    const Point<2>& b = polyline[i];
+    const double length = std::hypot(b[0] - a[0], b[1] - a[1]);
+    double at = spacing - since_last;  // where on this segment the next sample falls
+    for (; at <= length; at += spacing) {
+      const double t = at / length;
+      samples.push_back({a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])});
+    }
+    since_last = length - (at - spacing);
+  }
+  // The stroke's end is a sample too, unless the last one nearly is it already.
+  const Point<2>& end = polyline.back();
+  const Point<2>& last = samples.back();
+  if (std::hypot(end[0] - last[0], end[1] - last[1]) > spacing / 2) {
+    samples.push_back(end);
+  } else if (samples.size() > 1) {
+    samples.back() = end;
+  }
+  return samples;
 }
 
 std::vector<Point<3>> example_points_3(const std::string& name) {

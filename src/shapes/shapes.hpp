@@ -34,8 +34,11 @@ Sampled_curve sample_open_curve(const std::function<Point<2>(double)>& curve, in
 Sampled_curve wavy_arc(double degrees, int samples_per_turn = 150);
 // An Archimedean spiral of `turns` turns, its arms one unit apart, samples `spacing` apart.
 Sampled_curve spiral(double turns = 2.5, double spacing = 0.2);
-// Two wavy open strokes side by side, `gap` apart, samples 0.05 apart.
-Sampled_curve two_strokes(double gap = 0.5);
+// Two wavy open strokes side by side, `gap` apart, samples 0.05 apart (41 to a stroke).
+Sampled_curve two_strokes(double gap = 0.5, int samples_per_stroke = 41);
+// Samples along a drawn polyline, `spacing` apart by arc length, both ends included: how the
+// viewer turns a stroke of the mouse into samples of a chosen density.
+std::vector<Point<2>> resample_polyline(const std::vector<Point<2>>& polyline, double spacing);
 
 // Surfaces: samples only.
 std::vector<Point<3>> sphere(int samples);
@@ -63,6 +66,9 @@ const std::vector<Example>& examples();
 const Example* find_example(const std::string& name);  // nullptr if there is none
 // Throws std::invalid_argument for an unknown name.
 std::vector<Point<2>> example_points_2(const std::string& name);
+// The curve a 2D example's samples lie on, drawn ten times as densely: the ground truth a
+// reconstruction of those samples (or of edited ones) is compared with by eye.
+Sampled_curve example_curve_2(const std::string& name);
 std::vector<Point<3>> example_points_3(const std::string& name);
 
 }  // namespace sculpt::shapes

@@ -43,8 +43,16 @@ std::optional<Reconstruction_job::Outcome> Reconstruction_job::take_outcome() {
 void Reconstruction_job::run(Job_request request) {
   Outcome outcome;
   try {
-    const frontend::Input input = frontend::load_input(request.path, request.example,
-                                                       request.dimension, request.merge_duplicates);
+    frontend::Input input;
+    if (request.edited_points) {
+      input.points = *request.edited_points;
+      input.description = std::to_string(request.edited_points->size()) +
+                          " samples: " + request.edited_from + ", " +
+                          std::to_string(request.edits) + (request.edits == 1 ? " edit" : " edits");
+    } else {
+      input = frontend::load_input(request.path, request.example, request.dimension,
+                                   request.merge_duplicates);
+    }
     outcome.description = input.description;
     if (!request.shown_as.empty() && input.description.rfind(request.path, 0) == 0) {
       outcome.description = request.shown_as + input.description.substr(request.path.size());

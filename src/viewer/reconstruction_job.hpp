@@ -3,19 +3,25 @@
 #pragma once
 
 #include <atomic>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <sculpt/sculpt.hpp>
 #include <string>
 #include <thread>
 #include <variant>
+#include <vector>
 
 namespace sculpt::viewer {
 
 using Any_reconstruction = std::variant<Reconstruction<2>, Reconstruction<3>>;
 
 struct Job_request {
-  std::string path, example;      // one of them
+  std::string path, example;  // one of them, or edited points
+  // Points edited in the viewer (2D), with what they were edited from and the edit count.
+  std::shared_ptr<const std::vector<Point<2>>> edited_points;
+  std::string edited_from;
+  int edits = 0;
   int dimension = 0;              // 0: as the file says
   bool merge_duplicates = false;  // drop a file's repeated points instead of refusing them
   std::string shown_as;  // how to name the input when not by its path (e.g. "CGAL's fandisk.off")

@@ -4,12 +4,15 @@
 #include <GLFW/glfw3.h>
 
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <vector>
 
 namespace sculpt::viewer {
 namespace {
@@ -42,6 +45,23 @@ std::optional<long> number(const std::string& word, long low, long high) {
     return std::nullopt;
   }
   return value;
+}
+
+// A whole word as a finite real number, or nothing.
+std::optional<double> real(const std::string& word) {
+  if (word.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double value = std::strtod(word.c_str(), &end);
+  if (end != word.c_str() + word.size() || !std::isfinite(value)) return std::nullopt;
+  return value;
+}
+
+// Commands that take more than one argument parse their own.
+bool takes_arguments(const std::string& command) {
+  for (const char* name : {"export", "clip", "add-point", "move-point", "stroke", "layer"}) {
+    if (command == name) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -91,6 +111,24 @@ std::string Script::before_frame(Viewer& viewer) {
     commands_.pop_front();
     std::string extra;
     words >> extra;
+    // Every word after the command, for those that take several.
+    std::vector<std::string> arguments;
+    {
+      std::istringstream all(line);
+      std::string word;
+      all >> word;
+      while (all >> word) arguments.push_back(word);
+    }
+    // Arguments read as real numbers from `first` on; nothing if one is not a number.
+    const auto reals = [&](std::size_t first) -> std::optional<std::vector<double>> {
+      std::vector<double> values;
+      for (std::size_t i = first; i < arguments.size(); ++i) {
+        const auto value = real(arguments[i]);
+        if (!value) return std::nullopt;
+        values.push_back(*value);
+      }
+      return values;
+    };
     // Each command: what it needs, one line on stderr when that is not what it got.
     const auto needs_argument = [&](const char* what) {
       if (!argument.empty()) return true;
@@ -106,7 +144,7 @@ std::string Script::before_frame(Viewer& viewer) {
     const auto done = [&](bool succeeded) {
       if (!succeeded) fail("'" + line + "': " + viewer.message());
     };
-    if (!extra.empty() && command != "export" && command != "clip") {
+    if (!extra.empty() && !takes_arguments(command)) {
       fail("'" + line + "': one argument expected");
       continue;
     }
@@ -213,6 +251,60 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       std::cout << "explain " << scene::stage_id(viewer.stage()) << ": " << viewer.explanation()
                 << std::endl;
+    } else if (command == "edit") {
+      if (argument == "on" || argument == "off") {
+        viewer.set_editing(argument == "on");
+      } else {
+        fail("'" + line + "': expected edit on or off");
+      }
+    } else if (command == "add-point") {
+      const auto xy = reals(0);
+      if (!xy || xy->size() != 2) {
+        fail("'" + line + "': expected add-point X Y");
+        continue;
+      }
+      done(viewer.add_point({(*xy)[0], (*xy)[1]}));
+    } else if (command == "move-point") {
+      const auto sample = arguments.empty() ? std::nullopt : number(arguments[0], 0, 1L << 31);
+      const auto xy = reals(1);
+      if (!sample || !xy || xy->size() != 2) {
+        fail("'" + line + "': expected move-point SAMPLE X Y");
+        continue;
+      }
+      done(viewer.move_point(int(*sample), {(*xy)[0], (*xy)[1]}));
+    } else if (command == "delete-point") {
+      if (const auto sample = count("a sample index", 0, 1L << 31)) {
+        done(viewer.delete_point(int(*sample)));
+      }
+    } else if (command == "stroke") {
+      // stroke SPACING X1 Y1 X2 Y2 ...: a drawn polyline resampled SPACING apart (a share of
+      // the samples' box diagonal).
+      const auto values = reals(0);
+      if (!values || values->size() < 5 || values->size() % 2 != 1 || (*values)[0] <= 0) {
+        fail("'" + line + "': expected stroke SPACING X1 Y1 X2 Y2 ... (spacing > 0)");
+        continue;
+      }
+      std::vector<Point<2>> stroke;
+      for (std::size_t i = 1; i + 1 < values->size(); i += 2)
+        stroke.push_back({(*values)[i], (*values)[i + 1]});
+      done(viewer.add_stroke(stroke, (*values)[0]));
+    } else if (command == "undo") {
+      done(viewer.undo_edit());
+    } else if (command == "save-points") {
+      if (needs_argument("a .xy path")) done(viewer.save_points(argument));
+    } else if (command == "layer") {
+      if (arguments.size() != 2 || (arguments[1] != "on" && arguments[1] != "off")) {
+        fail("'" + line + "': expected layer NAME on|off");
+        continue;
+      }
+      done(viewer.set_layer_visible(arguments[0], arguments[1] == "on"));
+    } else if (command == "stats") {
+      // The shown reconstruction's statistics, one JSON line on standard output.
+      if (!viewer.has_reconstruction()) {
+        fail("'stats': no reconstruction on screen");
+        continue;
+      }
+      std::cout << "stats: " << viewer.statistics_line() << std::endl;
     } else if (command == "cancel") {
       viewer.cancel();
     } else if (command == "expect-busy") {

@@ -12,6 +12,11 @@
 //   clip 0.5 30 60      3D: cut away beyond a plane (position 0..1, azimuth, elevation); clip off
 //   pick-sample 10      select a sample (pick-pole N: a pole)
 //   explain             print the Explanation panel's paragraph for the stage on screen
+//   stats               print the shown reconstruction's statistics, one JSON line
+//   edit on             2D: the mouse adds, drags and deletes samples (edit off: it does not)
+//   add-point 0.1 0.2   2D: add a sample and reconstruct (move-point K X Y, delete-point K,
+//                       stroke SPACING X1 Y1 X2 Y2 ..., undo, save-points a.xy)
+//   layer voronoi off   hide (or show) a layer of the stage on screen
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included
 //   export b.png 800x600  save a picture through the headless renderer

@@ -55,7 +55,9 @@ std::string request_key(const Job_request& r) {
   return r.path + "|" + r.example + "|" + std::to_string(r.dimension) + "|" +
          to_string(r.options.method) + "|" + to_string(r.options.kind) + "|" +
          std::to_string(r.options.box_factor) + "|" + to_string(r.options.rule) + "|" +
-         std::to_string(r.options.alpha) + "|" + std::to_string(r.merge_duplicates);
+         std::to_string(r.options.alpha) + "|" + std::to_string(r.merge_duplicates) + "|" +
+         // Edited points are never the same twice: each edit makes a new set.
+         std::to_string(reinterpret_cast<std::uintptr_t>(r.edited_points.get()));
 }
 
 int rule_index(const std::string& name) {
@@ -87,6 +89,7 @@ Viewer::Viewer() : renderer_(std::make_unique<render::Renderer>()) {}
 
 void Viewer::open_example(const std::string& name, bool force_bordered) {
   close_tour();
+  editor_.stop();
   Job_request request;
   request.example = name;
   if (const auto* example = shapes::find_example(name)) {
@@ -97,6 +100,7 @@ void Viewer::open_example(const std::string& name, bool force_bordered) {
 
 void Viewer::open_file(const std::string& path) {
   close_tour();
+  editor_.stop();
   Job_request request;
   request.path = path;
   std::snprintf(path_field_, sizeof path_field_, "%s", path.c_str());
@@ -105,7 +109,11 @@ void Viewer::open_file(const std::string& path) {
 
 void Viewer::rerun() {
   explore();
-  start_job(last_request_);
+  if (editor_.active()) {
+    reconstruct_edits();
+  } else {
+    start_job(last_request_);
+  }
 }
 
 bool Viewer::switch_method(const std::string& name) {
@@ -114,7 +122,7 @@ bool Viewer::switch_method(const std::string& name) {
     message_ = "no method '" + name + "'";
     return false;
   }
-  if (last_request_.path.empty() && last_request_.example.empty()) {
+  if (last_request_.path.empty() && last_request_.example.empty() && !editor_.active()) {
     message_ = "nothing loaded to reconstruct";
     return false;
   }
@@ -138,8 +146,9 @@ Job_request Viewer::with_options(Job_request request) const {
 void Viewer::start_job(Job_request request) {
   request = with_options(std::move(request));
   last_request_ = request;
-  message_ =
-      "reconstructing " + (request.example.empty() ? request.path : "example " + request.example);
+  message_ = "reconstructing " + (request.edited_points     ? "the edited samples"
+                                  : request.example.empty() ? request.path
+                                                            : "example " + request.example);
   job_.start(std::move(request));
 }
 
@@ -167,6 +176,11 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
   reconstruction_ = std::move(reconstruction);
   description_ = std::move(description);
   shown_request_ = last_request_;
+  if (!shown_request_.edited_points) {
+    // The ground truth of a 2D example stays with its edited samples.
+    const shapes::Example* example = shapes::find_example(shown_request_.example);
+    truth_example_ = example && example->dimension == 2 ? example->name : "";
+  }
   message_ = "showing " + description_;
   const auto& stages = shown_stages();
   request_ = default_view(std::find(stages.begin(), stages.end(), request_.stage) != stages.end()
@@ -508,6 +522,7 @@ void Viewer::rebuild_scene() {
   try {
     scene::Scene scene = std::visit([&](const auto& r) { return scene::build_scene(r, request_); },
                                     *reconstruction_);
+    add_true_curve(scene);
     renderer_->set_scene(scene);
     const float aspect = frame_height_ > 0
                              ? float(view_width(frame_width_)) / float(view_height(frame_height_))
@@ -540,6 +555,9 @@ void Viewer::frame(int width, int height, double seconds) {
   frame_width_ = width;
   frame_height_ = height;
   take_finished_job();
+  // Edits made while a reconstruction ran: the newest points, once it has ended (a drag
+  // reconstructs as fast as the reconstructions come, never queueing them).
+  if (edits_pending_ && !job_.running()) reconstruct_edits();
   advance_playback(seconds);
   advance_move_to_panel(seconds);
   handle_input(width, height);
@@ -585,14 +603,31 @@ void Viewer::advance_playback(double seconds) {
 void Viewer::handle_input(int width, int height) {
   ImGuiIO& io = ImGui::GetIO();
   if (!io.WantCaptureKeyboard) {
-    for (int key :
-         {GLFW_KEY_R, GLFW_KEY_F, GLFW_KEY_H, GLFW_KEY_RIGHT, GLFW_KEY_LEFT, GLFW_KEY_SPACE,
-          GLFW_KEY_PERIOD, GLFW_KEY_COMMA, GLFW_KEY_P, GLFW_KEY_PAGE_DOWN, GLFW_KEY_PAGE_UP,
-          GLFW_KEY_RIGHT_BRACKET, GLFW_KEY_LEFT_BRACKET, GLFW_KEY_T, GLFW_KEY_ESCAPE}) {
+    for (int key : {GLFW_KEY_R,
+                    GLFW_KEY_F,
+                    GLFW_KEY_H,
+                    GLFW_KEY_RIGHT,
+                    GLFW_KEY_LEFT,
+                    GLFW_KEY_SPACE,
+                    GLFW_KEY_PERIOD,
+                    GLFW_KEY_COMMA,
+                    GLFW_KEY_P,
+                    GLFW_KEY_PAGE_DOWN,
+                    GLFW_KEY_PAGE_UP,
+                    GLFW_KEY_RIGHT_BRACKET,
+                    GLFW_KEY_LEFT_BRACKET,
+                    GLFW_KEY_T,
+                    GLFW_KEY_ESCAPE,
+                    GLFW_KEY_E,
+                    GLFW_KEY_U,
+                    GLFW_KEY_Z,
+                    GLFW_KEY_DELETE,
+                    GLFW_KEY_BACKSPACE}) {
       if (ImGui::IsKeyPressed(key)) on_key(key);
     }
   }
   if (io.WantCaptureMouse || !reconstruction_) return;
+  if (editing_ && handle_editing_input(width, height)) return;
 
   const glm::vec2 delta(io.MouseDelta.x, io.MouseDelta.y);
   const float scale = 2.0f / float(view_height(height));
@@ -677,6 +712,20 @@ void Viewer::on_key(int key) {
     case GLFW_KEY_ESCAPE:
       close_tour();
       break;
+    case GLFW_KEY_E:
+      editing_ = !editing_;
+      if (editing_ && !begin_editing()) editing_ = false;
+      break;
+    case GLFW_KEY_U:
+      undo_edit();
+      break;
+    case GLFW_KEY_Z:  // Ctrl+Z
+      if (ImGui::GetIO().KeyCtrl) undo_edit();
+      break;
+    case GLFW_KEY_DELETE:
+    case GLFW_KEY_BACKSPACE:
+      if (editing_ && request_.focus_sample >= 0) delete_point(request_.focus_sample);
+      break;
     default:
       break;
   }
@@ -749,8 +798,21 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
   }
   if (!shown.example.empty()) shot["example"] = shown.example;
   if (!shown.path.empty()) shot["input"] = std::filesystem::absolute(shown.path).string();
+  // Edited samples exist only here: `sculpt render` reads them from a file of their own.
+  const auto edited_points =
+      std::filesystem::temp_directory_path() / ("sculpt-view-" + std::to_string(getpid()) + ".xy");
+  if (shown.edited_points) {
+    try {
+      viewer::save_points(edited_points.string(), *shown.edited_points);
+    } catch (const std::exception& e) {
+      message_ = std::string("error: ") + e.what();
+      return false;
+    }
+    shot["input"] = edited_points.string();
+  }
   std::vector<std::string> visible;
   for (const auto& layer : renderer_->scene().layers) {
+    if (layer.id == "true-curve") continue;  // the viewer's own overlay: not a stage's layer
     if (std::find(hidden_layers_.begin(), hidden_layers_.end(), layer.id) == hidden_layers_.end()) {
       visible.push_back(layer.id);
     }
@@ -762,6 +824,7 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
   const std::string command = sculpt.string() + " render --shots " + shots.string() + " 2>&1";
   const int status = std::system(command.c_str());
   std::filesystem::remove(shots);
+  std::filesystem::remove(edited_points);
   message_ = status == 0 ? "saved " + path : "the picture could not be made (sculpt render failed)";
   return status == 0;
 }
@@ -983,6 +1046,7 @@ void Viewer::draw_panel(int height) {
   if (reconstruction_) {
     draw_stepper();
     if (dimension_of(*reconstruction_) == 3) draw_clip_controls();
+    if (dimension_of(*reconstruction_) == 2) draw_editing_controls();
     if (request_.stage == scene::Stage::propagation) draw_propagation_controls();
     draw_explanation();
     draw_pseudo_code();
@@ -1187,6 +1251,9 @@ void Viewer::draw_help() {
       "right or middle drag pan\n"
       "wheel                zoom\n"
       "click                pick a sample or a pole\n"
+      "E                    edit samples (2D): click adds, drag moves,\n"
+      "                     right click or Delete removes, Shift+drag draws\n"
+      "U or Ctrl+Z          undo the last edit\n"
       "R or F               fit and reset the camera\n"
       "Page Down / Page Up  paper tour: next / previous panel\n"
       "] and [              paper tour: next / previous figure\n"

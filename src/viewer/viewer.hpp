@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <deque>
 #include <memory>
 #include <optional>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "figures/cgal_meshes.hpp"
+#include "point_editor.hpp"
 #include "reconstruction_job.hpp"
 #include "render/camera.hpp"
 #include "render/renderer.hpp"
@@ -60,6 +62,20 @@ class Viewer {
   bool pick_pole(int pole) { return pick(pole, false); }
   void reset_camera();
 
+  // Live editing of 2D samples (the Edit samples panel, the mouse, scripts): each edit
+  // reconstructs the edited points with the method chosen. Each returns false, with a message,
+  // for 3D, nothing shown, an index out of range or a sample already there.
+  bool add_point(const Point<2>& p);
+  bool move_point(int sample, const Point<2>& to);
+  bool delete_point(int sample);
+  // A drawn stroke becomes samples `spacing` apart (a share of the samples' box diagonal).
+  bool add_stroke(const std::vector<Point<2>>& stroke, double spacing);
+  bool undo_edit();
+  bool save_points(const std::string& path);  // the samples shown, edited or not, as .xy
+  void set_editing(bool on) { editing_ = on; }
+  // Shows or hides a layer of the stage by id ("voronoi", "true-curve", ...).
+  bool set_layer_visible(const std::string& id, bool visible);
+
   // The tour of the paper's figures (Paper menu, --figure, script commands). Each returns false,
   // with a message, when there is no such figure or panel.
   bool open_figure(const std::string& id, std::size_t panel = 0);
@@ -76,13 +92,17 @@ class Viewer {
 
   // A reconstruction runs, has ended and its result is not shown yet, or the view is still
   // moving to a tour panel.
-  bool busy() const { return job_.running() || job_.outcome_waiting() || moving_to_panel(); }
+  bool busy() const {
+    return job_.running() || job_.outcome_waiting() || moving_to_panel() || edits_pending_;
+  }
   void cancel() { job_.request_cancel(); }
   const std::string& message() const { return message_; }
   bool has_reconstruction() const { return reconstruction_ != nullptr; }
   scene::Stage stage() const { return request_.stage; }
   // The Explanation panel's paragraph for the stage on screen ("" before any reconstruction).
   std::string explanation() const;
+  // The shown reconstruction's statistics as one line of JSON ("" before any).
+  std::string statistics_line() const;
 
   // One frame: take a finished job, handle the mouse and keys, build the panels, draw.
   void frame(int width, int height, double seconds_since_last_frame);
@@ -108,6 +128,13 @@ class Viewer {
   void on_key(int key);
   void advance_playback(double seconds);
   void click(glm::vec2 mouse, int width, int height);
+  // Editing: the shown samples become the editor's (2D only); an edit's outcome; the mouse.
+  bool begin_editing();
+  bool edited(bool succeeded);
+  void reconstruct_edits();
+  bool handle_editing_input(int width, int height);  // true when the mouse was used to edit
+  Point<2> world_at(glm::vec2 mouse, int width, int height) const;
+  void add_true_curve(scene::Scene& scene) const;
   int view_height(int window_height) const;
 
   // The tour: load the panel's reconstruction (a job, unless it is shown or recent), then move
@@ -132,6 +159,7 @@ class Viewer {
   void draw_statistics();
   void draw_layers();
   void draw_clip_controls();
+  void draw_editing_controls();
   void draw_selection();
   void draw_help();
 
@@ -193,10 +221,22 @@ class Viewer {
   std::string caption_figure_;  // the figure the caption's height was measured on
   float caption_min_height_ = 0;
 
+  // Live 2D editing.
+  Point_editor editor_;
+  bool editing_ = false;        // the mouse adds, drags and deletes samples
+  bool edits_pending_ = false;  // edited since the last reconstruction started
+  int dragged_sample_ = -1;
+  std::vector<Point<2>> stroke_;  // a stroke being drawn, in the plane
+  std::vector<std::array<float, 2>> stroke_on_screen_;
+  float stroke_spacing_ = 0.03f;  // a share of the samples' box diagonal
+  bool show_true_curve_ = false;  // the curve a 2D example was sampled from
+  std::string truth_example_;     // that example's name ("" for a file)
+
   // Panels.
   char path_field_[1024] = "";
   char camera_field_[1024] = "camera.json";
   char picture_field_[1024] = "sculpt.png";
+  char points_field_[1024] = "points.xy";
   int picture_size_[2] = {1600, 1200};
   bool show_help_ = false;
   bool quit_ = false;
