@@ -279,13 +279,28 @@ void Renderer::draw_overlay(int width, int height, const Draw_options& options) 
   };
   const float line = 12 * scale, margin = 8 * scale;
   if (options.legend) {
-    float y = margin;
+    std::vector<const scene::Layer*> listed;
+    float widest = 0;
     for (const auto& layer : scene_.layers) {
       if (!layer.in_legend || hidden(layer, options)) continue;
-      scene::Color swatch = layer.color;
+      listed.push_back(&layer);
+      widest = std::max(widest, float(stb_easy_font_width(const_cast<char*>(layer.label.c_str()))));
+    }
+    if (!listed.empty()) {
+      // On a box of its own, so that the legend reads over the data in a small picture.
+      const float pad = 3 * scale;
+      const float w = 12 * scale + scale * widest + 2 * pad, h = line * listed.size() + 2 * pad;
+      box(margin - pad - 1, margin - pad - 1, w + 2, h + 2, {0.55f, 0.55f, 0.55f, 1});
+      box(margin - pad, margin - pad, w, h, {0.98f, 0.98f, 0.98f, 1});
+    }
+    float y = margin;
+    for (const scene::Layer* layer : listed) {
+      scene::Color swatch = layer->color;
       swatch.a = 1;
+      // An outline, so a light swatch shows on the light box.
+      box(margin - 1, y + 1 * scale - 1, 8 * scale + 2, 8 * scale + 2, {0.3f, 0.3f, 0.3f, 1});
       box(margin, y + 1 * scale, 8 * scale, 8 * scale, swatch);
-      text(margin + 12 * scale, y + 1 * scale, layer.label, {0.1f, 0.1f, 0.1f, 1});
+      text(margin + 12 * scale, y + 1 * scale, layer->label, {0.1f, 0.1f, 0.1f, 1});
       y += line;
     }
   }

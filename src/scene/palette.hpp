@@ -1,5 +1,8 @@
 // The colours of the paper's figures: samples green, inner poles red, outer concave poles blue
-// in 2D and orange in 3D, Delaunay edges blue, Voronoi edges green, polar circles black.
+// in 2D and orange in 3D, Delaunay edges blue, Voronoi edges green, polar circles dark. Shades
+// are set apart where the paper's would be mistaken for one another (dark green samples on
+// light green Voronoi edges, deep blue poles on light blue edges), and every layer a stage can
+// show has a colour of its own: tests/palette_test.cpp checks every stage of every method.
 #pragma once
 
 #include "scene.hpp"
@@ -7,8 +10,9 @@
 namespace sculpt::scene::palette {
 
 inline constexpr Color sample{0.05f, 0.55f, 0.10f};
-inline constexpr Color delaunay_edge{0.20f, 0.35f, 0.90f};
-inline constexpr Color voronoi_edge{0.30f, 0.75f, 0.30f};
+inline constexpr Color delaunay_edge{0.40f, 0.55f, 0.95f};
+// Lighter than the samples: the same hue as the paper's, apart at a glance (palette_test.cpp).
+inline constexpr Color voronoi_edge{0.50f, 0.82f, 0.40f};
 inline constexpr Color pole{0.85f, 0.10f, 0.10f};
 inline constexpr Color inner_pole{0.85f, 0.10f, 0.10f};
 inline constexpr Color outer_pole_2d{0.10f, 0.25f, 0.95f};
@@ -16,12 +20,19 @@ inline constexpr Color outer_pole_3d{1.00f, 0.55f, 0.00f};
 inline constexpr Color convex_pole{0.55f, 0.20f, 0.70f};
 inline constexpr Color unlabelled_pole{0.60f, 0.60f, 0.60f};
 inline constexpr Color box_corner{0.10f, 0.10f, 0.10f};
-inline constexpr Color polar_ball{0.15f, 0.15f, 0.15f, 0.55f};
+inline constexpr Color polar_ball{0.30f, 0.30f, 0.30f, 0.55f};
 // Translucent spheres in 3D, legible a few at a time (a stride, or a picked sample).
-inline constexpr Color polar_ball_3d{0.45f, 0.55f, 0.85f, 0.8f};
+inline constexpr Color polar_ball_3d{0.00f, 0.45f, 0.70f, 0.8f};
+// What is picked: the sample's Voronoi cell, its polar balls and their inscribed cubes, and the
+// poles (the sample's two, or the pole clicked).
+inline constexpr Color focus_cell{0.45f, 0.30f, 0.00f};
 inline constexpr Color focus_ball{0.95f, 0.35f, 0.55f, 0.9f};
-inline constexpr Color inscribed_cube{0.85f, 0.20f, 0.45f};
+inline constexpr Color inscribed_cube{0.45f, 0.20f, 0.40f};
+inline constexpr Color picked_pole{0.95f, 0.60f, 0.95f};
+// The replay: the pole just labelled, the ball that labelled it and that ball's cube.
 inline constexpr Color current_pole{1.00f, 0.85f, 0.00f};
+inline constexpr Color source_ball{0.70f, 0.55f, 0.00f, 0.9f};
+inline constexpr Color source_cube{0.50f, 0.05f, 0.10f};
 inline constexpr Color contradicted_pole{0.00f, 0.80f, 0.85f};  // cyan: apart from every label
 inline constexpr Color solid{0.55f, 0.70f, 0.90f};
 // What sculpting removed from the hull, beside what it kept (Kuo & Yau, Figs. 1 and 2).

@@ -270,12 +270,12 @@ class Scene_builder {
     if (last.source >= 0) {
       const auto& source = r_.poles.poles[last.source];
       Layer& ball =
-          add("source-ball", "labelling polar ball", Primitive::balls, palette::focus_ball, 2.0f);
+          add("source-ball", "labelling polar ball", Primitive::balls, palette::source_ball, 2.0f);
       ball.positions.push_back(vec(source.center));
       ball.radii.push_back(float(source.radius));
       if (last.reason == Label_reason::inscribed_cube) {
         Layer& cube = add("source-cube", D == 2 ? "its inscribed square" : "its inscribed cube",
-                          Primitive::lines, palette::inscribed_cube, 2.0f);
+                          Primitive::lines, palette::source_cube, 2.0f);
         inscribed_cube(source, cube);
       }
     }
@@ -324,8 +324,8 @@ class Scene_builder {
     for (const auto& cell : r_.delaunay.cells) {
       if (std::find(cell.begin(), cell.end(), sample) != cell.end()) incident.push_back(cell);
     }
-    Layer& layer = add("focus-cell", "the sample's Voronoi cell", Primitive::lines,
-                       palette::voronoi_edge, 2.5f);
+    Layer& layer =
+        add("focus-cell", "the sample's Voronoi cell", Primitive::lines, palette::focus_cell, 2.5f);
     for (const auto& [a, b] : cells_sharing_a_facet<D>(incident)) {
       std::array<Point<D>, D + 1> corners_a, corners_b;
       for (int i = 0; i <= D; ++i) {
@@ -352,8 +352,8 @@ class Scene_builder {
                           palette::convex_pole, D == 2 ? 11 : 8);
       source.positions.push_back(vec(r_.poles.poles[event.source].center));
     }
-    Layer& picked = add("picked-pole", "picked pole", Primitive::points, palette::current_pole,
-                        D == 2 ? 12 : 9);
+    Layer& picked =
+        add("picked-pole", "picked pole", Primitive::points, palette::picked_pole, D == 2 ? 12 : 9);
     picked.positions.push_back(vec(p.center));
   }
 
@@ -364,8 +364,8 @@ class Scene_builder {
         add("focus-balls", "the sample's polar balls", Primitive::balls, palette::focus_ball, 2.0f);
     Layer& cubes = add("focus-cubes", D == 2 ? "inscribed squares" : "inscribed cubes",
                        Primitive::lines, palette::inscribed_cube, 2.0f);
-    Layer& poles = add("focus-poles", "the sample's poles", Primitive::points,
-                       palette::current_pole, D == 2 ? 10 : 8);
+    Layer& poles = add("focus-poles", "the sample's poles", Primitive::points, palette::picked_pole,
+                       D == 2 ? 10 : 8);
     for (int pole : {r_.poles.positive_pole[sample], r_.poles.negative_pole[sample]}) {
       if (pole < 0) continue;
       const auto& p = r_.poles.poles[pole];

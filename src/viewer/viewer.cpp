@@ -1141,6 +1141,9 @@ void Viewer::draw_layers() {
   for (const auto& layer : renderer_->scene().layers) {
     ImGui::ColorButton(("##" + layer.id).c_str(), imgui_color(layer.color),
                        ImGuiColorEditFlags_NoTooltip, ImVec2(12, 12));
+    // A light outline: dark swatches (the curve, the polar circles) show on the dark panel.
+    ImGui::GetWindowDrawList()->AddRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(),
+                                        IM_COL32(220, 220, 220, 255));
     ImGui::SameLine();
     bool visible =
         std::find(hidden_layers_.begin(), hidden_layers_.end(), layer.id) == hidden_layers_.end();

@@ -1,0 +1,118 @@
+// Every layer a stage shows has a colour of its own, told apart at a glance: for every method,
+// in 2D and 3D, every stage, with and without a picked sample or pole, mid-replay. Colours are
+// compared as people see them (CIELAB distance), not as RGB numbers: a dark and a light green
+// are far apart in RGB and still both "green" on a projector.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "scene/scene.hpp"
+#include "shapes/shapes.hpp"
+
+namespace sculpt {
+namespace {
+
+struct Lab {
+  double l, a, b;
+};
+
+Lab to_lab(const scene::Color& c) {
+  const auto linear = [](double u) {
+    return u <= 0.04045 ? u / 12.92 : std::pow((u + 0.055) / 1.055, 2.4);
+  };
+  const double r = linear(c.r), g = linear(c.g), b = linear(c.b);
+  const double x = (0.4124 * r + 0.3576 * g + 0.1805 * b) / 0.95047;
+  const double y = 0.2126 * r + 0.7152 * g + 0.0722 * b;
+  const double z = (0.0193 * r + 0.1192 * g + 0.9505 * b) / 1.08883;
+  const auto f = [](double t) { return t > 0.008856 ? std::cbrt(t) : 7.787 * t + 16.0 / 116; };
+  return {116 * f(y) - 16, 500 * (f(x) - f(y)), 200 * (f(y) - f(z))};
+}
+
+double perceived_distance(const scene::Color& p, const scene::Color& q) {
+  const Lab a = to_lab(p), b = to_lab(q);
+  return std::sqrt((a.l - b.l) * (a.l - b.l) + (a.a - b.a) * (a.a - b.a) +
+                   (a.b - b.b) * (a.b - b.b));
+}
+
+// CIELAB distance of 25: two colours a class names differently (about 2.3 is the smallest
+// difference anyone notices; the paper's green samples and green Voronoi edges were 18 apart).
+constexpr double least_distance = 25;
+
+// The pairs of layers of one picture whose colours are too close, as readable lines.
+std::vector<std::string> colour_clashes(const scene::Scene& scene, const std::string& where) {
+  std::vector<std::string> clashes;
+  for (std::size_t i = 0; i < scene.layers.size(); ++i) {
+    for (std::size_t j = i + 1; j < scene.layers.size(); ++j) {
+      const auto& p = scene.layers[i];
+      const auto& q = scene.layers[j];
+      if (p.positions.empty() || q.positions.empty()) continue;
+      const double d = perceived_distance(p.color, q.color);
+      if (d < least_distance) {
+        std::ostringstream line;
+        line << where << ": " << p.id << " and " << q.id << " are " << d << " apart";
+        clashes.push_back(line.str());
+      }
+    }
+  }
+  return clashes;
+}
+
+template <int D>
+void check_every_stage(const std::vector<Point<D>>& points, Surface_kind kind,
+                       std::set<std::string>& clashes, int& pictures) {
+  for (const char* name : method_names()) {
+    Options options;
+    parse_method(name, options.method);
+    if (!reconstructs_in(options.method, D)) continue;
+    options.kind = kind;
+    options.keep_triangulations = true;
+    const auto r = reconstruct(points, options);
+    const int events = static_cast<int>(r.propagation.events.size());
+    for (scene::Stage stage : scene::stages_of(options.method, D)) {
+      std::vector<scene::Request> requests(4);
+      requests[1].focus_sample = 0;  // a picked sample: its cell, poles, balls, cubes
+      requests[2].focus_pole = r.poles.poles.empty() ? -1 : 0;
+      requests[3].step = events / 2;  // mid-replay: the pole just labelled and its source
+      // Every layer the stage can draw, polar balls and samples included (3D draws them on
+      // shaded stages only when asked).
+      for (auto& request : requests) {
+        request.stage = stage;
+        request.layers = scene::layer_ids(scene::build_scene(r, request));
+        request.layers.push_back("polar-balls");
+        request.layers.push_back("samples");
+      }
+      for (const auto& request : requests) {
+        const auto scene = scene::build_scene(r, request);
+        ++pictures;
+        for (const auto& clash : colour_clashes(scene, std::string(name) + " " + std::to_string(D) +
+                                                           "D " + scene::stage_id(stage)))
+          clashes.insert(clash);
+      }
+    }
+  }
+}
+
+TEST(Palette, EveryLayerOfAStageHasAColourOfItsOwn) {
+  std::set<std::string> clashes;
+  int pictures = 0;
+  check_every_stage<2>(shapes::star(80).samples, Surface_kind::closed, clashes, pictures);
+  check_every_stage<2>(shapes::open_arc(40).samples, Surface_kind::bordered, clashes, pictures);
+  check_every_stage<3>(shapes::bumpy_sphere(800), Surface_kind::closed, clashes, pictures);
+  std::string all;
+  for (const auto& clash : clashes) all += clash + "\n";
+  EXPECT_TRUE(clashes.empty()) << clashes.size() << " clashes in " << pictures << " pictures:\n"
+                               << all;
+  EXPECT_GT(pictures, 100);
+}
+
+// The colour test itself tells the paper's near-misses apart from distinct colours.
+TEST(Palette, ThePerceivedDistanceSeparatesCloseHuesFromDistinctOnes) {
+  EXPECT_LT(perceived_distance({0.05f, 0.55f, 0.10f}, {0.30f, 0.75f, 0.30f}), least_distance);
+  EXPECT_GT(perceived_distance({0.85f, 0.10f, 0.10f}, {0.20f, 0.35f, 0.90f}), least_distance);
+  EXPECT_NEAR(perceived_distance({1, 1, 1}, {0, 0, 0}), 100, 0.5);
+}
+
+}  // namespace
+}  // namespace sculpt
