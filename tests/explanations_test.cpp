@@ -8,6 +8,7 @@
 #include <string>
 
 #include "frontend/pseudo_code.hpp"
+#include "shapes/shapes.hpp"
 
 namespace sculpt {
 namespace {
@@ -29,7 +30,9 @@ TEST(Explanations, EveryStageOfEveryMethodHasItsOwnParagraph) {
           EXPECT_TRUE(seen.insert(text).second) << "the same paragraph as another stage";
           EXPECT_EQ(text.find("  "), std::string::npos) << text;
           // Curves speak of curves and triangles, surfaces of surfaces and tetrahedra.
-          if (dimension == 2) EXPECT_EQ(text.find("tetrahedr"), std::string::npos) << text;
+          if (dimension == 2) {
+            EXPECT_EQ(text.find("tetrahedr"), std::string::npos) << text;
+          }
         }
       }
     }
@@ -81,6 +84,44 @@ TEST(Explanations, TheBorderedPseudoCodeSeedsOnceAndInsertsEveryLabelledPole) {
       std::string(frontend::pseudo_code(Method::robust, Surface_kind::bordered, 2).lines.back())
           .find("2 per sample"),
       std::string::npos);
+}
+
+// The replay reaches the conflict line: on the spiral (bordered, where poles of neighbouring
+// arms are offered both labels) the line is highlighted at the steps where a conflict follows
+// the event on screen, and the scene shows conflicts only once they have happened.
+TEST(Explanations, TheReplayReachesTheConflictLineWhenAConflictHappens) {
+  for (Method method : {Method::paper, Method::robust}) {
+    Options options;
+    options.method = method;
+    options.kind = Surface_kind::bordered;
+    const auto r = reconstruct(shapes::spiral().samples, options);
+    ASSERT_FALSE(r.propagation.conflicts.empty()) << to_string(method);
+    const auto& code = frontend::pseudo_code(method, options.kind, 2);
+    ASSERT_GE(code.conflict_line, 0);
+    std::set<int> lines;
+    std::size_t previously_shown = 0;
+    const long events = long(r.propagation.events.size());
+    for (long step = 0; step <= events; ++step) {
+      const Labelling_event* latest = step > 0 ? &r.propagation.events[step - 1] : nullptr;
+      lines.insert(frontend::current_line(code, scene::Stage::propagation, latest,
+                                          frontend::conflict_after(r.propagation, step)));
+      scene::Request request;
+      request.stage = scene::Stage::propagation;
+      request.step = step;
+      const auto scene = scene::build_scene(r, request);
+      std::size_t shown = 0;
+      for (const auto& layer : scene.layers)
+        if (layer.id == "contradicted-poles") shown = layer.positions.size();
+      EXPECT_GE(shown, previously_shown) << "step " << step;
+      previously_shown = shown;
+    }
+    EXPECT_TRUE(lines.count(code.conflict_line)) << to_string(method);
+    EXPECT_GT(previously_shown, 0u);
+    EXPECT_EQ(
+        std::string(code.lines[code.conflict_line]).find("conflict") != std::string::npos ||
+            std::string(code.lines[code.conflict_line]).find("contradicted") != std::string::npos,
+        true);
+  }
 }
 
 }  // namespace

@@ -100,6 +100,16 @@ TEST(Palette, EveryLayerOfAStageHasAColourOfItsOwn) {
   check_every_stage<2>(shapes::star(80).samples, Surface_kind::closed, clashes, pictures);
   check_every_stage<2>(shapes::open_arc(40).samples, Surface_kind::bordered, clashes, pictures);
   check_every_stage<3>(shapes::bumpy_sphere(800), Surface_kind::closed, clashes, pictures);
+  // A result that leaves samples off marks them, beside everything else the surface shows.
+  Options tiny_alpha;
+  tiny_alpha.method = Method::alpha_shape;
+  tiny_alpha.alpha = 0.05;
+  scene::Request surface;
+  surface.layers = {"surface", "samples", "unused-samples"};
+  const auto left_off = scene::build_scene(reconstruct(shapes::sphere(400), tiny_alpha), surface);
+  ASSERT_EQ(left_off.layers.size(), 3u);
+  for (const auto& clash : colour_clashes(left_off, "alpha-shape with samples left off"))
+    clashes.insert(clash);
   std::string all;
   for (const auto& clash : clashes) all += clash + "\n";
   EXPECT_TRUE(clashes.empty()) << clashes.size() << " clashes in " << pictures << " pictures:\n"

@@ -157,6 +157,22 @@ TEST(Scene, TheSolidStageShowsTheCellsSculptedAway) {
   EXPECT_EQ(find(alpha_solid, "sculpted-away"), nullptr);
 }
 
+// The samples a result leaves off are marked at the surface stage, one point each.
+TEST(Scene, TheSurfaceStageMarksTheSamplesLeftOff) {
+  Options tiny_alpha;
+  tiny_alpha.method = Method::alpha_shape;
+  tiny_alpha.alpha = 0.05;  // smaller than the spacing: many samples on no triangle
+  const auto r = reconstruct(shapes::sphere(400), tiny_alpha);
+  ASSERT_GT(r.stats.unused_samples, 0u);
+  scene::Request request;
+  const auto scene = scene::build_scene(r, request);
+  const scene::Layer* unused = find(scene, "unused-samples");
+  ASSERT_NE(unused, nullptr);
+  EXPECT_EQ(unused->positions.size(), r.stats.unused_samples);
+  // A result through every sample marks none.
+  EXPECT_EQ(find(scene::build_scene(star(), request), "unused-samples"), nullptr);
+}
+
 TEST(Scene, FocusShowsTwoBallsAndTheirSquares) {
   scene::Request request;
   request.stage = scene::Stage::samples;

@@ -339,6 +339,42 @@ TEST(Viewer, AnEditThatCannotBeMadeIsOneLineAndAFailure) {
   }
 }
 
+// Pixels of the drawing area within 12 of a colour (0..1 channels).
+std::size_t pixels_of(const render::Image& image, float r, float g, float b) {
+  std::size_t count = 0;
+  for (int y = 30; y < image.height; ++y) {
+    for (int x = panel_width + 1; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      count += std::abs(p[0] - 255 * r) < 12 && std::abs(p[1] - 255 * g) < 12 &&
+               std::abs(p[2] - 255 * b) < 12;
+    }
+  }
+  return count;
+}
+
+// The star's first labelling events are convex seeds far out by the box corners. Following,
+// the camera pans until the pole just labelled is in view; not following, it stays on the star
+// and an arrow at the edge points to the pole. The seeds stage points to its seeds the same way.
+TEST(Viewer, TheReplayFollowsThePoleJustLabelled) {
+  const std::string followed = testing::output_path("replay-followed.png"),
+                    still = testing::output_path("replay-still.png"),
+                    seeds = testing::output_path("seeds-arrows.png");
+  ASSERT_EQ(
+      run_viewer_script("follow",
+                        "example star\nwait\nstage propagation\nstep 1\nwait\n"
+                        "frames 2\nscreenshot " +
+                            followed + "\nfollow off\nkey r\nstep 1\nframes 2\nscreenshot " +
+                            still + "\nstage seeds\nframes 2\nscreenshot " + seeds + "\nquit\n"),
+      0);
+  const auto yellow = scene::palette::current_pole;
+  const float arrow[3] = {200 / 255.0f, 40 / 255.0f, 160 / 255.0f};
+  const auto followed_image = render::read_png(followed), still_image = render::read_png(still);
+  EXPECT_GT(pixels_of(followed_image, yellow.r, yellow.g, yellow.b), 20u);
+  EXPECT_EQ(pixels_of(still_image, yellow.r, yellow.g, yellow.b), 0u);
+  EXPECT_GT(pixels_of(still_image, arrow[0], arrow[1], arrow[2]), 50u);
+  EXPECT_GT(pixels_of(render::read_png(seeds), arrow[0], arrow[1], arrow[2]), 500u);
+}
+
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {
   const std::string log = testing::output_path("no-display.log");
   const int code = run("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SCULPT_VIEW_EXECUTABLE) +

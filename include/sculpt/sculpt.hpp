@@ -202,6 +202,9 @@ struct Labelling_event {
   // The strength of the evidence, 0..1: 1 for the paper's rules; for the robust labelling the
   // cosine of the angle at which the two polar balls meet (see confidence_labelling.hpp).
   float weight = 1;
+  // A conflict: how many labelling events had happened when it was offered (the replay shows
+  // it from that step on); -1 for an event.
+  long after_events = -1;
 };
 
 // Stage 4: the pole separation, in the order it ran. A conflict is an offer of the opposite

@@ -2,6 +2,7 @@
 // Fig. 5), and which line a moment of the algorithm is at.
 #pragma once
 
+#include <algorithm>
 #include <map>
 #include <vector>
 
@@ -14,6 +15,9 @@ struct Pseudo_code {
   std::map<scene::Stage, int> line_of_stage;
   std::map<Label_reason, int> line_of_reason;  // in the propagation: the latest event's reason
   int before_any_event = 0;                    // in the propagation, before the first event
+  // In the propagation: the line of a conflict (a label offered against the one a pole has),
+  // shown when one follows the event on screen; -1 for a method without conflicts.
+  int conflict_line = -1;
 };
 
 // The stages before the labelling show the first line or the poles' lines in every method.
@@ -43,6 +47,7 @@ inline Pseudo_code paper_pseudo_code() {
       "        label q like p",
       "    for q paired with p:",
       "        label q opposite p",
+      "    q labelled already: conflict, 1st label stays",
       "OUP <- outer poles that are not convex",
       "DT <- insert(DT, OUP)",
       "solid <- cells whose vertices are all in S",
@@ -50,15 +55,16 @@ inline Pseudo_code paper_pseudo_code() {
   };
   code.line_of_stage = common_stage_lines(2);
   code.line_of_stage.insert({{Stage::seeds, 4},
-                             {Stage::outer_concave, 13},
-                             {Stage::sculpted_delaunay, 14},
-                             {Stage::solid, 15},
-                             {Stage::surface, 16}});
+                             {Stage::outer_concave, 14},
+                             {Stage::sculpted_delaunay, 15},
+                             {Stage::solid, 16},
+                             {Stage::surface, 17}});
   code.line_of_reason = {{Label_reason::convex_seed, 4},
                          {Label_reason::inscribed_cube, 10},
                          {Label_reason::pairing, 12},
                          {Label_reason::ball_overlap, 10}};
   code.before_any_event = 6;
+  code.conflict_line = 13;
   return code;
 }
 
@@ -66,12 +72,18 @@ inline Pseudo_code paper_pseudo_code() {
 // (src/methods/robust/confidence_labelling.hpp), after the poles: its lines and their places.
 inline void add_confidence_labelling_lines(Pseudo_code& code) {
   code.lines = {
-      "DT <- Delaunay(S + BBV)   # BB: 5x box",        "for each sample s:",
-      "    p+(s), p-(s) <- poles of Vor(s)",           "OSP <- convex poles: outer, weight 1",
-      "heap <- OSP   # largest |outer - inner| first", "while heap not empty:",
-      "    p <- most confident pole; label it",        "    for q whose ball meets B(p) at s:",
-      "        ev(q, label p) max= cos(p s q)",        "    for q paired with p (antipodal):",
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",
+      "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",
+      "OSP <- convex poles: outer, weight 1",
+      "heap <- OSP   # largest |outer - inner| first",
+      "while heap not empty:",
+      "    p <- most confident pole; label it",
+      "    for q whose ball meets B(p) at s:",
+      "        ev(q, label p) max= cos(p s q)",
+      "    for q paired with p (antipodal):",
       "        ev(q, other side) max= -cos(p s q)",
+      "    ev >= 0.5 against q's label: contradicted",
   };
   code.line_of_stage = common_stage_lines(2);
   code.line_of_stage.insert({scene::Stage::seeds, 3});
@@ -80,6 +92,7 @@ inline void add_confidence_labelling_lines(Pseudo_code& code) {
                          {Label_reason::pairing, 10},
                          {Label_reason::inscribed_cube, 8}};
   code.before_any_event = 4;
+  code.conflict_line = 11;
 }
 
 // A bordered surface (section 4): one convex seed, every labelled pole inserted (UP), and the
@@ -87,7 +100,9 @@ inline void add_confidence_labelling_lines(Pseudo_code& code) {
 inline Pseudo_code bordered_surface_pseudo_code(Pseudo_code code, int first_seed_line) {
   using scene::Stage;
   code.lines[first_seed_line] = "OSP <- one convex pole: outer   # bordered";
-  code.lines.resize(code.line_of_reason.at(Label_reason::pairing) + 1);
+  // The labelling stays (its conflict line too); what follows it changes.
+  code.lines.resize(std::max(code.line_of_reason.at(Label_reason::pairing), code.conflict_line) +
+                    1);
   const int up = int(code.lines.size());
   code.lines.insert(code.lines.end(), {
                                           "UP <- labelled poles that are not convex",
@@ -106,6 +121,7 @@ inline Pseudo_code robust_pseudo_code() {
   using scene::Stage;
   Pseudo_code code;
   add_confidence_labelling_lines(code);
+  const int carving = int(code.lines.size());
   code.lines.insert(code.lines.end(), {
                                           "outer(c) <- OUP in ball(c) or power(c) outer",
                                           "carve outer c from outside, if manifold",
@@ -113,10 +129,10 @@ inline Pseudo_code robust_pseudo_code() {
                                           "solid <- cells left",
                                           "surface <- facets solid | outside",
                                       });
-  code.line_of_stage.insert({{Stage::outer_concave, 11},
-                             {Stage::sculpted_delaunay, 12},
-                             {Stage::solid, 14},
-                             {Stage::surface, 15}});
+  code.line_of_stage.insert({{Stage::outer_concave, carving},
+                             {Stage::sculpted_delaunay, carving + 1},
+                             {Stage::solid, carving + 3},
+                             {Stage::surface, carving + 4}});
   return code;
 }
 
@@ -130,7 +146,7 @@ inline Pseudo_code open_curves_pseudo_code() {
       "for each sample s:",
       "    p+(s), p-(s) <- poles of Vor(s)",
       "OSP <- convex poles: outer, weight 1",
-      "label the poles by confidence (as closed)",
+      "label poles by confidence (as closed); contradicted",
       "for each sample s:   # NN-crust, with ends",
       "    q <- nearest Delaunay neighbour of s",
       "    r <- nearest at > 90 degrees from q",
@@ -148,6 +164,7 @@ inline Pseudo_code open_curves_pseudo_code() {
                          {Label_reason::pairing, 4},
                          {Label_reason::inscribed_cube, 4}};
   code.before_any_event = 4;
+  code.conflict_line = 4;  // the labelling, in one line
   return code;
 }
 
@@ -302,12 +319,13 @@ inline Pseudo_code power_crust_pseudo_code() {
   using scene::Stage;
   Pseudo_code code;
   add_confidence_labelling_lines(code);
+  const int crust = int(code.lines.size());
   code.lines.insert(code.lines.end(), {
                                           "PD <- power diagram of poles, weight r(p)^2",
                                           "crust <- faces of PD between the cells of",
                                           "    an inner and an outer pole",
                                       });
-  code.line_of_stage.insert({Stage::surface, 12});
+  code.line_of_stage.insert({Stage::surface, crust + 1});
   return code;
 }
 
@@ -375,9 +393,17 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
 }
 
 // The line to highlight for a stage; in the propagation, the line of the latest event's reason.
-inline int current_line(const Pseudo_code& code, scene::Stage stage,
-                        const Labelling_event* latest) {
+// Whether a conflict was offered right after the first `shown` events (before the next one).
+inline bool conflict_after(const Propagation_stage& propagation, long shown) {
+  return std::any_of(propagation.conflicts.begin(), propagation.conflicts.end(),
+                     [&](const Labelling_event& c) { return c.after_events == shown; });
+}
+
+// `conflict_now`: a conflict was offered right after the latest event on screen.
+inline int current_line(const Pseudo_code& code, scene::Stage stage, const Labelling_event* latest,
+                        bool conflict_now = false) {
   if (stage != scene::Stage::propagation) return code.line_of_stage.at(stage);
+  if (conflict_now && code.conflict_line >= 0) return code.conflict_line;
   return latest ? code.line_of_reason.at(latest->reason) : code.before_any_event;
 }
 

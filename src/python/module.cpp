@@ -300,9 +300,10 @@ poles              center (p, d), radius (p,): the polar balls; cell (p,) int64:
                    partners[partner_offsets[k]:partner_offsets[k+1]]; records: all as one record
                    array
 seeds              convex_poles, outer_seeds: poles
-propagation        events: records (pole, label, source, reason, weight) in the order the
-                   labelling ran (label codes: sculpt.LABELS; reason codes: LABEL_REASONS;
-                   source -1: a convex seed); conflicts: offers of the other label, same records;
+propagation        events: records (pole, label, source, reason, weight, after_events) in the
+                   order the labelling ran (label codes: sculpt.LABELS; reason codes:
+                   LABEL_REASONS; source -1: a convex seed); conflicts: offers of the other
+                   label, same records, after_events the events before each (-1 for events);
                    labels (p,) uint8: the final label of each pole; unlabelled: a count
 insertion          inserted_poles: the poles inserted into DT (paper method: OUP, or UP bordered)
 sculpted_delaunay  cells, cell_count: DT(S + OUP) (paper method)

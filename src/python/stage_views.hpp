@@ -61,7 +61,7 @@ inline py::dtype record_type(const std::vector<Field>& fields, std::size_t size)
   return py::dtype(names, formats, offsets, static_cast<py::ssize_t>(size));
 }
 
-// Labelling events and conflicts (stage 4): pole, label, source, reason, weight.
+// Labelling events and conflicts (stage 4): pole, label, source, reason, weight, after_events.
 inline py::dtype labelling_event_type() {
   using E = Labelling_event;
   static_assert(sizeof(Label) == 1 && sizeof(Label_reason) == 1);
@@ -69,7 +69,8 @@ inline py::dtype labelling_event_type() {
                       {"label", "u1", offsetof(E, label)},
                       {"source", "i4", offsetof(E, source)},
                       {"reason", "u1", offsetof(E, reason)},
-                      {"weight", "f4", offsetof(E, weight)}},
+                      {"weight", "f4", offsetof(E, weight)},
+                      {"after_events", "i8", offsetof(E, after_events)}},
                      sizeof(E));
 }
 

@@ -263,7 +263,7 @@ class Scene_builder {
     std::vector<Label> labels(r_.poles.poles.size(), Label::unlabelled);
     for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
     labelled_poles(labels, /*only_inserted=*/false);
-    contradicted_poles(labels);
+    contradicted_poles(labels, long(shown));
     if (shown == 0) return;
     // The latest event: the pole just labelled, and the ball (and cube) that labelled it.
     const Labelling_event& last = events[shown - 1];
@@ -286,10 +286,12 @@ class Scene_builder {
 
   // Labelled poles that were offered the other label (paper: a conflict; robust: evidence at
   // least as strong as their own). Only drawn when there are some.
-  void contradicted_poles(const std::vector<Label>& labels) {
+  // The poles offered a label against their own, up to `shown` events of the replay.
+  void contradicted_poles(const std::vector<Label>& labels, long shown = -1) {
     std::vector<bool> contradicted(labels.size(), false);
     for (const auto& offer : r_.propagation.conflicts) {
-      contradicted[offer.pole] = labels[offer.pole] != Label::unlabelled;
+      if (shown >= 0 && offer.after_events > shown) continue;
+      if (labels[offer.pole] != Label::unlabelled) contradicted[offer.pole] = true;
     }
     if (std::find(contradicted.begin(), contradicted.end(), true) == contradicted.end()) return;
     const bool paper = r_.options.method == Method::paper;
@@ -629,6 +631,26 @@ class Scene_builder {
         if (border ? facets != 1 : facets <= 2) continue;
         for (int v : ridge) layer->positions.push_back(vec(r_.surface_points()[v]));
       }
+    }
+    unused_samples();
+  }
+
+  // The samples the result leaves out: an interpolating reconstruction should pass through
+  // every one, so each left off marks a place it went wrong (a valley cut across, a cavity).
+  void unused_samples() {
+    if (!r_.interpolates()) return;  // vertices of its own: no sample is on it
+    std::vector<bool> used(n_, false);
+    for (const auto& facet : r_.surface) {
+      for (int v : facet) {
+        if (v < n_) used[v] = true;
+      }
+    }
+    const auto unused = static_cast<std::size_t>(std::count(used.begin(), used.end(), false));
+    if (unused == 0) return;
+    Layer& layer = add("unused-samples", "samples left off (" + std::to_string(unused) + ")",
+                       Primitive::points, palette::unused_sample, D == 2 ? 10.0f : 7.0f);
+    for (int i = 0; i < n_; ++i) {
+      if (!used[i]) layer.positions.push_back(vec(r_.sites[i]));
     }
   }
 

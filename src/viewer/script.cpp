@@ -251,6 +251,12 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       std::cout << "explain " << scene::stage_id(viewer.stage()) << ": " << viewer.explanation()
                 << std::endl;
+    } else if (command == "follow") {
+      if (argument == "on" || argument == "off") {
+        viewer.set_follow(argument == "on");
+      } else {
+        fail("'" + line + "': expected follow on or off");
+      }
     } else if (command == "edit") {
       if (argument == "on" || argument == "off") {
         viewer.set_editing(argument == "on");

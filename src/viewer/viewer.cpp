@@ -216,6 +216,7 @@ bool Viewer::set_stage(scene::Stage stage) {
   explore();
   request_.stage = stage;
   scene_dirty_ = true;
+  follow_latest_event();
   return true;
 }
 
@@ -231,6 +232,7 @@ void Viewer::set_step(long events) {
   explore();
   request_.step = events < 0 ? -1 : std::min(events, event_count());
   scene_dirty_ = true;
+  follow_latest_event();
 }
 
 // The samples and poles of the shown reconstruction, to refuse a pick of one that is not there.
@@ -566,6 +568,7 @@ void Viewer::frame(int width, int height, double seconds) {
   draw_caption(width, height);
   if (show_help_) draw_help();
   rebuild_scene();
+  if (reconstruction_) draw_off_screen_markers(width, height);
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);
@@ -1090,6 +1093,9 @@ void Viewer::draw_propagation_controls() {
   ImGui::SliderFloat("events/s", &events_per_second_, 1.0f, 2000.0f, "%.0f",
                      ImGuiSliderFlags_Logarithmic);
   if (ImGui::SliderInt("event", &shown, 0, int(total))) set_step(shown);
+  if (ImGui::Checkbox("follow the action", &follow_) && follow_) follow_latest_event();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Pan to the pole just labelled whenever it leaves the view");
   if (const Labelling_event* e = latest_event()) {
     ImGui::Text("pole %d <- %s (%s", e->pole, to_string(e->label),
                 reason_name(e->reason, dimension_of(*reconstruction_)));
@@ -1125,7 +1131,12 @@ void Viewer::draw_pseudo_code() {
       std::visit([](const auto& r) -> const Options& { return r.options; }, *reconstruction_);
   const frontend::Pseudo_code& code =
       frontend::pseudo_code(options.method, options.kind, dimension_of(*reconstruction_));
-  const int current = frontend::current_line(code, request_.stage, latest_event());
+  // A conflict offered right after the event on screen: its line, so the replay reaches it.
+  const long shown = request_.step < 0 ? event_count() : request_.step;
+  const bool conflict_now =
+      std::visit([&](const auto& r) { return frontend::conflict_after(r.propagation, shown); },
+                 *reconstruction_);
+  const int current = frontend::current_line(code, request_.stage, latest_event(), conflict_now);
   const auto& lines = code.lines;
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {

@@ -73,6 +73,8 @@ class Viewer {
   bool undo_edit();
   bool save_points(const std::string& path);  // the samples shown, edited or not, as .xy
   void set_editing(bool on) { editing_ = on; }
+  // The replay keeps the pole just labelled in view (on by default).
+  void set_follow(bool on) { follow_ = on; }
   // Shows or hides a layer of the stage by id ("voronoi", "true-curve", ...).
   bool set_layer_visible(const std::string& id, bool visible);
 
@@ -135,6 +137,15 @@ class Viewer {
   bool handle_editing_input(int width, int height);  // true when the mouse was used to edit
   Point<2> world_at(glm::vec2 mouse, int width, int height) const;
   void add_true_curve(scene::Scene& scene) const;
+  // Following the replay (viewer_follow.cpp): what the stage points at, the camera kept on it,
+  // arrows at the edge to what lies outside the view.
+  struct Point_of_interest {
+    glm::vec3 at;
+    std::string label;
+  };
+  std::vector<Point_of_interest> points_of_interest() const;
+  void follow_latest_event();
+  void draw_off_screen_markers(int width, int height);
   int view_height(int window_height) const;
 
   // The tour: load the panel's reconstruction (a job, unless it is shown or recent), then move
@@ -220,6 +231,8 @@ class Viewer {
   int caption_height_ = 0;
   std::string caption_figure_;  // the figure the caption's height was measured on
   float caption_min_height_ = 0;
+
+  bool follow_ = true;  // the camera keeps the replay's pole just labelled in view
 
   // Live 2D editing.
   Point_editor editor_;

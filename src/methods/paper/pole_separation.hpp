@@ -64,7 +64,7 @@ class Pole_separation {
       tree_.relabel(pole, Label::unlabelled, label);
       stage_.events.push_back({pole, label, source, reason});
     } else {
-      stage_.conflicts.push_back({pole, label, source, reason});
+      stage_.conflicts.push_back({pole, label, source, reason, 1.0f, long(stage_.events.size())});
     }
   }
 

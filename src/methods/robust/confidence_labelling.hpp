@@ -198,8 +198,8 @@ class Confidence_labelling {
     stage_.events.push_back({pole, label, why.source, why.reason, why.weight});
     const Offer& against = offers.side[1 - winner];
     if (against.weight >= strong_evidence) {
-      stage_.conflicts.push_back(
-          {pole, label_of_side(1 - winner), against.source, against.reason, against.weight});
+      stage_.conflicts.push_back({pole, label_of_side(1 - winner), against.source, against.reason,
+                                  against.weight, long(stage_.events.size())});
     }
 
     for (int i = evidence_.offsets[pole]; i < evidence_.offsets[pole + 1]; ++i) {
@@ -216,7 +216,8 @@ class Confidence_labelling {
         }
       } else if (current != offered && link.weight >= strong_evidence &&
                  link.weight >= offers_[link.pole].side[side(current)].weight) {
-        stage_.conflicts.push_back({link.pole, offered, pole, reason, link.weight});
+        stage_.conflicts.push_back(
+            {link.pole, offered, pole, reason, link.weight, long(stage_.events.size())});
       }
     }
   }

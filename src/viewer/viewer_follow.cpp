@@ -1,0 +1,114 @@
+// The replay follows the action: the pole just labelled is kept in view (the camera pans to it,
+// keeping its zoom), and what lies outside the view (the pole just labelled when following is
+// off, the outer seeds far out by the box corners) gets an arrow at the edge pointing to it.
+#include <imgui.h>
+
+#include <cmath>
+#include <glm/glm.hpp>
+#include <tuple>
+
+#include "viewer.hpp"
+
+namespace sculpt::viewer {
+namespace {
+
+float panel_width() {
+  return 360.0f * std::max(1.0f, ImGui::GetIO().FontGlobalScale);
+}
+
+// Past this share of the half view from the centre, a point counts as leaving the view; the
+// camera brings it back to `inside`.
+constexpr float view_edge = 0.85f, inside = 0.6f;
+
+template <class P>
+glm::vec3 position(const P& p) {
+  constexpr std::size_t D = std::tuple_size_v<P>;
+  return {float(p[0]), float(p[1]), D == 3 ? float(p[D - 1]) : 0.0f};
+}
+
+}  // namespace
+
+std::vector<Viewer::Point_of_interest> Viewer::points_of_interest() const {
+  std::vector<Point_of_interest> points;
+  if (!reconstruction_) return points;
+  std::visit(
+      [&](const auto& r) {
+        if (request_.stage == scene::Stage::propagation) {
+          if (const Labelling_event* e = latest_event())
+            points.push_back({position(r.poles.poles[e->pole].center),
+                              "pole " + std::to_string(e->pole) + " just labelled"});
+        } else if (request_.stage == scene::Stage::seeds) {
+          for (int seed : r.seeds.outer_seeds)
+            points.push_back({position(r.poles.poles[seed].center), "outer seeds"});
+        }
+      },
+      *reconstruction_);
+  return points;
+}
+
+void Viewer::follow_latest_event() {
+  if (!follow_ || request_.stage != scene::Stage::propagation || frame_height_ <= 0) return;
+  const auto points = points_of_interest();
+  if (points.empty()) return;
+  const float aspect =
+      float(std::max(1, frame_width_ - int(panel_width()))) / float(view_height(frame_height_));
+  // From where the camera is going, if it is already moving.
+  render::Camera camera = camera_move_ ? camera_move_->to : camera_;
+  const glm::vec4 clip =
+      camera.projection(aspect) * camera.view() * glm::vec4(points.front().at, 1.0f);
+  if (clip.w <= 0) return;  // behind the camera (3D): left to the arrow
+  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  if (std::abs(ndc.x) <= view_edge && std::abs(ndc.y) <= view_edge) return;
+  const float dx = ndc.x - std::clamp(ndc.x, -inside, inside);
+  const float dy = ndc.y - std::clamp(ndc.y, -inside, inside);
+  // pan() moves by the visible half height at the target; a point at another depth moves on
+  // screen by target distance / its depth as much (clip.w is its depth; 1 in 2D).
+  const float depth = camera.dimension == 3 ? clip.w / camera.distance : 1.0f;
+  camera.pan(dx * aspect * depth, dy * depth);
+  camera_move_ = Camera_move{camera_, camera, 0.0f};
+  camera_is_panel_camera_ = false;
+}
+
+// For each point of interest outside the view, a small arrow at the view's edge pointing to it,
+// labelled once per direction.
+void Viewer::draw_off_screen_markers(int width, int height) {
+  const auto points = points_of_interest();
+  if (points.empty()) return;
+  const float left = panel_width(), top = ImGui::GetFrameHeight();
+  const float view_w = float(std::max(1, width - int(left))), view_h = float(view_height(height));
+  const glm::mat4 view_projection = camera_.projection(view_w / view_h) * camera_.view();
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImU32 colour = IM_COL32(200, 40, 160, 255);
+  int labelled_sides = 0;  // one label per side of the view (bit per side)
+  for (const auto& point : points) {
+    glm::vec4 clip = view_projection * glm::vec4(point.at, 1.0f);
+    // Behind the camera the direction flips: mirror it so the arrow points the right way.
+    if (clip.w <= 0) clip = -clip;
+    const glm::vec2 ndc = glm::vec2(clip) / std::max(clip.w, 1e-6f);
+    if (std::abs(ndc.x) <= 1 && std::abs(ndc.y) <= 1) continue;
+    // Where the line from the centre to the point leaves the view, a little inside it.
+    const float reach = std::max(std::abs(ndc.x), std::abs(ndc.y));
+    const glm::vec2 edge = ndc / reach * 0.93f;
+    const ImVec2 tip(left + (edge.x + 1) * 0.5f * view_w,
+                     std::max(top + 10, (1 - edge.y) * 0.5f * view_h));
+    const glm::vec2 direction = glm::normalize(glm::vec2(ndc.x, -ndc.y));
+    const glm::vec2 across(-direction.y, direction.x);
+    const auto corner = [&](float back, float side) {
+      return ImVec2(tip.x - direction.x * back + across.x * side,
+                    tip.y - direction.y * back + across.y * side);
+    };
+    draw->AddTriangleFilled(tip, corner(16, 7), corner(16, -7), colour);
+    const int side = std::abs(ndc.x) >= std::abs(ndc.y) ? (ndc.x > 0 ? 1 : 2) : (ndc.y > 0 ? 4 : 8);
+    if (!(labelled_sides & side)) {
+      labelled_sides |= side;
+      // Beside the arrow, inside the view whatever side it is on.
+      const ImVec2 size = ImGui::CalcTextSize(point.label.c_str());
+      ImVec2 at = corner(24, 0);
+      at.x = std::clamp(at.x - size.x / 2, left + 4, left + view_w - size.x - 4);
+      at.y = std::clamp(at.y - size.y / 2, top + 4, view_h - size.y - 4);
+      draw->AddText(at, colour, point.label.c_str());
+    }
+  }
+}
+
+}  // namespace sculpt::viewer
