@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "render/camera.hpp"
 #include "shapes/shapes.hpp"
@@ -180,6 +181,54 @@ TEST(Scene, FocusShowsTwoBallsAndTheirSquares) {
   const auto s = scene::build_scene(star(), request);
   EXPECT_EQ(find(s, "focus-balls")->radii.size(), 2u);
   EXPECT_EQ(find(s, "focus-cubes")->positions.size(), 2u * 4u * 2u);  // 2 squares, 4 edges
+}
+
+// The neighbourhood view keeps what lies near the picked sample, and the picked sample's balls
+// whole; the scene's bounds (what the camera fits) become the neighbourhood's.
+TEST(Scene, TheNeighbourhoodViewKeepsWhatLiesNearThePickedSample) {
+  Options options;
+  options.keep_triangulations = true;
+  // (Not a sphere: its samples are cospherical, their Voronoi vertices all at its centre.)
+  const auto r = reconstruct(shapes::bumpy_sphere(1500), options);
+  for (scene::Stage stage : {scene::Stage::delaunay, scene::Stage::voronoi}) {
+    scene::Request whole;
+    whole.stage = stage;
+    whole.focus_sample = 5;
+    scene::Request near = whole;
+    near.neighbourhood = true;
+    const auto all = scene::build_scene(r, whole), kept = scene::build_scene(r, near);
+    const std::string edges = stage == scene::Stage::delaunay ? "delaunay" : "voronoi";
+    ASSERT_NE(find(kept, edges), nullptr);
+    EXPECT_LT(find(kept, edges)->positions.size() * 10, find(all, edges)->positions.size());
+    EXPECT_GT(find(kept, edges)->positions.size(), 0u);
+    EXPECT_EQ(find(kept, "focus-balls")->radii.size(), find(all, "focus-balls")->radii.size());
+    const auto& s = r.sites[5];
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_LE(kept.lower[c], s[c]);
+      EXPECT_GE(kept.upper[c], s[c]);
+      EXPECT_LT(kept.upper[c] - kept.lower[c], 0.5f * (all.upper[c] - all.lower[c]));
+    }
+  }
+}
+
+// In 3D the polar balls are drawn at any stage when asked, every k-th pole's, and never the
+// balls larger than the samples' box that would wrap the camera.
+TEST(Scene, PolarBallsIn3dWithAStride) {
+  const auto r = reconstruct(shapes::sphere(800));
+  scene::Request request;
+  request.stage = scene::Stage::surface;
+  EXPECT_EQ(find(scene::build_scene(r, request), "polar-balls"), nullptr);
+  request.polar_balls = true;
+  request.ball_every = 10;
+  const auto scene = scene::build_scene(r, request);
+  const scene::Layer* balls = find(scene, "polar-balls");
+  ASSERT_NE(balls, nullptr);
+  EXPECT_GT(balls->radii.size(), 0u);
+  EXPECT_LE(balls->radii.size(), r.poles.poles.size() / 10 + 1);
+  float diagonal = 0;
+  for (int c = 0; c < 3; ++c)
+    diagonal += (scene.upper[c] - scene.lower[c]) * (scene.upper[c] - scene.lower[c]);
+  for (float radius : balls->radii) EXPECT_LE(radius, 0.5f * std::sqrt(diagonal));
 }
 
 TEST(Camera, FitsAndRoundTripsThroughJson) {

@@ -375,6 +375,27 @@ TEST(Viewer, TheReplayFollowsThePoleJustLabelled) {
   EXPECT_GT(pixels_of(render::read_png(seeds), arrow[0], arrow[1], arrow[2]), 500u);
 }
 
+// The neighbourhood of a picked sample: its cell, its balls and the cells that reach it, the
+// camera fitted to them; polar balls drawn a few at a time with a stride.
+TEST(Viewer, ShowsTheNeighbourhoodOfAPickedSampleAndPolarBallsWithAStride) {
+  const std::string near = testing::output_path("viewer-neighbourhood.png"),
+                    balls = testing::output_path("viewer-polar-balls.png");
+  ASSERT_EQ(run_viewer_script("neighbourhood",
+                              "example bumpy\nwait\nstage delaunay\npick-sample 100\n"
+                              "neighbourhood on\nframes 2\nscreenshot " +
+                                  near +
+                                  "\nneighbourhood off\npick-sample -1\nstage poles\n"
+                                  "polar-balls 600\nframes 2\nscreenshot " +
+                                  balls + "\npolar-balls off\npolar-balls x\nquit\n"),
+            1);  // the last command is refused
+  const double near_share = most_common_colour_share(render::read_png(near));
+  EXPECT_LT(near_share, 0.2);
+  EXPECT_GT(drawn_pixels(render::read_png(near)), 5000u);
+  const auto ball = scene::palette::polar_ball_3d;
+  EXPECT_EQ(pixels_of(render::read_png(balls), ball.r, ball.g, ball.b), 0u);  // translucent
+  EXPECT_GT(drawn_pixels(render::read_png(balls)), 20000u);
+}
+
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {
   const std::string log = testing::output_path("no-display.log");
   const int code = run("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SCULPT_VIEW_EXECUTABLE) +

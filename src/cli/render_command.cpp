@@ -32,6 +32,10 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   render->add_option("--step", shot.step, "Propagation: show the first K labelling events");
   render->add_option("--focus-sample", shot.focus_sample,
                      "Show this sample's Voronoi cell, poles, polar balls and inscribed cubes");
+  render
+      ->add_option("--ball-every", shot.ball_every,
+                   "Polar balls of every k-th pole only (with the layer polar-balls)")
+      ->check(CLI::PositiveNumber);
   render->add_option("--focus-pole", shot.focus_pole,
                      "Show this pole's polar ball and the pole that labelled it");
   render->add_option("--method", shot.method, frontend::methods_help())

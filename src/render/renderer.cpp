@@ -204,6 +204,10 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
       glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE,
                          glm::value_ptr(view_projection));
       glUniform1f(uniform(p, "point_size"), info.size);
+      glUniform1i(uniform(p, "shaded"), camera.dimension == 3 ? 1 : 0);
+      // A few millionths of the depth range: enough for a nearer point to round over a
+      // farther one, too little to lift a point through the surface it lies on.
+      glUniform1f(uniform(p, "depth_radius"), camera.dimension == 3 ? 2e-6f * info.size : 0.0f);
       set_color(p, info.color);
       glDrawArrays(GL_POINTS, 0, layer.count);
       break;

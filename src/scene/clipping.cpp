@@ -86,4 +86,18 @@ void clip(Scene& scene, const Clip& clip) {
   }
 }
 
+void keep_near(Scene& scene, const Vec3& centre, float radius,
+               const std::vector<std::string>& whole) {
+  for (auto& layer : scene.layers) {
+    if (std::find(whole.begin(), whole.end(), layer.id) != whole.end()) continue;
+    keep_primitives(layer, positions_per_primitive(layer.primitive),
+                    [&](const Vec3* positions, std::size_t count, const Vec3&) {
+                      return std::any_of(positions, positions + count, [&](const Vec3& p) {
+                        const Vec3 d{p[0] - centre[0], p[1] - centre[1], p[2] - centre[2]};
+                        return dot(d, d) <= radius * radius;
+                      });
+                    });
+  }
+}
+
 }  // namespace sculpt::scene

@@ -14,4 +14,10 @@ namespace sculpt::scene {
 // their ids: legends and toggles stay.
 void clip(Scene& scene, const Clip& clip);
 
+// The neighbourhood of one point: leaves out the primitives none of whose vertices (a ball: its
+// centre) lies within `radius` of `centre`, except in the layers named `whole` (what was
+// picked, shown entire). A cell edge or Voronoi edge that reaches into the neighbourhood stays.
+void keep_near(Scene& scene, const Vec3& centre, float radius,
+               const std::vector<std::string>& whole);
+
 }  // namespace sculpt::scene

@@ -72,7 +72,7 @@ struct Clip {
   float position = 0.5f;  // 0..1 across the samples' box along the normal; 1 keeps everything
   float azimuth = 0;      // the normal's direction about z, in degrees (0: +x)
   float elevation = 0;    // the normal's angle above the xy plane, in degrees (90: +z)
-  float slab = 0;  // 0: all before the plane; else only a slab this thick (share of the box)
+  float slab = 0;         // 0: all before the plane; else only a slab this thick (share of the box)
 };
 
 struct Request {
@@ -86,6 +86,10 @@ struct Request {
   std::vector<std::string> layers;  // only these layer ids; empty = the stage's own choice
   bool clipped = false;  // 3D: leave out what lies beyond the plane `clip` (clipping.hpp)
   Clip clip;
+  // With a picked sample: only the cells, edges, faces, poles and balls near it (its few dozen
+  // nearest samples), the picked sample's own cell, poles and balls whole.
+  bool neighbourhood = false;
+  bool polar_balls = false;  // 3D: also the polar balls (every ball_every-th), at any stage
 };
 
 struct Scene {

@@ -50,7 +50,7 @@ class Scene_builder {
         break;
       case Stage::poles:
         // Thousands of spheres hide everything in 3D: there they are shown only when asked for.
-        if (D == 2 || requested("polar-balls")) polar_balls();
+        if (D == 2 || wants_polar_balls()) polar_balls();
         poles_where("poles", "poles", palette::pole, [](int) { return true; });
         break;
       case Stage::seeds:
@@ -100,7 +100,7 @@ class Scene_builder {
         surface();
         break;
     }
-    if (request_.stage != Stage::poles && requested("polar-balls")) polar_balls();
+    if (request_.stage != Stage::poles && wants_polar_balls()) polar_balls();
     if (request_.focus_sample >= 0) focus(request_.focus_sample);
     if (request_.focus_pole >= 0) focus_pole(request_.focus_pole);
     // Dense samples would cover a shaded surface or solid: there they are shown when asked for.
@@ -110,7 +110,32 @@ class Scene_builder {
     scene_.layers.assign(std::make_move_iterator(layers_.begin()),
                          std::make_move_iterator(layers_.end()));
     select_layers();
+    if (request_.neighbourhood && request_.focus_sample >= 0) keep_near_focus();
     return std::move(scene_);
+  }
+
+  bool wants_polar_balls() const { return request_.polar_balls || requested("polar-balls"); }
+
+  // The neighbourhood view: what lies within 1.5 times the distance of the picked sample's
+  // 4th (2D) or 12th (3D) nearest sample: its ring of neighbours and a little beyond.
+  void keep_near_focus() {
+    const Point<D>& s = r_.sites[request_.focus_sample];
+    std::vector<double> distances;
+    for (int i = 0; i < n_; ++i) {
+      double d = 0;
+      for (int c = 0; c < D; ++c) d += (r_.sites[i][c] - s[c]) * (r_.sites[i][c] - s[c]);
+      distances.push_back(d);
+    }
+    const std::size_t k = std::min<std::size_t>(D == 2 ? 4 : 12, distances.size() - 1);
+    std::nth_element(distances.begin(), distances.begin() + k, distances.end());
+    const float radius = 1.5f * float(std::sqrt(distances[k]));
+    // The picked sample's own cell, poles and balls stay whole: they are what was asked for.
+    keep_near(scene_, vec(s), radius, {"focus-cell", "focus-balls", "focus-poles"});
+    // The camera fits the neighbourhood: it is what the picture is about.
+    for (int c = 0; c < 3; ++c) {
+      scene_.lower[c] = vec(s)[c] - (c < D ? radius : 0);
+      scene_.upper[c] = vec(s)[c] + (c < D ? radius : 0);
+    }
   }
 
  private:
@@ -215,9 +240,16 @@ class Scene_builder {
                        D == 2 ? palette::polar_ball : palette::polar_ball_3d, 1.0f);
     layer.translucent = D == 3;  // outlines of overlapping spheres are unreadable in 3D
     const int every = std::max(1, request_.ball_every);
+    // In 3D, a ball larger than the samples' box would wrap the camera in a translucent fog:
+    // those (outer poles far out) are left out, the medial balls inside and near stay.
+    float diagonal = 0;
+    for (int c = 0; c < 3; ++c)
+      diagonal += (scene_.upper[c] - scene_.lower[c]) * (scene_.upper[c] - scene_.lower[c]);
+    const float largest = D == 3 ? 0.5f * std::sqrt(diagonal) : INFINITY;
     for (std::size_t p = 0; p < r_.poles.poles.size(); ++p) {
       const auto& pole = r_.poles.poles[p];
       if (pole.convex || p % every != 0) continue;  // convex poles' huge balls hide everything
+      if (pole.radius > largest) continue;
       layer.positions.push_back(vec(pole.center));
       layer.radii.push_back(float(pole.radius));
     }

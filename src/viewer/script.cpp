@@ -251,6 +251,20 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       std::cout << "explain " << scene::stage_id(viewer.stage()) << ": " << viewer.explanation()
                 << std::endl;
+    } else if (command == "neighbourhood") {
+      if (argument == "on" || argument == "off") {
+        viewer.set_neighbourhood(argument == "on");
+      } else {
+        fail("'" + line + "': expected neighbourhood on or off");
+      }
+    } else if (command == "polar-balls") {
+      // polar-balls EVERY (every k-th pole's ball; 0 or off: none)
+      const auto every = argument == "off" ? std::optional<long>(0) : number(argument, 0, 1000000);
+      if (every) {
+        viewer.show_polar_balls(int(*every));
+      } else {
+        fail("'" + line + "': expected polar-balls EVERY (1 for all, 0 or off for none)");
+      }
     } else if (command == "follow") {
       if (argument == "on" || argument == "off") {
         viewer.set_follow(argument == "on");

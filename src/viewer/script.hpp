@@ -17,6 +17,8 @@
 //   add-point 0.1 0.2   2D: add a sample and reconstruct (move-point K X Y, delete-point K,
 //                       stroke SPACING X1 Y1 X2 Y2 ..., undo, save-points a.xy)
 //   layer voronoi off   hide (or show) a layer of the stage on screen
+//   neighbourhood on    only what lies near the picked sample (pick-sample first)
+//   polar-balls 20      3D: draw every 20th pole's polar ball (0 or off: none)
 //   follow off          the replay's camera stays put (on: it keeps the pole just labelled in view)
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included

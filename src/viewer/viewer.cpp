@@ -251,8 +251,29 @@ int dimension_of(const Any_reconstruction& r) {
 // A cut-away plane for the 3D stages that fill space: the cells in front of it go, so those
 // behind are seen whole, in section.
 void Viewer::draw_clip_controls() {
-  if (!ImGui::CollapsingHeader("Cut away (3D)")) return;
-  bool changed = ImGui::Checkbox("cut at a plane", &request_.clipped);
+  if (!ImGui::CollapsingHeader("Look inside (3D)")) return;
+  bool changed = false;
+  if (ImGui::Checkbox("only near the picked sample", &request_.neighbourhood))
+    set_neighbourhood(request_.neighbourhood);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "With a sample picked (click one): only the cells, edges, faces, poles and balls "
+        "near it, its own Voronoi cell, poles and balls whole");
+  if (ImGui::Checkbox("polar balls", &request_.polar_balls)) {
+    changed = true;
+    // A sample's inner ball is as large as the part it lies in: a score of them at first.
+    if (request_.polar_balls && request_.ball_every == 1)
+      request_.ball_every = std::max<int>(1, int(pole_count(*reconstruction_) / 20));
+  }
+  if (request_.polar_balls) {
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120);
+    changed |= ImGui::SliderInt("every", &request_.ball_every, 1, 500, "%d-th",
+                                ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Thousands of balls hide one another: draw every k-th pole's");
+  }
+  changed |= ImGui::Checkbox("cut at a plane", &request_.clipped);
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
         "Leave out every cell, edge, face and ball whose centre lies beyond the "

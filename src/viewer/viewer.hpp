@@ -57,6 +57,18 @@ class Viewer {
     request_.clipped = false;
     scene_dirty_ = true;
   }
+  // Only what lies near the picked sample (scene::Request::neighbourhood).
+  void set_neighbourhood(bool on) {
+    request_.neighbourhood = on;
+    scene_dirty_ = true;
+    camera_fitted_ = false;  // to the neighbourhood, or back to the whole
+  }
+  // 3D: the polar balls too, every `every`-th (0: none).
+  void show_polar_balls(int every) {
+    request_.polar_balls = every > 0;
+    request_.ball_every = std::max(1, every);
+    scene_dirty_ = true;
+  }
   // Each returns false, with a message, when the shown reconstruction has no such sample or pole.
   bool pick_sample(int sample) { return pick(sample, true); }  // -1 clears the selection
   bool pick_pole(int pole) { return pick(pole, false); }
