@@ -341,6 +341,46 @@ TEST(Cli, RenderMergesRepeatedPointsWhenTold) {
   EXPECT_TRUE(std::filesystem::exists(picture));
 }
 
+// The frames of an animated WebP: its ANMF chunks, read off the RIFF container.
+std::size_t webp_frames(const std::string& bytes) {
+  if (bytes.size() < 12 || bytes.compare(0, 4, "RIFF") != 0 || bytes.compare(8, 4, "WEBP") != 0)
+    return 0;
+  std::size_t frames = 0;
+  for (std::size_t at = 12; at + 8 <= bytes.size();) {
+    const auto byte = [&](std::size_t i) { return std::size_t(std::uint8_t(bytes[at + 4 + i])); };
+    const std::size_t size = byte(0) | byte(1) << 8 | byte(2) << 16 | byte(3) << 24;
+    frames += bytes.compare(at, 4, "ANMF") == 0;
+    at += 8 + size + (size & 1);
+  }
+  return frames;
+}
+
+// `sculpt render --animate`: the replay of the labelling or a sweep of the stages as an
+// animated WebP; a method without a replay, or a PNG name, is one line and no file.
+TEST(Cli, RenderAnimatesTheReplayAndTheStages) {
+  const std::string replay = output_path("replay.webp"), stages = output_path("stages.webp");
+  ASSERT_EQ(
+      run_sculpt("render --example star --animate replay --frames 12 --size 200x150 -o " + replay)
+          .exit_code,
+      0);
+  // (The encoder merges a picture into the one before when nothing on screen changed.)
+  EXPECT_GE(webp_frames(read_file(replay)), 10u);
+  EXPECT_LE(webp_frames(read_file(replay)), 12u);
+  ASSERT_EQ(run_sculpt("render --example blob --method crust --animate stages --size 200x150 -o " +
+                       stages)
+                .exit_code,
+            0);
+  EXPECT_EQ(webp_frames(read_file(stages)), 5u);  // the crust's five 2D stages
+  const std::string refused = output_path("refused.webp");
+  const Command_result no_replay =
+      run_sculpt("render --example blob --method crust --animate replay -o " + refused);
+  EXPECT_EQ(no_replay.exit_code, 1);
+  EXPECT_NE(no_replay.err.find("no replay"), std::string::npos) << no_replay.err;
+  EXPECT_FALSE(std::filesystem::exists(refused));
+  EXPECT_EQ(
+      run_sculpt("render --example star --animate replay -o " + output_path("a.png")).exit_code, 2);
+}
+
 TEST(Cli, VersionAndHelp) {
   EXPECT_EQ(run_sculpt("--version").exit_code, 0);
   const Command_result help = run_sculpt("reconstruct --help");

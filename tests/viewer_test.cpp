@@ -396,6 +396,22 @@ TEST(Viewer, ShowsTheNeighbourhoodOfAPickedSampleAndPolarBallsWithAStride) {
   EXPECT_GT(drawn_pixels(render::read_png(balls)), 20000u);
 }
 
+// The viewer saves the replay, or a sweep of the stages, as an animated WebP.
+TEST(Viewer, ExportsTheReplayAsAnAnimation) {
+  const std::string replay = testing::output_path("viewer-replay.webp");
+  ASSERT_EQ(run_viewer_script("animation",
+                              "example star\nwait\nstage propagation\n"
+                              "export-animation " +
+                                  replay + " 300x200 8\nexport-animation " +
+                                  testing::output_path("not-webp.png") + "\nquit\n"),
+            1);  // the second is refused: an animation is a .webp
+  const std::string bytes = testing::read_file(replay);
+  ASSERT_GT(bytes.size(), 12u);
+  EXPECT_EQ(bytes.substr(0, 4), "RIFF");
+  EXPECT_EQ(bytes.substr(8, 4), "WEBP");
+  EXPECT_NE(bytes.find("ANMF"), std::string::npos);
+}
+
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {
   const std::string log = testing::output_path("no-display.log");
   const int code = run("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SCULPT_VIEW_EXECUTABLE) +

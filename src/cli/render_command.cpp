@@ -68,6 +68,18 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   render->add_flag("--wireframe", shot.wireframe, "Surface: draw its edges");
   render->add_flag("--smooth", shot.smooth, "Surface: smooth shading");
   render->add_flag("--no-legend", shot.no_legend, "No legend and title");
+  render
+      ->add_option("--animate", shot.animate,
+                   "An animated WebP instead of a PNG: 'replay' (the labelling, event by event) "
+                   "or 'stages' (the method's stages in order)")
+      ->check(CLI::IsMember({"replay", "stages"}));
+  render->add_option("--frames", shot.frames, "Pictures in a replay animation")
+      ->check(CLI::Range(2, 2000))
+      ->capture_default_str();
+  render
+      ->add_option("--frame-ms", shot.frame_ms,
+                   "How long each picture shows, in ms (0: 80 a replay's, 1200 a stage's)")
+      ->check(CLI::NonNegativeNumber);
   render->add_option("-o,--output", shot.output, "PNG file");
   render->add_option("--shots", args.shots_file,
                      "Render a list of shots in one process: JSON {\"shots\": [{\"example\": "
@@ -77,10 +89,15 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
 int run_render(const Render_arguments& args) {
   frontend::Shot_renderer renderer;
   if (args.shots_file.empty()) {
-    if (args.shot.output.empty()) throw frontend::Usage_error("render needs -o FILE.png");
-    if (io::extension_of(args.shot.output) != ".png") {
-      throw frontend::Usage_error("render writes PNG images: '" + args.shot.output +
-                                  "' does not end in .png");
+    if (args.shot.output.empty())
+      throw frontend::Usage_error("render needs -o FILE.png (FILE.webp with --animate)");
+    const std::string wanted = args.shot.animate.empty() ? ".png" : ".webp";
+    if (io::extension_of(args.shot.output) != wanted) {
+      throw frontend::Usage_error(args.shot.animate.empty()
+                                      ? "render writes PNG images: '" + args.shot.output +
+                                            "' does not end in .png"
+                                      : "an animation is written as animated WebP: '" +
+                                            args.shot.output + "' does not end in .webp");
     }
     renderer.render(args.shot, nullptr);
     return 0;

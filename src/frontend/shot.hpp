@@ -33,6 +33,12 @@ struct Shot {
   int ball_every = 1;              // polar balls of every k-th pole only
   double yaw = 0.6, pitch = 0.35;  // 3D: direction the fitted camera looks from (radians)
   std::string title;               // replaces the stage's title, when given
+  // An animation instead of one picture (an animated WebP): "replay" (the labelling, event by
+  // event, in `frames` pictures) or "stages" (the method's stages in order, one picture each),
+  // each picture shown `frame_ms` (0: 80 ms a replay's, 1,200 ms a stage's).
+  std::string animate;
+  int frames = 60;
+  int frame_ms = 0;
   std::string output;
 };
 

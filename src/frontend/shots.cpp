@@ -1,14 +1,17 @@
 #include "frontend/shots.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <type_traits>
 
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
+#include "render/animation.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt::frontend {
@@ -77,6 +80,9 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.yaw = j.value("yaw", shot.yaw);
   shot.pitch = j.value("pitch", shot.pitch);
   shot.title = j.value("title", "");
+  shot.animate = j.value("animate", "");
+  shot.frames = j.value("frames", shot.frames);
+  shot.frame_ms = j.value("frame_ms", shot.frame_ms);
   shot.output = j.value("output", "");
   return shot;
 }
@@ -159,10 +165,51 @@ Picture draw_shot(render::Headless_renderer& renderer, const Shot& shot,
   return picture;
 }
 
+namespace {
+
+// The pictures of an animation: the shot at each step of the replay, or at each stage.
+std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& reconstruction) {
+  std::vector<Shot> frames;
+  std::visit(
+      [&](const auto& r) {
+        constexpr int D = std::decay_t<decltype(r)>::dimension;
+        if (shot.animate == "stages") {
+          for (scene::Stage stage : scene::stages_of(r.options.method, D)) {
+            frames.push_back(shot);
+            frames.back().stage = scene::stage_id(stage);
+          }
+          return;
+        }
+        if (!scene::has_stage(r.options.method, D, scene::Stage::propagation))
+          throw io::Error(std::string("the method ") + to_string(r.options.method) +
+                          " labels no poles: it has no replay (animate stages instead)");
+        const long events = long(r.propagation.events.size());
+        const long count = std::clamp<long>(shot.frames, 2, events + 1);
+        for (long k = 0; k < count; ++k) {
+          frames.push_back(shot);
+          frames.back().stage = scene::stage_id(scene::Stage::propagation);
+          frames.back().step = (k * events + (count - 1) / 2) / (count - 1);
+        }
+      },
+      reconstruction);
+  return frames;
+}
+
+}  // namespace
+
 scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inline_camera) {
   if (shot.output.empty()) throw io::Error("a shot has no output file");
-  if (io::extension_of(shot.output) != ".png") {
-    throw io::Error("render writes PNG images: '" + shot.output + "' does not end in .png");
+  const bool animated = !shot.animate.empty();
+  if (animated && shot.animate != "replay" && shot.animate != "stages")
+    throw io::Error("an animation is a replay or a sweep of the stages, not '" + shot.animate +
+                    "'");
+  if (animated && (shot.frames < 2 || shot.frames > 2000 || shot.frame_ms < 0))
+    throw io::Error("an animation has 2 to 2000 frames, each shown 0 ms (automatic) or more");
+  if (io::extension_of(shot.output) != (animated ? ".webp" : ".png")) {
+    throw io::Error(animated
+                        ? "an animation is written as animated WebP: '" + shot.output +
+                              "' does not end in .webp"
+                        : "render writes PNG images: '" + shot.output + "' does not end in .png");
   }
   io::check_output_folder(shot.output);  // before any work
   io::check_output_folder(shot.save_camera);
@@ -173,6 +220,24 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   parse_size(shot.size);
   const Any_reconstruction& shown = reconstruction(shot);
   if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
+  if (animated) {
+    std::vector<render::Image> images;
+    scene::Scene last;
+    for (const Shot& frame : animation_frames(shot, shown)) {
+      Picture picture = draw_shot(*renderer_, frame, shown, inline_camera);
+      images.push_back(std::move(picture.image));
+      last = std::move(picture.scene);
+    }
+    const int milliseconds = shot.frame_ms > 0          ? shot.frame_ms
+                             : shot.animate == "replay" ? 80
+                                                        : 1200;
+    try {
+      render::write_animation(shot.output, images, milliseconds);
+    } catch (const std::runtime_error& e) {
+      throw io::Error(e.what());
+    }
+    return last;
+  }
   Picture picture = draw_shot(*renderer_, shot, shown, inline_camera);
   if (!shot.save_camera.empty()) {
     io::Atomic_file file(shot.save_camera, false);

@@ -58,7 +58,8 @@ std::optional<double> real(const std::string& word) {
 
 // Commands that take more than one argument parse their own.
 bool takes_arguments(const std::string& command) {
-  for (const char* name : {"export", "clip", "add-point", "move-point", "stroke", "layer"}) {
+  for (const char* name :
+       {"export", "export-animation", "clip", "add-point", "move-point", "stroke", "layer"}) {
     if (command == name) return true;
   }
   return false;
@@ -251,6 +252,33 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       std::cout << "explain " << scene::stage_id(viewer.stage()) << ": " << viewer.explanation()
                 << std::endl;
+    } else if (command == "export-animation") {
+      // export-animation PATH.webp [WIDTHxHEIGHT [FRAMES]]
+      if (arguments.empty()) {
+        fail("'export-animation' needs a .webp path");
+        continue;
+      }
+      int width = 800, height = 600;
+      long frames = 60;
+      bool ok = true;
+      if (arguments.size() > 1) {
+        const auto x = arguments[1].find('x');
+        const auto w = number(arguments[1].substr(0, x), 16, 8192);
+        const auto h =
+            x == std::string::npos ? std::nullopt : number(arguments[1].substr(x + 1), 16, 8192);
+        ok = w && h;
+        if (ok) width = int(*w), height = int(*h);
+      }
+      if (arguments.size() > 2) {
+        const auto f = number(arguments[2], 2, 2000);
+        ok = ok && f;
+        if (f) frames = *f;
+      }
+      if (!ok || arguments.size() > 3) {
+        fail("'" + line + "': expected export-animation PATH.webp [WIDTHxHEIGHT [FRAMES 2-2000]]");
+        continue;
+      }
+      done(viewer.export_animation(arguments[0], width, height, int(frames)));
     } else if (command == "neighbourhood") {
       if (argument == "on" || argument == "off") {
         viewer.set_neighbourhood(argument == "on");

@@ -787,6 +787,14 @@ void Viewer::click(glm::vec2 mouse, int width, int height) {
 // ---------------------------------------------------------------------------------------------
 // Files
 
+bool Viewer::export_animation(const std::string& path, int width, int height, int frames) {
+  animate_export_ = request_.stage == scene::Stage::propagation ? "replay" : "stages";
+  animate_frames_ = frames;
+  const bool saved = export_picture(path, width, height);
+  animate_export_.clear();
+  return saved;
+}
+
 bool Viewer::export_picture(const std::string& path, int width, int height) {
   // The figures' own renderer: `sculpt render`, next to this program, with this view's shot.
   const auto self = std::filesystem::read_symlink("/proc/self/exe");
@@ -813,6 +821,8 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
                          {"dimension", shown.dimension},
                          {"size", std::to_string(width) + "x" + std::to_string(height)},
                          {"output", std::filesystem::absolute(path).string()}};
+  if (!animate_export_.empty())
+    shot.update({{"animate", animate_export_}, {"frames", animate_frames_}});
   if (camera_is_panel_camera_ && !panel_on_screen().empty()) {
     // The panel's framing, refitted to the picture's size as the gallery does.
     const frontend::Shot& panel = tour_.image().shot;
@@ -841,7 +851,8 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
       visible.push_back(layer.id);
     }
   }
-  shot["layers"] = visible;
+  // An animation shows other stages (or the replay's other steps): each its own layers.
+  if (animate_export_.empty()) shot["layers"] = visible;
   const auto shots = std::filesystem::temp_directory_path() /
                      ("sculpt-view-" + std::to_string(getpid()) + ".json");
   std::ofstream(shots) << nlohmann::json{{"shots", {shot}}}.dump();
@@ -902,6 +913,11 @@ void Viewer::draw_menu() {
     ImGui::InputInt2("size", picture_size_);
     if (ImGui::MenuItem("Save picture", "P"))
       export_picture(picture_field_, picture_size_[0], picture_size_[1]);
+    ImGui::InputText("animation", animation_field_, sizeof animation_field_);
+    if (ImGui::MenuItem("Save animation (WebP)")) {
+      // The replay at the propagation stage, else a sweep of the stages.
+      export_animation(animation_field_, picture_size_[0], picture_size_[1]);
+    }
     ImGui::Separator();
     if (ImGui::MenuItem("Quit")) quit_ = true;
     ImGui::EndMenu();

@@ -123,6 +123,9 @@ class Viewer {
 
   // Headless snapshot through `sculpt render` (the figures' renderer), at a chosen size.
   bool export_picture(const std::string& path, int width, int height);
+  // An animated WebP of the replay (at the propagation stage, in `frames` pictures) or else of
+  // the method's stages, through `sculpt render --animate`.
+  bool export_animation(const std::string& path, int width, int height, int frames = 60);
   bool save_camera(const std::string& path);
   bool load_camera(const std::string& path);
 
@@ -244,7 +247,9 @@ class Viewer {
   std::string caption_figure_;  // the figure the caption's height was measured on
   float caption_min_height_ = 0;
 
-  bool follow_ = true;  // the camera keeps the replay's pole just labelled in view
+  bool follow_ = true;          // the camera keeps the replay's pole just labelled in view
+  std::string animate_export_;  // while exporting an animation: "replay" or "stages"
+  int animate_frames_ = 60;
 
   // Live 2D editing.
   Point_editor editor_;
@@ -262,6 +267,7 @@ class Viewer {
   char camera_field_[1024] = "camera.json";
   char picture_field_[1024] = "sculpt.png";
   char points_field_[1024] = "points.xy";
+  char animation_field_[1024] = "sculpt.webp";
   int picture_size_[2] = {1600, 1200};
   bool show_help_ = false;
   bool quit_ = false;
