@@ -132,8 +132,15 @@ TEST(Viewer, AMalformedScriptCommandIsOneLineAndAFailureNotACrash) {
       {"figure fig99", "no figure 'fig99'"},
       {"stage nowhere", "no stage 'nowhere'"},
       {"stage crust-delaunay", "no stage 'crust-delaunay'"},
-      {"method nowhere", "no method 'nowhere'"}};
-  std::string script = "example star\nwait\n";
+      {"method nowhere", "no method 'nowhere'"},
+      {"camera spin", "expected camera fit"},
+      {"camera zoom -2", "expected camera fit"},
+      {"follow sometimes", "follow on or off"},
+      {"export-animation a.webp 10", "WIDTHxHEIGHT"}};
+  // The camera commands that are right move the camera and fail nothing.
+  std::string script =
+      "example star\nwait\ncamera zoom 0.5\ncamera pan 0.1 0\ncamera orbit 30 "
+      "10\ncamera fit\n";
   for (const auto& [command, _] : commands) script += command + "\n";
   const std::string picture = testing::output_path("after-bad-commands.png");
   script += "pick-sample 3\nframes 1\nexport " + picture + " 64x48\nquit\n";
@@ -410,6 +417,27 @@ TEST(Viewer, ExportsTheReplayAsAnAnimation) {
   EXPECT_EQ(bytes.substr(0, 4), "RIFF");
   EXPECT_EQ(bytes.substr(8, 4), "WEBP");
   EXPECT_NE(bytes.find("ANMF"), std::string::npos);
+}
+
+// The lesson shipped in examples/ runs through, picture by picture.
+TEST(Viewer, TheShippedLessonRuns) {
+  std::string script =
+      testing::read_file(std::string(SCULPT_SOURCE_DIR) + "/examples/lessons/undersampling.script");
+  ASSERT_FALSE(script.empty());
+  const std::string folder = std::string(SCULPT_TEST_OUTPUT) + "/shipped-lesson";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  // Its pictures into the test's folder, not the current one.
+  for (const std::string verb : {"screenshot ", "save-points "}) {
+    for (auto at = script.find(verb); at != std::string::npos; at = script.find(verb, at + 1))
+      script.insert(at + verb.size(), folder + "/");
+  }
+  ASSERT_EQ(run_viewer_script("shipped-lesson", script), 0);
+  std::size_t pictures = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    pictures += entry.path().extension() == ".png";
+  EXPECT_EQ(pictures, 8u);
+  EXPECT_TRUE(std::filesystem::exists(folder + "/lesson.xy"));
 }
 
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {

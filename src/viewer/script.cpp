@@ -58,8 +58,8 @@ std::optional<double> real(const std::string& word) {
 
 // Commands that take more than one argument parse their own.
 bool takes_arguments(const std::string& command) {
-  for (const char* name :
-       {"export", "export-animation", "clip", "add-point", "move-point", "stroke", "layer"}) {
+  for (const char* name : {"export", "export-animation", "clip", "add-point", "move-point",
+                           "stroke", "layer", "camera"}) {
     if (command == name) return true;
   }
   return false;
@@ -252,6 +252,26 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       std::cout << "explain " << scene::stage_id(viewer.stage()) << ": " << viewer.explanation()
                 << std::endl;
+    } else if (command == "camera") {
+      // camera fit | zoom F | orbit YAW PITCH | pan RIGHT UP | save FILE | load FILE
+      const auto values = reals(1);
+      const std::size_t count = values ? values->size() : 0;
+      const std::string what = arguments.empty() ? "" : arguments[0];
+      if (what == "fit" && arguments.size() == 1) {
+        viewer.reset_camera();
+      } else if (what == "zoom" && count == 1 && (*values)[0] > 0) {
+        viewer.zoom_camera(float((*values)[0]));
+      } else if (what == "orbit" && count == 2) {
+        viewer.orbit_camera(float((*values)[0]), float((*values)[1]));
+      } else if (what == "pan" && count == 2) {
+        viewer.pan_camera(float((*values)[0]), float((*values)[1]));
+      } else if ((what == "save" || what == "load") && arguments.size() == 2) {
+        done(what == "save" ? viewer.save_camera(arguments[1]) : viewer.load_camera(arguments[1]));
+      } else {
+        fail("'" + line +
+             "': expected camera fit, zoom FACTOR, orbit YAW PITCH (degrees), pan RIGHT UP "
+             "(half heights), save FILE or load FILE");
+      }
     } else if (command == "export-animation") {
       // export-animation PATH.webp [WIDTHxHEIGHT [FRAMES]]
       if (arguments.empty()) {

@@ -19,6 +19,8 @@
 //   layer voronoi off   hide (or show) a layer of the stage on screen
 //   neighbourhood on    only what lies near the picked sample (pick-sample first)
 //   polar-balls 20      3D: draw every 20th pole's polar ball (0 or off: none)
+//   camera zoom 0.5     also: camera fit, orbit 30 -10 (degrees), pan 0.2 0 (half heights),
+//                       save cam.json, load cam.json
 //   follow off          the replay's camera stays put (on: it keeps the pole just labelled in view)
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included

@@ -320,6 +320,24 @@ bool Viewer::pick(int index, bool sample) {
   return true;
 }
 
+void Viewer::orbit_camera(float yaw_degrees, float pitch_degrees) {
+  camera_move_.reset();
+  camera_is_panel_camera_ = false;
+  camera_.orbit(glm::radians(yaw_degrees), glm::radians(pitch_degrees));
+}
+
+void Viewer::pan_camera(float right, float up) {
+  camera_move_.reset();
+  camera_is_panel_camera_ = false;
+  camera_.pan(right, up);
+}
+
+void Viewer::zoom_camera(float factor) {
+  camera_move_.reset();
+  camera_is_panel_camera_ = false;
+  camera_.zoom(factor);
+}
+
 void Viewer::reset_camera() {
   camera_fitted_ = false;
   camera_move_.reset();

@@ -73,6 +73,11 @@ class Viewer {
   bool pick_sample(int sample) { return pick(sample, true); }  // -1 clears the selection
   bool pick_pole(int pole) { return pick(pole, false); }
   void reset_camera();
+  // Moves the camera as the mouse would: orbit by angles in degrees (3D), pan by shares of the
+  // visible half height, zoom by a factor (< 1 zooms in).
+  void orbit_camera(float yaw_degrees, float pitch_degrees);
+  void pan_camera(float right, float up);
+  void zoom_camera(float factor);
 
   // Live editing of 2D samples (the Edit samples panel, the mouse, scripts): each edit
   // reconstructs the edited points with the method chosen. Each returns false, with a message,
