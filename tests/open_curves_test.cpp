@@ -167,6 +167,10 @@ TEST(Open_curves, ADrawnStrokeBecomesEvenlySpacedSamplesThatGiveItBack) {
   EXPECT_EQ(result.stats.boundary_ridges, 2u);  // two end points
   EXPECT_EQ(result.surface.size(), samples.size() - 1);
   EXPECT_TRUE(chained(result.surface));
+  // A spacing too fine for the stroke is widened to at most `most` samples, evenly.
+  const auto capped = shapes::resample_polyline(stroke, 1e-300, 500);
+  EXPECT_EQ(capped.size(), 500u);
+  EXPECT_EQ(capped.back(), stroke.back());
   // Nothing to sample: no stroke, or no spacing.
   EXPECT_TRUE(shapes::resample_polyline({}, spacing).empty());
   EXPECT_TRUE(shapes::resample_polyline(stroke, 0).empty());

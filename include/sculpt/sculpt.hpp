@@ -91,6 +91,9 @@ enum class Surface_rule { automatic, skin, extraction };
 struct Progress {
   const char* stage;  // name of the stage being computed
   double fraction;    // 0..1 within that stage, where known
+  // 0..1 across the whole reconstruction: the stages done and this one's fraction, each stage
+  // weighted by its usual share of the time (a progress bar that fills once, never back).
+  double overall = 0;
 };
 
 // The one place the defaults live: front ends initialise their own settings from Options{}.

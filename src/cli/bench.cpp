@@ -275,6 +275,7 @@ nlohmann::json render_job(int triangles) {
 // (the busiest 2D picture) and of the curve built; the median of 21 edits, beside CGAL's
 // Delaunay triangulation of the same points.
 nlohmann::json edit_job(int n) {
+  if (n < 3) throw std::invalid_argument("an edit needs at least 3 samples");
   using Clock = std::chrono::steady_clock;
   const auto seconds = [](Clock::time_point since) {
     return std::chrono::duration<double>(Clock::now() - since).count();

@@ -63,11 +63,12 @@ std::function<bool(const Progress&)> progress_printer(std::size_t samples, bool 
   if (quiet || !isatty(STDERR_FILENO) || samples < 20000) return {};
   return [last = std::string(), percent = -1](const Progress& progress) mutable {
     if (!progress.stage) return true;
-    const int now = static_cast<int>(100 * progress.fraction);
+    // The whole run's share done, and the stage it is in.
+    const int now = static_cast<int>(100 * progress.overall);
     if (last != progress.stage || now != percent) {
       last = progress.stage;
       percent = now;
-      show_status(now > 0 ? fmt::format("sculpt: {} {}%", last, now) : "sculpt: " + last + "...");
+      show_status(fmt::format("sculpt: {}% ({})", now, last));
     }
     return true;
   };

@@ -79,7 +79,7 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   render
       ->add_option("--frame-ms", shot.frame_ms,
                    "How long each picture shows, in ms (0: 80 a replay's, 1200 a stage's)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 60000));
   render->add_option("-o,--output", shot.output, "PNG file");
   render->add_option("--shots", args.shots_file,
                      "Render a list of shots in one process: JSON {\"shots\": [{\"example\": "

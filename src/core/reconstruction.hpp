@@ -25,6 +25,7 @@
 #include "poles.hpp"
 #include "seeds.hpp"
 #include "stage_clock.hpp"
+#include "stage_plan.hpp"
 
 namespace sculpt {
 
@@ -38,6 +39,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   result.stats.kind = options.kind;
   result.stats.samples = samples.size();
   Stage_clock clock(result.stats, result.options);
+  clock.plan(planned_stages(options, Traits::dimension));
 
   clock.start("checks");
   if (!reconstructs_in(options.method, Traits::dimension)) {

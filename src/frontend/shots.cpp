@@ -184,6 +184,7 @@ std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& r
           throw io::Error(std::string("the method ") + to_string(r.options.method) +
                           " labels no poles: it has no replay (animate stages instead)");
         const long events = long(r.propagation.events.size());
+        if (events == 0) throw io::Error("no pole was labelled: there is no replay to animate");
         const long count = std::clamp<long>(shot.frames, 2, events + 1);
         for (long k = 0; k < count; ++k) {
           frames.push_back(shot);
@@ -203,8 +204,9 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   if (animated && shot.animate != "replay" && shot.animate != "stages")
     throw io::Error("an animation is a replay or a sweep of the stages, not '" + shot.animate +
                     "'");
-  if (animated && (shot.frames < 2 || shot.frames > 2000 || shot.frame_ms < 0))
-    throw io::Error("an animation has 2 to 2000 frames, each shown 0 ms (automatic) or more");
+  if (animated &&
+      (shot.frames < 2 || shot.frames > 2000 || shot.frame_ms < 0 || shot.frame_ms > 60000))
+    throw io::Error("an animation has 2 to 2000 frames, each shown 0 ms (automatic) to 60,000 ms");
   if (io::extension_of(shot.output) != (animated ? ".webp" : ".png")) {
     throw io::Error(animated
                         ? "an animation is written as animated WebP: '" + shot.output +

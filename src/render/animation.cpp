@@ -3,6 +3,7 @@
 #include <webp/encode.h>
 #include <webp/mux.h>
 
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -12,6 +13,8 @@ namespace sculpt::render {
 
 void write_animation(const std::string& path, const std::vector<Image>& frames, int milliseconds) {
   if (frames.empty()) throw std::runtime_error("an animation needs at least one frame");
+  if (milliseconds <= 0)
+    throw std::runtime_error("each picture of an animation shows for 1 ms or more");
   const int width = frames.front().width, height = frames.front().height;
   WebPAnimEncoderOptions encoder_options;
   if (!WebPAnimEncoderOptionsInit(&encoder_options))
@@ -25,7 +28,7 @@ void write_animation(const std::string& path, const std::vector<Image>& frames, 
   config.quality = 50;  // lossless: effort, not loss
   config.method = 2;
 
-  int timestamp = 0;
+  long long timestamp = 0;
   for (std::size_t i = 0; i < frames.size(); ++i) {
     const Image& frame = frames[i];
     if (frame.width != width || frame.height != height)
@@ -36,20 +39,23 @@ void write_animation(const std::string& path, const std::vector<Image>& frames, 
     picture.width = width;
     picture.height = height;
     std::unique_ptr<WebPPicture, void (*)(WebPPicture*)> owned(&picture, WebPPictureFree);
+    if (timestamp > std::numeric_limits<int>::max() - 4LL * milliseconds)
+      throw std::runtime_error("an animation cannot last that long");
     if (!WebPPictureImportRGBA(&picture, frame.rgba.data(), 4 * width) ||
-        !WebPAnimEncoderAdd(encoder.get(), &picture, timestamp, &config)) {
+        !WebPAnimEncoderAdd(encoder.get(), &picture, int(timestamp), &config)) {
       throw std::runtime_error("WebP encoding failed at frame " + std::to_string(i + 1));
     }
     timestamp += i + 1 == frames.size() ? 3 * milliseconds : milliseconds;
   }
   WebPData data;
   WebPDataInit(&data);
-  if (!WebPAnimEncoderAdd(encoder.get(), nullptr, timestamp, nullptr) ||
+  // Freed on every path, a failed assembly's part included.
+  std::unique_ptr<WebPData, void (*)(WebPData*)> bytes(&data, WebPDataClear);
+  if (!WebPAnimEncoderAdd(encoder.get(), nullptr, int(timestamp), nullptr) ||
       !WebPAnimEncoderAssemble(encoder.get(), &data)) {
     throw std::runtime_error("WebP encoding failed: " +
                              std::string(WebPAnimEncoderGetError(encoder.get())));
   }
-  std::unique_ptr<WebPData, void (*)(WebPData*)> bytes(&data, WebPDataClear);
   io::Atomic_file file(path, true);
   file.stream().write(reinterpret_cast<const char*>(data.bytes), std::streamsize(data.size));
   file.commit();

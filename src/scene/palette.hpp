@@ -29,6 +29,7 @@ inline constexpr Color focus_cell{0.45f, 0.30f, 0.00f};
 inline constexpr Color focus_ball{0.95f, 0.35f, 0.55f, 0.9f};
 inline constexpr Color inscribed_cube{0.45f, 0.20f, 0.40f};
 inline constexpr Color picked_pole{0.95f, 0.60f, 0.95f};
+inline constexpr Color picked_sample{0.05f, 0.25f, 0.00f};  // a darker sample
 // The replay: the pole just labelled, the ball that labelled it and that ball's cube.
 inline constexpr Color current_pole{1.00f, 0.85f, 0.00f};
 inline constexpr Color source_ball{0.70f, 0.55f, 0.00f, 0.9f};

@@ -393,6 +393,10 @@ class Scene_builder {
 
   void focus(int sample) {
     if (sample >= n_) throw std::invalid_argument("no sample " + std::to_string(sample));
+    // The sample itself, larger and darker than the others (drawn under them: a ring).
+    add("picked-sample", "picked sample", Primitive::points, palette::picked_sample,
+        D == 2 ? 14 : 11)
+        .positions.push_back(vec(r_.sites[sample]));
     voronoi_cell(sample);
     Layer& balls =
         add("focus-balls", "the sample's polar balls", Primitive::balls, palette::focus_ball, 2.0f);

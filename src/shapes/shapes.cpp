@@ -402,9 +402,17 @@ Sampled_curve example_curve_2(const std::string& name) {
   throw std::invalid_argument("no 2D example named '" + name + "'");
 }
 
-std::vector<Point<2>> resample_polyline(const std::vector<Point<2>>& polyline, double spacing) {
+std::vector<Point<2>> resample_polyline(const std::vector<Point<2>>& polyline, double spacing,
+                                        std::size_t most) {
   std::vector<Point<2>> samples;
-  if (polyline.empty() || !(spacing > 0)) return samples;
+  if (polyline.empty() || !(spacing > 0) || most < 2) return samples;
+  double total = 0;
+  for (std::size_t i = 1; i < polyline.size(); ++i)
+    total += std::hypot(polyline[i][0] - polyline[i - 1][0], polyline[i][1] - polyline[i - 1][1]);
+  if (!std::isfinite(total)) return samples;
+  // No more than `most` samples: a spacing too fine for the stroke's length is widened (and
+  // stays large enough for the walk along it to move on).
+  spacing = std::max(spacing, total / double(most - 1));
   samples.push_back(polyline.front());
   double since_last = 0;  // arc length walked since the last sample
   for (std::size_t i = 1; i < polyline.size(); ++i) {

@@ -38,7 +38,9 @@ Sampled_curve spiral(double turns = 2.5, double spacing = 0.2);
 Sampled_curve two_strokes(double gap = 0.5, int samples_per_stroke = 41);
 // Samples along a drawn polyline, `spacing` apart by arc length, both ends included: how the
 // viewer turns a stroke of the mouse into samples of a chosen density.
-std::vector<Point<2>> resample_polyline(const std::vector<Point<2>>& polyline, double spacing);
+// At most `most` samples: a finer spacing is widened to fit.
+std::vector<Point<2>> resample_polyline(const std::vector<Point<2>>& polyline, double spacing,
+                                        std::size_t most = 10000);
 
 // Surfaces: samples only.
 std::vector<Point<3>> sphere(int samples);

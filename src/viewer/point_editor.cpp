@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
+#include <utility>
 
 #include "io/atomic_file.hpp"
 
@@ -49,13 +51,12 @@ bool Point_editor::add(const Point<2>& p) {
 }
 
 bool Point_editor::add_all(const std::vector<Point<2>>& added) {
+  // A repeated point would be refused by the triangulation: it is simply not added.
+  std::set<std::pair<double, double>> taken;
+  for (const auto& p : points_) taken.insert({p[0], p[1]});
   std::vector<Point<2>> fresh;
   for (const auto& p : added) {
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1])) continue;
-    // A repeated point would be refused by the triangulation: it is simply not added.
-    const auto same = [&](const Point<2>& q) { return q[0] == p[0] && q[1] == p[1]; };
-    if (std::none_of(points_.begin(), points_.end(), same) &&
-        std::none_of(fresh.begin(), fresh.end(), same))
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && taken.insert({p[0], p[1]}).second)
       fresh.push_back(p);
   }
   if (fresh.empty()) {

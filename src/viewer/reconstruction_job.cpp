@@ -60,7 +60,7 @@ void Reconstruction_job::run(Job_request request) {
     request.options.keep_triangulations = true;
     request.options.progress = [this](const Progress& progress) {
       std::lock_guard<std::mutex> lock(mutex_);
-      status_ = {progress.stage ? progress.stage : "", progress.fraction};
+      status_ = {progress.stage ? progress.stage : "", progress.fraction, progress.overall};
       return !cancelled_;
     };
     outcome.reconstruction = std::visit(

@@ -49,7 +49,8 @@ class Reconstruction_job {
 
   struct Status {
     std::string stage;
-    double fraction = 0;
+    double fraction = 0;  // within the stage
+    double overall = 0;   // across the whole reconstruction
   };
   Status status() const;
 

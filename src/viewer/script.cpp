@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -187,11 +188,13 @@ std::string Script::before_frame(Viewer& viewer) {
         }
       }
     } else if (command == "pick-sample") {
-      if (const auto sample = count("a sample index (or -1)", -1, 1L << 31)) {
+      if (const auto sample =
+              count("a sample index (or -1)", -1, long(std::numeric_limits<int>::max()))) {
         done(viewer.pick_sample(int(*sample)));
       }
     } else if (command == "pick-pole") {
-      if (const auto pole = count("a pole index (or -1)", -1, 1L << 31)) {
+      if (const auto pole =
+              count("a pole index (or -1)", -1, long(std::numeric_limits<int>::max()))) {
         done(viewer.pick_pole(int(*pole)));
       }
     } else if (command == "method") {
@@ -259,11 +262,13 @@ std::string Script::before_frame(Viewer& viewer) {
       const std::string what = arguments.empty() ? "" : arguments[0];
       if (what == "fit" && arguments.size() == 1) {
         viewer.reset_camera();
-      } else if (what == "zoom" && count == 1 && (*values)[0] > 0) {
+      } else if (what == "zoom" && count == 1 && (*values)[0] >= 1e-3 && (*values)[0] <= 1e3) {
         viewer.zoom_camera(float((*values)[0]));
-      } else if (what == "orbit" && count == 2) {
+      } else if (what == "orbit" && count == 2 && std::abs((*values)[0]) <= 3600 &&
+                 std::abs((*values)[1]) <= 3600) {
         viewer.orbit_camera(float((*values)[0]), float((*values)[1]));
-      } else if (what == "pan" && count == 2) {
+      } else if (what == "pan" && count == 2 && std::abs((*values)[0]) <= 1e3 &&
+                 std::abs((*values)[1]) <= 1e3) {
         viewer.pan_camera(float((*values)[0]), float((*values)[1]));
       } else if ((what == "save" || what == "load") && arguments.size() == 2) {
         done(what == "save" ? viewer.save_camera(arguments[1]) : viewer.load_camera(arguments[1]));
@@ -333,7 +338,9 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       done(viewer.add_point({(*xy)[0], (*xy)[1]}));
     } else if (command == "move-point") {
-      const auto sample = arguments.empty() ? std::nullopt : number(arguments[0], 0, 1L << 31);
+      const auto sample = arguments.empty()
+                              ? std::nullopt
+                              : number(arguments[0], 0, long(std::numeric_limits<int>::max()));
       const auto xy = reals(1);
       if (!sample || !xy || xy->size() != 2) {
         fail("'" + line + "': expected move-point SAMPLE X Y");
@@ -341,15 +348,16 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       done(viewer.move_point(int(*sample), {(*xy)[0], (*xy)[1]}));
     } else if (command == "delete-point") {
-      if (const auto sample = count("a sample index", 0, 1L << 31)) {
+      if (const auto sample = count("a sample index", 0, long(std::numeric_limits<int>::max()))) {
         done(viewer.delete_point(int(*sample)));
       }
     } else if (command == "stroke") {
       // stroke SPACING X1 Y1 X2 Y2 ...: a drawn polyline resampled SPACING apart (a share of
       // the samples' box diagonal).
       const auto values = reals(0);
-      if (!values || values->size() < 5 || values->size() % 2 != 1 || (*values)[0] <= 0) {
-        fail("'" + line + "': expected stroke SPACING X1 Y1 X2 Y2 ... (spacing > 0)");
+      if (!values || values->size() < 5 || values->size() % 2 != 1 || (*values)[0] < 0.001 ||
+          (*values)[0] > 1) {
+        fail("'" + line + "': expected stroke SPACING X1 Y1 X2 Y2 ... (spacing 0.001 to 1)");
         continue;
       }
       std::vector<Point<2>> stroke;

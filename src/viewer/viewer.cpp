@@ -89,7 +89,7 @@ Viewer::Viewer() : renderer_(std::make_unique<render::Renderer>()) {}
 
 void Viewer::open_example(const std::string& name, bool force_bordered) {
   close_tour();
-  editor_.stop();
+  stop_editing();
   Job_request request;
   request.example = name;
   if (const auto* example = shapes::find_example(name)) {
@@ -100,7 +100,7 @@ void Viewer::open_example(const std::string& name, bool force_bordered) {
 
 void Viewer::open_file(const std::string& path) {
   close_tour();
-  editor_.stop();
+  stop_editing();
   Job_request request;
   request.path = path;
   std::snprintf(path_field_, sizeof path_field_, "%s", path.c_str());
@@ -403,6 +403,7 @@ std::string Viewer::panel_on_screen() const {
 
 // The panel's reconstruction: the one shown, a recent one, or a new job.
 void Viewer::show_tour_panel() {
+  stop_editing();  // a figure shows its own input
   frontend::Shot shot;
   try {
     shot = cgal_meshes_.resolve(tour_.image().shot);
@@ -598,7 +599,8 @@ void Viewer::frame(int width, int height, double seconds) {
   take_finished_job();
   // Edits made while a reconstruction ran: the newest points, once it has ended (a drag
   // reconstructs as fast as the reconstructions come, never queueing them).
-  if (edits_pending_ && !job_.running()) reconstruct_edits();
+  if (edits_pending_ && editor_.active() && !job_.running() && !job_.outcome_waiting())
+    reconstruct_edits();
   advance_playback(seconds);
   advance_move_to_panel(seconds);
   handle_input(width, height);
@@ -1067,8 +1069,11 @@ void Viewer::draw_panel(int height) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::TextWrapped("%s", message_.c_str());
   if (job_.running()) {  // not while the view merely moves to a tour panel
+    // Across the whole reconstruction, naming the stage it is in.
     const auto status = job_.status();
-    ImGui::ProgressBar(float(status.fraction), ImVec2(-70, 0), status.stage.c_str());
+    const std::string label =
+        status.stage + " (" + std::to_string(int(100 * status.overall)) + "%)";
+    ImGui::ProgressBar(float(status.overall), ImVec2(-70, 0), label.c_str());
     ImGui::SameLine();
     if (ImGui::Button("Cancel")) cancel();
   }
@@ -1077,7 +1082,8 @@ void Viewer::draw_panel(int height) {
     // can flip between methods on the same points.
     if (ImGui::Combo("method", &method_, method_names().data(),
                      static_cast<int>(method_names().size())) &&
-        !job_.running() && (!last_request_.path.empty() || !last_request_.example.empty())) {
+        !job_.running() &&
+        (!last_request_.path.empty() || !last_request_.example.empty() || editor_.active())) {
       rerun();
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(method_at(method_)));
@@ -1098,7 +1104,7 @@ void Viewer::draw_panel(int height) {
     }
     ImGui::Combo("surface rule", &rule_, rule_names, 3);
     if (ImGui::Button("Reconstruct again") && !busy() &&
-        (!last_request_.path.empty() || !last_request_.example.empty()))
+        (!last_request_.path.empty() || !last_request_.example.empty() || editor_.active()))
       rerun();
   }
   if (reconstruction_) {
@@ -1228,6 +1234,7 @@ void Viewer::draw_layers() {
 void Viewer::draw_selection() {
   if (request_.focus_sample < 0 && request_.focus_pole < 0) return;
   if (!ImGui::CollapsingHeader("Selection", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::PushTextWrapPos(0.0f);  // long lines wrap at the panel's edge instead of being cut
   std::visit(
       [&](const auto& r) {
         const auto describe_pole = [&](int pole) {
@@ -1261,6 +1268,7 @@ void Viewer::draw_selection() {
         }
       },
       *reconstruction_);
+  ImGui::PopTextWrapPos();
   if (ImGui::Button("Clear selection")) pick_sample(-1);
 }
 

@@ -152,6 +152,7 @@ class Viewer {
   void click(glm::vec2 mouse, int width, int height);
   // Editing: the shown samples become the editor's (2D only); an edit's outcome; the mouse.
   bool begin_editing();
+  void stop_editing();  // another input: the edits, a pending one, a drag or stroke forgotten
   bool edited(bool succeeded);
   void reconstruct_edits();
   bool handle_editing_input(int width, int height);  // true when the mouse was used to edit

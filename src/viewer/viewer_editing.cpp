@@ -29,14 +29,29 @@ bool Viewer::begin_editing() {
     message_ = "samples can be edited in 2D only";
     return false;
   }
+  // While another input is being read and reconstructed, the samples on screen are not the
+  // ones the next picture will show.
+  if (job_.running() || job_.outcome_waiting()) {
+    message_ = "wait for the reconstruction to finish before editing";
+    return false;
+  }
   const auto& r = std::get<Reconstruction<2>>(*reconstruction_);
   std::vector<Point<2>> samples(r.sites.begin(), r.sites.begin() + r.sample_count());
-  const std::string origin = shown_request_.example.empty()
+  const std::string origin = shown_request_.edited_points ? shown_request_.edited_from
+                             : shown_request_.example.empty()
                                  ? "edited from " + shown_request_.path
                                  : "edited from example " + shown_request_.example;
   editor_.start(std::move(samples), origin);
   show_true_curve_ = !truth_example_.empty();
   return true;
+}
+
+void Viewer::stop_editing() {
+  editor_.stop();
+  edits_pending_ = false;
+  dragged_sample_ = -1;
+  stroke_.clear();
+  stroke_on_screen_.clear();
 }
 
 bool Viewer::edited(bool succeeded) {
@@ -46,6 +61,8 @@ bool Viewer::edited(bool succeeded) {
   }
   explore();
   edits_pending_ = true;
+  // A picked index is the reconstruction's on screen, no longer the edited points'.
+  request_.focus_sample = request_.focus_pole = -1;
   return true;
 }
 
@@ -144,7 +161,7 @@ Point<2> Viewer::world_at(glm::vec2 mouse, int width, int height) const {
 // a right click on one deletes it, and Shift+drag draws a stroke that becomes samples. A click
 // on a sample still selects it. Returns false to leave the mouse to the camera.
 bool Viewer::handle_editing_input(int width, int height) {
-  if (reconstruction_->index() != 0 || !begin_editing()) return false;
+  if (reconstruction_->index() != 0) return false;
   const ImGuiIO& io = ImGui::GetIO();
   const int view_w = std::max(1, width - int(panel_width()));
   const int view_h = view_height(height);
@@ -152,9 +169,12 @@ bool Viewer::handle_editing_input(int width, int height) {
   const glm::mat4 view_projection = camera_.projection(float(view_w) / view_h) * camera_.view();
   const glm::vec2 viewport(view_w, view_h);
   const Point<2> at = world_at(mouse, view_w, view_h);
+  // The samples as edited, or those on screen before the first edit.
+  const auto& r = std::get<Reconstruction<2>>(*reconstruction_);
+  const std::vector<Point<2>>& samples = editor_.active() ? editor_.points() : r.sites;
+  const std::size_t sample_count = editor_.active() ? samples.size() : r.sample_count();
   const auto sample_under_mouse = [&] {
-    return pick_nearest<2>(editor_.points(), editor_.points().size(), view_projection, mouse,
-                           viewport);
+    return pick_nearest<2>(samples, sample_count, view_projection, mouse, viewport);
   };
 
   if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
@@ -165,7 +185,11 @@ bool Viewer::handle_editing_input(int width, int height) {
       stroke_.push_back(at);
       stroke_on_screen_.push_back({io.MousePos.x, io.MousePos.y});
     } else if ((dragged_sample_ = sample_under_mouse()) >= 0) {
-      editor_.begin_drag();
+      if (begin_editing()) {
+        editor_.begin_drag();
+      } else {
+        dragged_sample_ = -1;
+      }
     }
   }
   if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
@@ -182,7 +206,7 @@ bool Viewer::handle_editing_input(int width, int height) {
       return true;
     }
     if (dragged_sample_ >= 0 && ImGui::IsMouseDragging(ImGuiMouseButton_Left, 2.0f)) {
-      if (editor_.drag(dragged_sample_, at)) explore(), edits_pending_ = true;
+      if (editor_.active() && editor_.drag(dragged_sample_, at)) edited(true);
       return true;
     }
   }
@@ -203,7 +227,8 @@ bool Viewer::handle_editing_input(int width, int height) {
       return true;
     }
     if (clicked && dragged >= 0) {
-      pick_sample(dragged);  // a click on a sample selects it
+      // A click on a sample selects it, once the picture shows the points as edited.
+      if (!edits_pending_ && !job_.running()) pick_sample(dragged);
       return true;
     }
     if (clicked) {

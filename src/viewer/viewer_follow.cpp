@@ -104,8 +104,9 @@ void Viewer::draw_off_screen_markers(int width, int height) {
       // Beside the arrow, inside the view whatever side it is on.
       const ImVec2 size = ImGui::CalcTextSize(point.label.c_str());
       ImVec2 at = corner(24, 0);
-      at.x = std::clamp(at.x - size.x / 2, left + 4, left + view_w - size.x - 4);
-      at.y = std::clamp(at.y - size.y / 2, top + 4, view_h - size.y - 4);
+      // (max of min, not clamp: in a narrow view the upper bound may fall below the lower.)
+      at.x = std::max(left + 4, std::min(at.x - size.x / 2, left + view_w - size.x - 4));
+      at.y = std::max(top + 4, std::min(at.y - size.y / 2, view_h - size.y - 4));
       draw->AddText(at, colour, point.label.c_str());
     }
   }

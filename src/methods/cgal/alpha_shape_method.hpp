@@ -46,7 +46,10 @@ void run_alpha_shape_method(Reconstruction<3>& result, Stage_clock& clock) {
     shape.set_alpha(radius * radius);
   } else {
     const auto optimal = shape.find_optimal_alpha(1);
-    if (optimal == shape.alpha_end()) return;  // no alpha gives one piece: no surface
+    if (optimal == shape.alpha_end()) {
+      clock.start("surface");  // as planned, and empty: no alpha gives one piece
+      return;
+    }
     shape.set_alpha(*optimal);
   }
   result.stats.alpha = std::ldexp(std::sqrt(CGAL::to_double(shape.get_alpha())), -scale);

@@ -15,6 +15,7 @@
 #include "../../core/label_statistics.hpp"
 #include "../../core/solid_and_skin.hpp"
 #include "../../core/stage_clock.hpp"
+#include "../../core/stage_plan.hpp"
 #include "pole_insertion.hpp"
 #include "pole_separation.hpp"
 #include "solid_by_queries.hpp"
@@ -22,12 +23,6 @@
 
 namespace sculpt {
 
-// Whether stages 6-7 need DT(S ∪ OUP) itself: to show it, or for a surface that is not the
-// solid's skin (bordered surfaces, the extraction rule: they read the apexes of facets).
-inline bool builds_sculpted_delaunay(const Options& options) {
-  return options.keep_triangulations || options.kind != Surface_kind::closed ||
-         resolved_rule(options) != Surface_rule::skin;
-}
 
 // Stages 5-8, from labelled poles: OUP (UP) inserted or queried, then the solid and the surface.
 template <class Traits>

@@ -1,0 +1,52 @@
+// Progress: every method runs the stages planned for it (so the overall progress crosses them
+// all), and the overall fraction a caller sees only grows, from 0 to 1.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "core/stage_plan.hpp"
+#include "shapes/shapes.hpp"
+
+namespace sculpt {
+namespace {
+
+template <int D>
+void check_progress(const std::vector<Point<D>>& points, Surface_kind kind, bool keep) {
+  for (const char* name : method_names()) {
+    Options options;
+    parse_method(name, options.method);
+    if (!reconstructs_in(options.method, D)) continue;
+    options.kind = kind;
+    options.keep_triangulations = keep;
+    std::vector<double> overall;
+    options.progress = [&](const Progress& p) {
+      overall.push_back(p.overall);
+      return true;
+    };
+    const auto r = reconstruct(points, options);
+    const std::string where = std::string(name) + " " + std::to_string(D) + "D " + to_string(kind) +
+                              (keep ? " (triangulations kept)" : "");
+    std::vector<std::string> planned, ran;
+    for (const char* stage : planned_stages(options, D)) planned.push_back(stage);
+    for (const auto& stage : r.stats.stages) ran.push_back(stage.name);
+    EXPECT_EQ(ran, planned) << where;
+    ASSERT_FALSE(overall.empty()) << where;
+    EXPECT_EQ(overall.front(), 0.0) << where;
+    EXPECT_DOUBLE_EQ(overall.back(), 1.0) << where;
+    for (std::size_t i = 1; i < overall.size(); ++i)
+      EXPECT_GE(overall[i], overall[i - 1]) << where << ", report " << i;
+  }
+}
+
+TEST(Progress, EveryMethodRunsItsPlannedStagesAndTheOverallProgressOnlyGrows) {
+  for (bool keep : {false, true}) {
+    check_progress<2>(shapes::star(60).samples, Surface_kind::closed, keep);
+    check_progress<2>(shapes::open_arc(40).samples, Surface_kind::bordered, keep);
+    check_progress<3>(shapes::bumpy_sphere(600), Surface_kind::closed, keep);
+    check_progress<3>(shapes::hemisphere(600), Surface_kind::bordered, keep);
+  }
+}
+
+}  // namespace
+}  // namespace sculpt
