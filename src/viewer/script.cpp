@@ -146,6 +146,14 @@ std::string Script::before_frame(Viewer& viewer) {
     const auto done = [&](bool succeeded) {
       if (!succeeded) fail("'" + line + "': " + viewer.message());
     };
+    // A switch: `command on` or `command off`.
+    const auto on_off = [&](const auto& set) {
+      if (argument == "on" || argument == "off") {
+        set(argument == "on");
+      } else {
+        fail("'" + line + "': expected " + command + " on or off");
+      }
+    };
     if (!extra.empty() && !takes_arguments(command)) {
       fail("'" + line + "': one argument expected");
       continue;
@@ -219,11 +227,7 @@ std::string Script::before_frame(Viewer& viewer) {
         viewer.press_key(key);
       }
     } else if (command == "animation") {
-      if (argument == "on" || argument == "off") {
-        viewer.set_animation(argument == "on");
-      } else {
-        fail("'" + line + "': expected animation on or off");
-      }
+      on_off([&](bool on) { viewer.set_animation(on); });
     } else if (command == "frames") {
       if (const auto frames = count("a number of frames (1 to 100000)", 1, 100000)) {
         frames_to_wait_ = int(*frames) - 1;
@@ -305,11 +309,7 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       done(viewer.export_animation(arguments[0], width, height, int(frames)));
     } else if (command == "neighbourhood") {
-      if (argument == "on" || argument == "off") {
-        viewer.set_neighbourhood(argument == "on");
-      } else {
-        fail("'" + line + "': expected neighbourhood on or off");
-      }
+      on_off([&](bool on) { viewer.set_neighbourhood(on); });
     } else if (command == "polar-balls") {
       // polar-balls EVERY (every k-th pole's ball; 0 or off: none)
       const auto every = argument == "off" ? std::optional<long>(0) : number(argument, 0, 1000000);
@@ -319,17 +319,9 @@ std::string Script::before_frame(Viewer& viewer) {
         fail("'" + line + "': expected polar-balls EVERY (1 for all, 0 or off for none)");
       }
     } else if (command == "follow") {
-      if (argument == "on" || argument == "off") {
-        viewer.set_follow(argument == "on");
-      } else {
-        fail("'" + line + "': expected follow on or off");
-      }
+      on_off([&](bool on) { viewer.set_follow(on); });
     } else if (command == "edit") {
-      if (argument == "on" || argument == "off") {
-        viewer.set_editing(argument == "on");
-      } else {
-        fail("'" + line + "': expected edit on or off");
-      }
+      on_off([&](bool on) { viewer.set_editing(on); });
     } else if (command == "add-point") {
       const auto xy = reals(0);
       if (!xy || xy->size() != 2) {

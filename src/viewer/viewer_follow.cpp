@@ -37,6 +37,12 @@ std::vector<Viewer::Point_of_interest> Viewer::points_of_interest() const {
           if (const Labelling_event* e = latest_event())
             points.push_back({position(r.poles.poles[e->pole].center),
                               "pole " + std::to_string(e->pole) + " just labelled"});
+          // Following a seed far out leaves the shape behind: an arrow leads back to it.
+          const scene::Scene& scene = renderer_->scene();
+          points.push_back({(glm::vec3(scene.lower[0], scene.lower[1], scene.lower[2]) +
+                             glm::vec3(scene.upper[0], scene.upper[1], scene.upper[2])) *
+                                0.5f,
+                            "the samples"});
         } else if (request_.stage == scene::Stage::seeds) {
           for (int seed : r.seeds.outer_seeds)
             points.push_back({position(r.poles.poles[seed].center), "outer seeds"});
@@ -103,7 +109,9 @@ void Viewer::draw_off_screen_markers(int width, int height) {
       labelled_sides |= side;
       // Beside the arrow, inside the view whatever side it is on.
       const ImVec2 size = ImGui::CalcTextSize(point.label.c_str());
-      ImVec2 at = corner(24, 0);
+      // Behind the arrow, clear of it whichever way it points.
+      ImVec2 at =
+          corner(20 + 0.5f * (std::abs(direction.x) * size.x + std::abs(direction.y) * size.y), 0);
       // (max of min, not clamp: in a narrow view the upper bound may fall below the lower.)
       at.x = std::max(left + 4, std::min(at.x - size.x / 2, left + view_w - size.x - 4));
       at.y = std::max(top + 4, std::min(at.y - size.y / 2, view_h - size.y - 4));
