@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <type_traits>
 
@@ -12,6 +13,7 @@
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
 #include "render/animation.hpp"
+#include "render/camera.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt::frontend {
@@ -225,8 +227,26 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   if (animated) {
     std::vector<render::Image> images;
     scene::Scene last;
+    // The replay follows the pole just labelled, as the viewer does: the first picture's
+    // camera, panned whenever the pole leaves the view.
+    std::optional<render::Camera> camera;
+    const auto [width, height] = parse_size(shot.size);
     for (const Shot& frame : animation_frames(shot, shown)) {
-      Picture picture = draw_shot(*renderer_, frame, shown, inline_camera);
+      nlohmann::json followed;
+      if (camera && shot.animate == "replay" && frame.step > 0) {
+        const glm::vec3 pole = std::visit(
+            [&](const auto& r) {
+              constexpr int D = std::decay_t<decltype(r)>::dimension;
+              const auto& c = r.poles.poles[r.propagation.events[frame.step - 1].pole].center;
+              return glm::vec3(float(c[0]), float(c[1]), D == 3 ? float(c[D - 1]) : 0.0f);
+            },
+            shown);
+        render::keep_in_view(*camera, pole, float(width) / float(height));
+        followed = render::to_json(*camera);
+      }
+      Picture picture =
+          draw_shot(*renderer_, frame, shown, followed.is_null() ? inline_camera : &followed);
+      if (!camera) camera = picture.camera;
       images.push_back(std::move(picture.image));
       last = std::move(picture.scene);
     }

@@ -29,6 +29,20 @@ glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_degrees), aspect, distance * 0.01f, distance * 100.0f);
 }
 
+bool keep_in_view(Camera& camera, const glm::vec3& point, float aspect, float edge, float inside) {
+  const glm::vec4 clip = camera.projection(aspect) * camera.view() * glm::vec4(point, 1.0f);
+  if (clip.w <= 0) return false;
+  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  if (std::abs(ndc.x) <= edge && std::abs(ndc.y) <= edge) return false;
+  const float dx = ndc.x - std::clamp(ndc.x, -inside, inside);
+  const float dy = ndc.y - std::clamp(ndc.y, -inside, inside);
+  // pan() moves by the visible half height at the target; a point at another depth moves on
+  // screen by target distance / its depth as much (clip.w is its depth; 1 in 2D).
+  const float depth = camera.dimension == 3 ? clip.w / camera.distance : 1.0f;
+  camera.pan(dx * aspect * depth, dy * depth);
+  return true;
+}
+
 void Camera::orbit(float yaw_delta, float pitch_delta) {
   yaw += yaw_delta;
   pitch = std::clamp(pitch + pitch_delta, -1.55f, 1.55f);

@@ -40,6 +40,12 @@ Camera fit(const scene::Scene& scene, float aspect, float zoom, float yaw, float
 // move linearly, scale and distance geometrically, the orbit along the shorter way round.
 Camera interpolate(const Camera& a, const Camera& b, float t);
 
+// Following a point (the replay's pole just labelled): if it lies beyond `edge` of the half
+// view from the centre, pans the camera, keeping its zoom, until it lies within `inside`.
+// Returns whether the camera moved (never for a point behind a 3D camera).
+bool keep_in_view(Camera& camera, const glm::vec3& point, float aspect, float edge = 0.85f,
+                  float inside = 0.6f);
+
 nlohmann::json to_json(const Camera& camera);
 Camera camera_from_json(const nlohmann::json& json);  // throws std::invalid_argument
 

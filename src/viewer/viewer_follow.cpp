@@ -16,10 +16,6 @@ float panel_width() {
   return 360.0f * std::max(1.0f, ImGui::GetIO().FontGlobalScale);
 }
 
-// Past this share of the half view from the centre, a point counts as leaving the view; the
-// camera brings it back to `inside`.
-constexpr float view_edge = 0.85f, inside = 0.6f;
-
 template <class P>
 glm::vec3 position(const P& p) {
   constexpr std::size_t D = std::tuple_size_v<P>;
@@ -58,19 +54,10 @@ void Viewer::follow_latest_event() {
   if (points.empty()) return;
   const float aspect =
       float(std::max(1, frame_width_ - int(panel_width()))) / float(view_height(frame_height_));
-  // From where the camera is going, if it is already moving.
+  // From where the camera is going, if it is already moving; a point behind a 3D camera is
+  // left to the arrow.
   render::Camera camera = camera_move_ ? camera_move_->to : camera_;
-  const glm::vec4 clip =
-      camera.projection(aspect) * camera.view() * glm::vec4(points.front().at, 1.0f);
-  if (clip.w <= 0) return;  // behind the camera (3D): left to the arrow
-  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-  if (std::abs(ndc.x) <= view_edge && std::abs(ndc.y) <= view_edge) return;
-  const float dx = ndc.x - std::clamp(ndc.x, -inside, inside);
-  const float dy = ndc.y - std::clamp(ndc.y, -inside, inside);
-  // pan() moves by the visible half height at the target; a point at another depth moves on
-  // screen by target distance / its depth as much (clip.w is its depth; 1 in 2D).
-  const float depth = camera.dimension == 3 ? clip.w / camera.distance : 1.0f;
-  camera.pan(dx * aspect * depth, dy * depth);
+  if (!render::keep_in_view(camera, points.front().at, aspect)) return;
   camera_move_ = Camera_move{camera_, camera, 0.0f};
   camera_is_panel_camera_ = false;
 }
