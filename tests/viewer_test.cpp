@@ -440,6 +440,25 @@ TEST(Viewer, TheShippedLessonRuns) {
   EXPECT_TRUE(std::filesystem::exists(folder + "/lesson.xy"));
 }
 
+// Another model is framed afresh; another method on the same points keeps the camera.
+TEST(Viewer, FitsTheCameraToEveryNewModel) {
+  const std::string blob = testing::output_path("new-model-fitted.png"),
+                    crust = testing::output_path("same-model-other-method.png");
+  ASSERT_EQ(run_viewer_script("new-model",
+                              "example star\nwait\ncamera zoom 0.05\n"
+                              "example blob\nwait\nframes 2\nscreenshot " +
+                                  blob +
+                                  "\ncamera zoom 0.05\nmethod crust\nwait\n"
+                                  "frames 2\nscreenshot " +
+                                  crust + "\nquit\n"),
+            0);
+  const auto green = scene::palette::sample;
+  const std::size_t fitted = pixels_of(render::read_png(blob), green.r, green.g, green.b);
+  const std::size_t kept = pixels_of(render::read_png(crust), green.r, green.g, green.b);
+  EXPECT_GT(fitted, 1500u);     // the blob's 150 samples, all in view
+  EXPECT_LT(kept, fitted / 4);  // zoomed in 20 times, and kept so across the method switch
+}
+
 TEST(Viewer, WithoutADisplayItNamesTheHeadlessCommand) {
   const std::string log = testing::output_path("no-display.log");
   const int code = run("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(SCULPT_VIEW_EXECUTABLE) +

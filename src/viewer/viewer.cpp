@@ -173,6 +173,11 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
                   std::string description) {
   const bool same_dimension =
       reconstruction_ && reconstruction_->index() == reconstruction->index();
+  // Another method or an edit of the same points keeps the camera (a class compares them in
+  // one view); another model is framed afresh.
+  const bool same_input = reconstruction_ && (last_request_.edited_points ||
+                                              (shown_request_.path == last_request_.path &&
+                                               shown_request_.example == last_request_.example));
   reconstruction_ = std::move(reconstruction);
   description_ = std::move(description);
   shown_request_ = last_request_;
@@ -187,7 +192,7 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
                               ? request_.stage
                               : scene::Stage::surface);
   playing_ = false;
-  if (!same_dimension) camera_fitted_ = false;
+  if (!same_dimension || !same_input) camera_fitted_ = false;
   scene_dirty_ = true;
 }
 
