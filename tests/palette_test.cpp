@@ -10,6 +10,7 @@
 
 #include "scene/scene.hpp"
 #include "shapes/shapes.hpp"
+#include "test_support.hpp"
 
 namespace sculpt {
 namespace {
@@ -62,10 +63,9 @@ std::vector<std::string> colour_clashes(const scene::Scene& scene, const std::st
 template <int D>
 void check_every_stage(const std::vector<Point<D>>& points, Surface_kind kind,
                        std::set<std::string>& clashes, int& pictures) {
-  for (const char* name : method_names()) {
-    Options options;
-    parse_method(name, options.method);
-    if (!reconstructs_in(options.method, D)) continue;
+  for (Method method : testing::methods_in(D)) {
+    const std::string name = to_string(method);
+    Options options = testing::with_method(method);
     options.kind = kind;
     options.keep_triangulations = true;
     const auto r = reconstruct(points, options);

@@ -7,16 +7,16 @@
 
 #include "core/stage_plan.hpp"
 #include "shapes/shapes.hpp"
+#include "test_support.hpp"
 
 namespace sculpt {
 namespace {
 
 template <int D>
 void check_progress(const std::vector<Point<D>>& points, Surface_kind kind, bool keep) {
-  for (const char* name : method_names()) {
-    Options options;
-    parse_method(name, options.method);
-    if (!reconstructs_in(options.method, D)) continue;
+  for (Method method : testing::methods_in(D)) {
+    const std::string name = to_string(method);
+    Options options = testing::with_method(method);
     options.kind = kind;
     options.keep_triangulations = keep;
     std::vector<double> overall;

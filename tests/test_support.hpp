@@ -20,6 +20,16 @@ inline Options with_method(Method method) {
   return options;
 }
 
+// Every method that reconstructs in this dimension, in the order of method_names().
+inline std::vector<Method> methods_in(int dimension) {
+  std::vector<Method> methods;
+  for (const char* name : method_names()) {
+    Method method;
+    if (parse_method(name, method) && reconstructs_in(method, dimension)) methods.push_back(method);
+  }
+  return methods;
+}
+
 // The faces of tetrahedra, each with the number of tetrahedra it bounds.
 inline std::map<std::array<int, 3>, int> faces_of(const std::vector<Cell<3>>& cells) {
   std::map<std::array<int, 3>, int> faces;

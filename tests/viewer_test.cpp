@@ -261,16 +261,14 @@ std::vector<nlohmann::json> printed_statistics(const std::string& log) {
   return all;
 }
 
-// Pixels of the drawing area in the ground-truth curve's colour: the part of the true curve
-// the reconstruction does not cover.
-std::size_t true_curve_pixels(const render::Image& image) {
-  const auto c = scene::palette::true_curve;
+// Pixels of the drawing area within 12 of a colour (0..1 channels).
+std::size_t pixels_of(const render::Image& image, float r, float g, float b) {
   std::size_t count = 0;
   for (int y = 30; y < image.height; ++y) {
     for (int x = panel_width + 1; x < image.width; ++x) {
       const auto* p = image.pixel(x, y);
-      count += std::abs(p[0] - 255 * c.r) < 12 && std::abs(p[1] - 255 * c.g) < 12 &&
-               std::abs(p[2] - 255 * c.b) < 12;
+      count += std::abs(p[0] - 255 * r) < 12 && std::abs(p[1] - 255 * g) < 12 &&
+               std::abs(p[2] - 255 * b) < 12;
     }
   }
   return count;
@@ -317,8 +315,9 @@ TEST(Viewer, AScriptedLessonEditsSamplesAndEveryStageFollows) {
   EXPECT_LE(stats[5]["samples"].get<int>(), 184 + 11);
   // The true curve is drawn wider than the result, a halo around it where they agree. Cut
   // across, the valley's true curve is seen whole besides; followed, it is covered again.
-  const std::size_t uncovered_cut = true_curve_pixels(render::read_png(cut));
-  const std::size_t uncovered_kept = true_curve_pixels(render::read_png(kept));
+  const auto truth = scene::palette::true_curve;
+  const std::size_t uncovered_cut = pixels_of(render::read_png(cut), truth.r, truth.g, truth.b);
+  const std::size_t uncovered_kept = pixels_of(render::read_png(kept), truth.r, truth.g, truth.b);
   EXPECT_GT(uncovered_cut, uncovered_kept + 200)
       << "cut " << uncovered_cut << ", kept " << uncovered_kept;
   EXPECT_GT(drawn_pixels(render::read_png(voronoi)), drawn_pixels(render::read_png(kept)));
@@ -344,19 +343,6 @@ TEST(Viewer, AnEditThatCannotBeMadeIsOneLineAndAFailure) {
         testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/" + name + ".log");
     EXPECT_NE(log.find("sculpt-view: script: "), std::string::npos) << name << ": " << log;
   }
-}
-
-// Pixels of the drawing area within 12 of a colour (0..1 channels).
-std::size_t pixels_of(const render::Image& image, float r, float g, float b) {
-  std::size_t count = 0;
-  for (int y = 30; y < image.height; ++y) {
-    for (int x = panel_width + 1; x < image.width; ++x) {
-      const auto* p = image.pixel(x, y);
-      count += std::abs(p[0] - 255 * r) < 12 && std::abs(p[1] - 255 * g) < 12 &&
-               std::abs(p[2] - 255 * b) < 12;
-    }
-  }
-  return count;
 }
 
 // The star's first labelling events are convex seeds far out by the box corners. Following,

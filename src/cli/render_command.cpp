@@ -91,14 +91,9 @@ int run_render(const Render_arguments& args) {
   if (args.shots_file.empty()) {
     if (args.shot.output.empty())
       throw frontend::Usage_error("render needs -o FILE.png (FILE.webp with --animate)");
-    const std::string wanted = args.shot.animate.empty() ? ".png" : ".webp";
-    if (io::extension_of(args.shot.output) != wanted) {
-      throw frontend::Usage_error(args.shot.animate.empty()
-                                      ? "render writes PNG images: '" + args.shot.output +
-                                            "' does not end in .png"
-                                      : "an animation is written as animated WebP: '" +
-                                            args.shot.output + "' does not end in .webp");
-    }
+    // A usage error here, before any work (Shot_renderer checks the same for --shots lists).
+    if (const std::string problem = frontend::output_format_problem(args.shot); !problem.empty())
+      throw frontend::Usage_error(problem);
     renderer.render(args.shot, nullptr);
     return 0;
   }

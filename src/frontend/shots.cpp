@@ -167,6 +167,17 @@ Picture draw_shot(render::Headless_renderer& renderer, const Shot& shot,
   return picture;
 }
 
+std::string output_format_problem(const Shot& shot) {
+  if (shot.animate.empty()) {
+    return io::extension_of(shot.output) == ".png"
+               ? ""
+               : "render writes PNG images: '" + shot.output + "' does not end in .png";
+  }
+  return io::extension_of(shot.output) == ".webp" ? ""
+                                                  : "an animation is written as animated WebP: '" +
+                                                        shot.output + "' does not end in .webp";
+}
+
 namespace {
 
 // The pictures of an animation: the shot at each step of the replay, or at each stage.
@@ -209,12 +220,8 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   if (animated &&
       (shot.frames < 2 || shot.frames > 2000 || shot.frame_ms < 0 || shot.frame_ms > 60000))
     throw io::Error("an animation has 2 to 2000 frames, each shown 0 ms (automatic) to 60,000 ms");
-  if (io::extension_of(shot.output) != (animated ? ".webp" : ".png")) {
-    throw io::Error(animated
-                        ? "an animation is written as animated WebP: '" + shot.output +
-                              "' does not end in .webp"
-                        : "render writes PNG images: '" + shot.output + "' does not end in .png");
-  }
+  if (const std::string problem = output_format_problem(shot); !problem.empty())
+    throw io::Error(problem);
   io::check_output_folder(shot.output);  // before any work
   io::check_output_folder(shot.save_camera);
   if (shot.input.empty() == shot.example.empty()) {
@@ -236,9 +243,8 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
       if (camera && shot.animate == "replay" && frame.step > 0) {
         const glm::vec3 pole = std::visit(
             [&](const auto& r) {
-              constexpr int D = std::decay_t<decltype(r)>::dimension;
-              const auto& c = r.poles.poles[r.propagation.events[frame.step - 1].pole].center;
-              return glm::vec3(float(c[0]), float(c[1]), D == 3 ? float(c[D - 1]) : 0.0f);
+              return render::to_glm(
+                  r.poles.poles[r.propagation.events[frame.step - 1].pole].center);
             },
             shown);
         render::keep_in_view(*camera, pole, float(width) / float(height));

@@ -22,6 +22,10 @@ std::pair<int, int> parse_size(const std::string& size);
 // Reads a JSON file; throws io::Error with a one-line message.
 nlohmann::json read_json(const std::string& path);
 
+// Why a shot's output cannot be written ("" if it can): a picture is a .png, an animation a
+// .webp.
+std::string output_format_problem(const Shot& shot);
+
 // Reads a shot's fields from JSON (the names of Shot's members; "legend": false for no legend).
 Shot shot_from_json(const nlohmann::json& json);
 

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
+#include <tuple>
 
 #include "scene/scene.hpp"
 
@@ -39,6 +40,13 @@ Camera fit(const scene::Scene& scene, float aspect, float zoom, float yaw, float
 // The camera a fraction t in [0, 1] of the way from a to b (same dimension): centres and targets
 // move linearly, scale and distance geometrically, the orbit along the shorter way round.
 Camera interpolate(const Camera& a, const Camera& b, float t);
+
+// A point of a reconstruction (2 or 3 coordinates) where the renderer draws it: z = 0 in 2D.
+template <class P>
+glm::vec3 to_glm(const P& p) {
+  constexpr std::size_t d = std::tuple_size_v<P>;
+  return {float(p[0]), float(p[1]), d == 3 ? float(p[d - 1]) : 0.0f};
+}
 
 // Following a point (the replay's pole just labelled): if it lies beyond `edge` of the half
 // view from the centre, pans the camera, keeping its zoom, until it lies within `inside`.

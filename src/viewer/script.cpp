@@ -13,6 +13,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace sculpt::viewer {
@@ -46,6 +47,16 @@ std::optional<long> number(const std::string& word, long low, long high) {
     return std::nullopt;
   }
   return value;
+}
+
+// A picture size WIDTHxHEIGHT, 16 to 8192 pixels each, or nothing.
+std::optional<std::pair<int, int>> picture_size(const std::string& word) {
+  const auto x = word.find('x');
+  if (x == std::string::npos) return std::nullopt;
+  const auto width = number(word.substr(0, x), 16, 8192);
+  const auto height = number(word.substr(x + 1), 16, 8192);
+  if (!width || !height) return std::nullopt;
+  return std::pair<int, int>(int(*width), int(*height));
 }
 
 // A whole word as a finite real number, or nothing.
@@ -237,20 +248,12 @@ std::string Script::before_frame(Viewer& viewer) {
       if (needs_argument("a PNG path")) return argument;
     } else if (command == "export") {
       if (!needs_argument("a PNG path")) continue;
-      int width = 800, height = 600;
-      if (!extra.empty()) {
-        const auto x = extra.find('x');
-        const auto w = number(extra.substr(0, x), 16, 8192);
-        const auto h =
-            x == std::string::npos ? std::nullopt : number(extra.substr(x + 1), 16, 8192);
-        if (!w || !h) {
-          fail("'" + line + "': expected a size WIDTHxHEIGHT, 16 to 8192 pixels each");
-          continue;
-        }
-        width = int(*w);
-        height = int(*h);
+      const auto size = extra.empty() ? std::pair<int, int>(800, 600) : picture_size(extra);
+      if (!size) {
+        fail("'" + line + "': expected a size WIDTHxHEIGHT, 16 to 8192 pixels each");
+        continue;
       }
-      done(viewer.export_picture(argument, width, height));
+      done(viewer.export_picture(argument, size->first, size->second));
     } else if (command == "explain") {
       // The Explanation panel's paragraph, on standard output: for demos and tests.
       if (!viewer.has_reconstruction()) {
@@ -287,27 +290,14 @@ std::string Script::before_frame(Viewer& viewer) {
         fail("'export-animation' needs a .webp path");
         continue;
       }
-      int width = 800, height = 600;
-      long frames = 60;
-      bool ok = true;
-      if (arguments.size() > 1) {
-        const auto x = arguments[1].find('x');
-        const auto w = number(arguments[1].substr(0, x), 16, 8192);
-        const auto h =
-            x == std::string::npos ? std::nullopt : number(arguments[1].substr(x + 1), 16, 8192);
-        ok = w && h;
-        if (ok) width = int(*w), height = int(*h);
-      }
-      if (arguments.size() > 2) {
-        const auto f = number(arguments[2], 2, 2000);
-        ok = ok && f;
-        if (f) frames = *f;
-      }
-      if (!ok || arguments.size() > 3) {
+      const auto size =
+          arguments.size() > 1 ? picture_size(arguments[1]) : std::pair<int, int>(800, 600);
+      const auto frames = arguments.size() > 2 ? number(arguments[2], 2, 2000) : 60L;
+      if (!size || !frames || arguments.size() > 3) {
         fail("'" + line + "': expected export-animation PATH.webp [WIDTHxHEIGHT [FRAMES 2-2000]]");
         continue;
       }
-      done(viewer.export_animation(arguments[0], width, height, int(frames)));
+      done(viewer.export_animation(arguments[0], size->first, size->second, int(*frames)));
     } else if (command == "neighbourhood") {
       on_off([&](bool on) { viewer.set_neighbourhood(on); });
     } else if (command == "polar-balls") {

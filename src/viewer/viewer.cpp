@@ -23,12 +23,17 @@
 #include "shapes/shapes.hpp"
 
 namespace sculpt::viewer {
-namespace {
 
-// The panel's width: 360 pixels at the normal text size, wider as the text is scaled up.
 float panel_width() {
   return 360.0f * std::max(1.0f, ImGui::GetIO().FontGlobalScale);
 }
+
+int view_width(int window_width) {
+  return std::max(1, window_width - int(panel_width()));
+}
+
+namespace {
+
 constexpr double stage_dwell_seconds = 0.25;      // each stage walked through on the way to a panel
 constexpr float camera_move_seconds = 0.7f;       // the camera's flight to a panel's
 constexpr double propagation_play_seconds = 1.5;  // playing the labelling up to a panel's step
@@ -44,10 +49,6 @@ Method method_at(int index) {
 
 ImVec4 imgui_color(const scene::Color& c) {
   return ImVec4(c.r, c.g, c.b, 1.0f);
-}
-
-int view_width(int window_width) {
-  return std::max(1, window_width - int(panel_width()));
 }
 
 // What makes two reconstructions the same: their input and options.
@@ -813,14 +814,16 @@ void Viewer::click(glm::vec2 mouse, int width, int height) {
 // Files
 
 bool Viewer::export_animation(const std::string& path, int width, int height, int frames) {
-  animate_export_ = request_.stage == scene::Stage::propagation ? "replay" : "stages";
-  animate_frames_ = frames;
-  const bool saved = export_picture(path, width, height);
-  animate_export_.clear();
-  return saved;
+  return export_shot(path, width, height,
+                     request_.stage == scene::Stage::propagation ? "replay" : "stages", frames);
 }
 
 bool Viewer::export_picture(const std::string& path, int width, int height) {
+  return export_shot(path, width, height, "", 0);
+}
+
+bool Viewer::export_shot(const std::string& path, int width, int height, const std::string& animate,
+                         int frames) {
   // The figures' own renderer: `sculpt render`, next to this program, with this view's shot.
   const auto self = std::filesystem::read_symlink("/proc/self/exe");
   const auto sculpt = self.parent_path() / "sculpt";
@@ -846,8 +849,7 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
                          {"dimension", shown.dimension},
                          {"size", std::to_string(width) + "x" + std::to_string(height)},
                          {"output", std::filesystem::absolute(path).string()}};
-  if (!animate_export_.empty())
-    shot.update({{"animate", animate_export_}, {"frames", animate_frames_}});
+  if (!animate.empty()) shot.update({{"animate", animate}, {"frames", frames}});
   if (camera_is_panel_camera_ && !panel_on_screen().empty()) {
     // The panel's framing, refitted to the picture's size as the gallery does.
     const frontend::Shot& panel = tour_.image().shot;
@@ -877,7 +879,7 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
     }
   }
   // An animation shows other stages (or the replay's other steps): each its own layers.
-  if (animate_export_.empty()) shot["layers"] = visible;
+  if (animate.empty()) shot["layers"] = visible;
   const auto shots = std::filesystem::temp_directory_path() /
                      ("sculpt-view-" + std::to_string(getpid()) + ".json");
   std::ofstream(shots) << nlohmann::json{{"shots", {shot}}}.dump();

@@ -21,6 +21,11 @@
 
 namespace sculpt::viewer {
 
+// The panel's width: 360 pixels at the normal text size, wider as the text is scaled up. The
+// picture takes the window right of it (view_width).
+float panel_width();
+int view_width(int window_width);
+
 class Viewer {
  public:
   Viewer();
@@ -139,6 +144,10 @@ class Viewer {
 
  private:
   bool pick(int index, bool sample);
+  // A picture, or an animation ("replay" or "stages", in `frames` pictures), of the view through
+  // `sculpt render`.
+  bool export_shot(const std::string& path, int width, int height, const std::string& animate,
+                   int frames);
   // The stages of the shown reconstruction's method (or of the chosen one, before any).
   const std::vector<scene::Stage>& shown_stages() const;
   Job_request with_options(Job_request request) const;  // the options chosen in the panel
@@ -253,9 +262,7 @@ class Viewer {
   std::string caption_figure_;  // the figure the caption's height was measured on
   float caption_min_height_ = 0;
 
-  bool follow_ = true;          // the camera keeps the replay's pole just labelled in view
-  std::string animate_export_;  // while exporting an animation: "replay" or "stages"
-  int animate_frames_ = 60;
+  bool follow_ = true;  // the camera keeps the replay's pole just labelled in view
 
   // Live 2D editing.
   Point_editor editor_;

@@ -15,13 +15,6 @@
 #include "viewer.hpp"
 
 namespace sculpt::viewer {
-namespace {
-
-float panel_width() {
-  return 360.0f * std::max(1.0f, ImGui::GetIO().FontGlobalScale);
-}
-
-}  // namespace
 
 bool Viewer::begin_editing() {
   if (editor_.active()) return true;
@@ -163,7 +156,7 @@ Point<2> Viewer::world_at(glm::vec2 mouse, int width, int height) const {
 bool Viewer::handle_editing_input(int width, int height) {
   if (reconstruction_->index() != 0) return false;
   const ImGuiIO& io = ImGui::GetIO();
-  const int view_w = std::max(1, width - int(panel_width()));
+  const int view_w = view_width(width);
   const int view_h = view_height(height);
   const glm::vec2 mouse(io.MousePos.x - panel_width(), io.MousePos.y);
   const glm::mat4 view_projection = camera_.projection(float(view_w) / view_h) * camera_.view();

@@ -5,25 +5,10 @@
 
 #include <cmath>
 #include <glm/glm.hpp>
-#include <tuple>
 
 #include "viewer.hpp"
 
 namespace sculpt::viewer {
-namespace {
-
-float panel_width() {
-  return 360.0f * std::max(1.0f, ImGui::GetIO().FontGlobalScale);
-}
-
-template <class P>
-glm::vec3 position(const P& p) {
-  constexpr std::size_t D = std::tuple_size_v<P>;
-  return {float(p[0]), float(p[1]), D == 3 ? float(p[D - 1]) : 0.0f};
-}
-
-}  // namespace
-
 std::vector<Viewer::Point_of_interest> Viewer::points_of_interest() const {
   std::vector<Point_of_interest> points;
   if (!reconstruction_) return points;
@@ -31,7 +16,7 @@ std::vector<Viewer::Point_of_interest> Viewer::points_of_interest() const {
       [&](const auto& r) {
         if (request_.stage == scene::Stage::propagation) {
           if (const Labelling_event* e = latest_event())
-            points.push_back({position(r.poles.poles[e->pole].center),
+            points.push_back({render::to_glm(r.poles.poles[e->pole].center),
                               "pole " + std::to_string(e->pole) + " just labelled"});
           // Following a seed far out leaves the shape behind: an arrow leads back to it.
           const scene::Scene& scene = renderer_->scene();
@@ -41,7 +26,7 @@ std::vector<Viewer::Point_of_interest> Viewer::points_of_interest() const {
                             "the samples"});
         } else if (request_.stage == scene::Stage::seeds) {
           for (int seed : r.seeds.outer_seeds)
-            points.push_back({position(r.poles.poles[seed].center), "outer seeds"});
+            points.push_back({render::to_glm(r.poles.poles[seed].center), "outer seeds"});
         }
       },
       *reconstruction_);
@@ -52,8 +37,7 @@ void Viewer::follow_latest_event() {
   if (!follow_ || request_.stage != scene::Stage::propagation || frame_height_ <= 0) return;
   const auto points = points_of_interest();
   if (points.empty()) return;
-  const float aspect =
-      float(std::max(1, frame_width_ - int(panel_width()))) / float(view_height(frame_height_));
+  const float aspect = float(view_width(frame_width_)) / float(view_height(frame_height_));
   // From where the camera is going, if it is already moving; a point behind a 3D camera is
   // left to the arrow.
   render::Camera camera = camera_move_ ? camera_move_->to : camera_;
@@ -68,7 +52,7 @@ void Viewer::draw_off_screen_markers(int width, int height) {
   const auto points = points_of_interest();
   if (points.empty()) return;
   const float left = panel_width(), top = ImGui::GetFrameHeight();
-  const float view_w = float(std::max(1, width - int(left))), view_h = float(view_height(height));
+  const float view_w = float(view_width(width)), view_h = float(view_height(height));
   const glm::mat4 view_projection = camera_.projection(view_w / view_h) * camera_.view();
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImU32 colour = IM_COL32(200, 40, 160, 255);
