@@ -74,8 +74,9 @@ TEST(Explanations, TheBorderedPseudoCodeSeedsOnceAndInsertsEveryLabelledPole) {
     EXPECT_FALSE(has("OUP"));
     for (scene::Stage stage : scene::stages_of(method, 3)) {
       if (stage == scene::Stage::propagation) continue;
-      ASSERT_TRUE(code.line_of_stage.count(stage)) << scene::stage_id(stage);
-      EXPECT_LT(code.line_of_stage.at(stage), static_cast<int>(code.lines.size()));
+      ASSERT_TRUE(code.lines_of_stage.count(stage)) << scene::stage_id(stage);
+      for (int line : code.lines_of_stage.at(stage))
+        EXPECT_LT(line, static_cast<int>(code.lines.size()));
     }
     EXPECT_NE(&code, &frontend::pseudo_code(method, Surface_kind::closed, 3));
   }
@@ -84,6 +85,67 @@ TEST(Explanations, TheBorderedPseudoCodeSeedsOnceAndInsertsEveryLabelledPole) {
       std::string(frontend::pseudo_code(Method::robust, Surface_kind::bordered, 2).lines.back())
           .find("2 per sample"),
       std::string::npos);
+}
+
+// Every line of every method's pseudo-code is lit at some moment: at a stage, or in the replay
+// before the first event, at an event of some reason, or at a conflict; a loop's header is lit
+// with its body, a statement with its continuation lines.
+TEST(Explanations, EveryLineOfEveryPseudoCodeIsReachableByHighlighting) {
+  for (const char* name : method_names()) {
+    Method method;
+    ASSERT_TRUE(parse_method(name, method));
+    for (int dimension : {2, 3}) {
+      if (!reconstructs_in(method, dimension)) continue;
+      for (Surface_kind kind : {Surface_kind::closed, Surface_kind::bordered}) {
+        SCOPED_TRACE(std::string(name) + " " + std::to_string(dimension) + "D " +
+                     to_string(kind));
+        const auto& code = frontend::pseudo_code(method, kind, dimension);
+        const int size = static_cast<int>(code.lines.size());
+        std::set<int> lit;
+        const auto light = [&](const std::vector<int>& lines) {
+          for (int line : lines) {
+            ASSERT_GE(line, 0);
+            ASSERT_LT(line, size);
+            lit.insert(line);
+          }
+        };
+        for (scene::Stage stage : scene::stages_of(method, dimension)) {
+          if (stage != scene::Stage::propagation) {
+            light(frontend::highlighted_lines(code, stage, nullptr));
+            continue;
+          }
+          light(frontend::highlighted_lines(code, stage, nullptr));  // before any event
+          for (const auto& [reason, lines] : code.lines_of_reason) {
+            Labelling_event event;
+            event.reason = reason;
+            light(frontend::highlighted_lines(code, stage, &event));
+          }
+          light(frontend::highlighted_lines(code, stage, nullptr, /*conflict_now=*/true));
+        }
+        for (int line = 0; line < size; ++line)
+          EXPECT_TRUE(lit.count(line)) << "never lit: \"" << code.lines[line] << '"';
+      }
+    }
+  }
+}
+
+// A statement is lit with the loops around it and the lines that continue it: the paper's
+// pairing lights the while loop, the pop and the pairing's for; Boissonnat's removal lights its
+// loop, the continuation of the cell's choice and the comments under it.
+TEST(Explanations, AStatementIsLitWithItsLoopsAndItsContinuationLines) {
+  const auto& paper = frontend::pseudo_code(Method::paper, Surface_kind::closed, 3);
+  Labelling_event pairing;
+  pairing.reason = Label_reason::pairing;
+  EXPECT_EQ(frontend::highlighted_lines(paper, scene::Stage::propagation, &pairing),
+            (std::vector<int>{7, 8, 11, 12}));
+  EXPECT_EQ(frontend::current_line(paper, scene::Stage::propagation, &pairing), 12);
+  const auto& boissonnat = frontend::pseudo_code(Method::boissonnat, Surface_kind::closed, 3);
+  EXPECT_EQ(frontend::highlighted_lines(boissonnat, scene::Stage::solid, nullptr),
+            (std::vector<int>{2, 3, 4, 5, 6, 7}));
+  // A line with a colon inside is not a loop: the robust contradiction lights its own loop.
+  const auto& robust = frontend::pseudo_code(Method::robust, Surface_kind::closed, 3);
+  EXPECT_EQ(frontend::highlighted_lines(robust, scene::Stage::propagation, nullptr, true),
+            (std::vector<int>{5, 11}));
 }
 
 // The replay reaches the conflict line: on the spiral (bordered, where poles of neighbouring

@@ -212,8 +212,9 @@ TEST(SurfaceFiltering, EveryStageOfEveryMethodHasItsLineOfPseudoCode) {
         if (stage == scene::Stage::propagation) continue;  // its line follows the events
         SCOPED_TRACE(std::string(name) + " " + std::to_string(dimension) + "D " +
                      scene::stage_id(stage));
-        ASSERT_TRUE(code.line_of_stage.count(stage));
-        EXPECT_LT(code.line_of_stage.at(stage), static_cast<int>(code.lines.size()));
+        ASSERT_TRUE(code.lines_of_stage.count(stage));
+        for (int line : code.lines_of_stage.at(stage))
+          EXPECT_LT(line, static_cast<int>(code.lines.size()));
       }
     }
   }

@@ -1,33 +1,39 @@
 // Each method's pseudo-code, in the order our implementation runs it (the paper method: its
-// Fig. 5), and which line a moment of the algorithm is at.
+// Fig. 5), and which lines a moment of the algorithm is at: every line is reached by some stage
+// or some event of the replay (tests/explanations_test.cpp).
 #pragma once
 
 #include <algorithm>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "scene/scene.hpp"
 
 namespace sculpt::frontend {
 
+// The statements a moment runs, by their first lines, the main one first. The viewer also
+// lights each statement's continuation lines and the loop headers around it (statement_block).
+using Line_list = std::vector<int>;
+
 struct Pseudo_code {
   std::vector<const char*> lines;
-  std::map<scene::Stage, int> line_of_stage;
-  std::map<Label_reason, int> line_of_reason;  // in the propagation: the latest event's reason
-  int before_any_event = 0;                    // in the propagation, before the first event
+  std::map<scene::Stage, Line_list> lines_of_stage;
+  std::map<Label_reason, Line_list> lines_of_reason;  // in the propagation: the latest event's
+  Line_list before_any_event = {0};                   // in the propagation, before any event
   // In the propagation: the line of a conflict (a label offered against the one a pole has),
   // shown when one follows the event on screen; -1 for a method without conflicts.
   int conflict_line = -1;
 };
 
 // The stages before the labelling show the first line or the poles' lines in every method.
-inline std::map<scene::Stage, int> common_stage_lines(int poles_line) {
+inline std::map<scene::Stage, Line_list> common_stage_lines(Line_list poles_lines) {
   using scene::Stage;
-  return {{Stage::samples, 0},
-          {Stage::delaunay, 0},
-          {Stage::hull, 0},
-          {Stage::voronoi, 0},
-          {Stage::poles, poles_line}};
+  return {{Stage::samples, {0}},
+          {Stage::delaunay, {0}},
+          {Stage::hull, {0}},
+          {Stage::voronoi, {0}},
+          {Stage::poles, poles_lines}};
 }
 
 inline Pseudo_code paper_pseudo_code() {
@@ -53,17 +59,18 @@ inline Pseudo_code paper_pseudo_code() {
       "solid <- cells whose vertices are all in S",
       "surface <- facets solid | rest",
   };
-  code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::seeds, 4},
-                             {Stage::outer_concave, 14},
-                             {Stage::sculpted_delaunay, 15},
-                             {Stage::solid, 16},
-                             {Stage::surface, 17}});
-  code.line_of_reason = {{Label_reason::convex_seed, 4},
-                         {Label_reason::inscribed_cube, 10},
-                         {Label_reason::pairing, 12},
-                         {Label_reason::ball_overlap, 10}};
-  code.before_any_event = 6;
+  code.lines_of_stage = common_stage_lines({2, 3});
+  code.lines_of_stage.insert({{Stage::seeds, {4, 5}},
+                              {Stage::outer_concave, {14}},
+                              {Stage::sculpted_delaunay, {15}},
+                              {Stage::solid, {16}},
+                              {Stage::surface, {17}}});
+  // An event pops p and labels one q: the loop's lines around the labelling are lit too.
+  code.lines_of_reason = {{Label_reason::convex_seed, {4}},
+                          {Label_reason::inscribed_cube, {10, 8}},
+                          {Label_reason::pairing, {12, 8}},
+                          {Label_reason::ball_overlap, {10, 8}}};
+  code.before_any_event = {6};
   code.conflict_line = 13;
   return code;
 }
@@ -85,13 +92,13 @@ inline void add_confidence_labelling_lines(Pseudo_code& code) {
       "        ev(q, other side) max= -cos(p s q)",
       "    ev >= 0.5 against q's label: contradicted",
   };
-  code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({scene::Stage::seeds, 3});
-  code.line_of_reason = {{Label_reason::convex_seed, 3},
-                         {Label_reason::ball_overlap, 8},
-                         {Label_reason::pairing, 10},
-                         {Label_reason::inscribed_cube, 8}};
-  code.before_any_event = 4;
+  code.lines_of_stage = common_stage_lines({2});
+  code.lines_of_stage.insert({scene::Stage::seeds, {3}});
+  code.lines_of_reason = {{Label_reason::convex_seed, {6, 3}},
+                          {Label_reason::ball_overlap, {8, 6}},
+                          {Label_reason::pairing, {10, 6}},
+                          {Label_reason::inscribed_cube, {8, 6}}};
+  code.before_any_event = {4};
   code.conflict_line = 11;
 }
 
@@ -101,7 +108,7 @@ inline Pseudo_code bordered_surface_pseudo_code(Pseudo_code code, int first_seed
   using scene::Stage;
   code.lines[first_seed_line] = "OSP <- one convex pole: outer   # bordered";
   // The labelling stays (its conflict line too); what follows it changes.
-  code.lines.resize(std::max(code.line_of_reason.at(Label_reason::pairing), code.conflict_line) +
+  code.lines.resize(std::max(code.lines_of_reason.at(Label_reason::pairing)[0], code.conflict_line) +
                     1);
   const int up = int(code.lines.size());
   code.lines.insert(code.lines.end(), {
@@ -110,10 +117,10 @@ inline Pseudo_code bordered_surface_pseudo_code(Pseudo_code code, int first_seed
                                           "solid <- cells whose vertices are all in S",
                                           "surface <- facets of S with an outer apex",
                                       });
-  code.line_of_stage[Stage::outer_concave] = up;
-  code.line_of_stage[Stage::sculpted_delaunay] = up + 1;
-  code.line_of_stage[Stage::solid] = up + 2;
-  code.line_of_stage[Stage::surface] = up + 3;
+  code.lines_of_stage[Stage::outer_concave] = {up};
+  code.lines_of_stage[Stage::sculpted_delaunay] = {up + 1};
+  code.lines_of_stage[Stage::solid] = {up + 2};
+  code.lines_of_stage[Stage::surface] = {up + 3};
   return code;
 }
 
@@ -129,10 +136,10 @@ inline Pseudo_code robust_pseudo_code() {
                                           "solid <- cells left",
                                           "surface <- facets solid | outside",
                                       });
-  code.line_of_stage.insert({{Stage::outer_concave, carving},
-                             {Stage::sculpted_delaunay, carving + 1},
-                             {Stage::solid, carving + 3},
-                             {Stage::surface, carving + 4}});
+  code.lines_of_stage.insert({{Stage::outer_concave, {carving}},
+                              {Stage::sculpted_delaunay, {carving + 1, carving + 2}},
+                              {Stage::solid, {carving + 3}},
+                              {Stage::surface, {carving + 4}}});
   return code;
 }
 
@@ -153,17 +160,17 @@ inline Pseudo_code open_curves_pseudo_code() {
       "    offer sq; offer sr if |sr| <= 2.5 spacing",
       "curve <- offers, shortest first, 2 per sample",
   };
-  code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::seeds, 3},
-                             {Stage::outer_concave, 4},
-                             {Stage::sculpted_delaunay, 5},
-                             {Stage::solid, 9},
-                             {Stage::surface, 9}});
-  code.line_of_reason = {{Label_reason::convex_seed, 3},
-                         {Label_reason::ball_overlap, 4},
-                         {Label_reason::pairing, 4},
-                         {Label_reason::inscribed_cube, 4}};
-  code.before_any_event = 4;
+  code.lines_of_stage = common_stage_lines({2});
+  code.lines_of_stage.insert({{Stage::seeds, {3}},
+                              {Stage::outer_concave, {4}},
+                              {Stage::sculpted_delaunay, {8, 6, 7}},  // the offers, no carving
+                              {Stage::solid, {9}},
+                              {Stage::surface, {9}}});
+  code.lines_of_reason = {{Label_reason::convex_seed, {4}},
+                          {Label_reason::ball_overlap, {4}},
+                          {Label_reason::pairing, {4}},
+                          {Label_reason::inscribed_cube, {4}}};
+  code.before_any_event = {4};
   code.conflict_line = 4;  // the labelling, in one line
   return code;
 }
@@ -178,11 +185,11 @@ inline Pseudo_code crust_pseudo_code() {
       "DT' <- Delaunay(S + V)",
       "crust <- edges of DT' between two samples",
   };
-  code.line_of_stage = {{Stage::samples, 0},
-                        {Stage::delaunay, 0},
-                        {Stage::voronoi, 1},
-                        {Stage::crust_delaunay, 2},
-                        {Stage::surface, 3}};
+  code.lines_of_stage = {{Stage::samples, {0}},
+                         {Stage::delaunay, {0}},
+                         {Stage::voronoi, {1}},
+                         {Stage::crust_delaunay, {2}},
+                         {Stage::surface, {3}}};
   return code;
 }
 
@@ -197,7 +204,7 @@ inline Pseudo_code nn_crust_pseudo_code() {
       "    r <- nearest at > 90 degrees from q",
       "    keep sq, sr",
   };
-  code.line_of_stage = {{Stage::samples, 0}, {Stage::delaunay, 0}, {Stage::surface, 4}};
+  code.lines_of_stage = {{Stage::samples, {0}}, {Stage::delaunay, {0}}, {Stage::surface, {4, 2, 3}}};
   return code;
 }
 
@@ -232,10 +239,10 @@ inline Pseudo_code surface_crust_pseudo_code() {
   };
   // clang-format on
   const int pruning = add_manifold_extraction_lines(code);
-  code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::crust_delaunay, 3},
-                             {Stage::candidates, pruning},
-                             {Stage::surface, int(code.lines.size()) - 1}});
+  code.lines_of_stage = common_stage_lines({2});
+  code.lines_of_stage.insert({{Stage::crust_delaunay, {3}},
+                              {Stage::candidates, {pruning, 4, 5}},
+                              {Stage::surface, {int(code.lines.size()) - 1}}});
   return code;
 }
 
@@ -254,9 +261,10 @@ inline Pseudo_code cocone_pseudo_code() {
       "T <- triangles t of DT between samples whose",
       "    Voronoi edge meets cocone(s), s in t - U",
   };
-  add_manifold_extraction_lines(code);
-  code.line_of_stage = common_stage_lines(2);
-  code.line_of_stage.insert({{Stage::candidates, 7}, {Stage::surface, int(code.lines.size()) - 1}});
+  const int pruning = add_manifold_extraction_lines(code);
+  code.lines_of_stage = common_stage_lines({2, 3});
+  code.lines_of_stage.insert(
+      {{Stage::candidates, {7, 5}}, {Stage::surface, {int(code.lines.size()) - 1, pruning}}});
   return code;
 }
 
@@ -276,8 +284,12 @@ inline Pseudo_code tight_cocone_pseudo_code() {
                                           "solid <- cells not peeled",
                                           "surface <- facets solid | out",
                                       });
-  code.line_of_stage[Stage::solid] = first + 5;
-  code.line_of_stage[Stage::surface] = first + 6;
+  // The co-cone's surface is the tight co-cone's first guess S0: shown with the candidates.
+  Line_list& candidates = code.lines_of_stage[Stage::candidates];
+  const Line_list& s0 = code.lines_of_stage[Stage::surface];
+  candidates.insert(candidates.end(), s0.begin(), s0.end());
+  code.lines_of_stage[Stage::solid] = {first + 5, first, first + 1};
+  code.lines_of_stage[Stage::surface] = {first + 6};
   return code;
 }
 
@@ -293,7 +305,8 @@ inline Pseudo_code advancing_front_pseudo_code() {
       "         that keeps an oriented 2-manifold",
       "    add t to the surface; the front moves",
   };
-  code.line_of_stage = {{Stage::samples, 0}, {Stage::delaunay, 0}, {Stage::surface, 2}};
+  code.lines_of_stage = {
+      {Stage::samples, {0}}, {Stage::delaunay, {0}}, {Stage::surface, {2, 1, 3, 5}}};
   return code;
 }
 
@@ -309,8 +322,8 @@ inline Pseudo_code alpha_shape_pseudo_code() {
       "solid <- those cells",
       "surface <- facets between solid and rest",
   };
-  code.line_of_stage = {
-      {Stage::samples, 0}, {Stage::delaunay, 0}, {Stage::solid, 4}, {Stage::surface, 5}};
+  code.lines_of_stage = {
+      {Stage::samples, {0}}, {Stage::delaunay, {0}}, {Stage::solid, {4, 1}}, {Stage::surface, {5}}};
   return code;
 }
 
@@ -325,7 +338,7 @@ inline Pseudo_code power_crust_pseudo_code() {
                                           "crust <- faces of PD between the cells of",
                                           "    an inner and an outer pole",
                                       });
-  code.line_of_stage.insert({Stage::surface, crust + 1});
+  code.lines_of_stage.insert({Stage::surface, {crust + 1, crust}});
   return code;
 }
 
@@ -344,11 +357,11 @@ inline Pseudo_code boissonnat_pseudo_code() {
       "    solid <- solid - c",
       "surface <- facets solid | rest",
   };
-  code.line_of_stage = {{Stage::samples, 0},
-                        {Stage::delaunay, 0},
-                        {Stage::hull, 1},
-                        {Stage::solid, 7},
-                        {Stage::surface, 8}};
+  code.lines_of_stage = {{Stage::samples, {0}},
+                         {Stage::delaunay, {0}},
+                         {Stage::hull, {1}},
+                         {Stage::solid, {7, 3}},
+                         {Stage::surface, {8}}};
   return code;
 }
 
@@ -399,12 +412,80 @@ inline bool conflict_after(const Propagation_stage& propagation, long shown) {
                      [&](const Labelling_event& c) { return c.after_events == shown; });
 }
 
-// `conflict_now`: a conflict was offered right after the latest event on screen.
+// The statements a moment runs, the main one first. `conflict_now`: a conflict was offered
+// right after the latest event on screen.
+inline Line_list current_lines(const Pseudo_code& code, scene::Stage stage,
+                               const Labelling_event* latest, bool conflict_now = false) {
+  if (stage != scene::Stage::propagation) return code.lines_of_stage.at(stage);
+  if (conflict_now && code.conflict_line >= 0) return {code.conflict_line};
+  return latest ? code.lines_of_reason.at(latest->reason) : code.before_any_event;
+}
+
+// The main line of a moment: the one the viewer marks with an arrow.
 inline int current_line(const Pseudo_code& code, scene::Stage stage, const Labelling_event* latest,
                         bool conflict_now = false) {
-  if (stage != scene::Stage::propagation) return code.line_of_stage.at(stage);
-  if (conflict_now && code.conflict_line >= 0) return code.conflict_line;
-  return latest ? code.line_of_reason.at(latest->reason) : code.before_any_event;
+  return current_lines(code, stage, latest, conflict_now).front();
+}
+
+namespace pseudo_code_layout {
+inline int indent(const char* line) {
+  int spaces = 0;
+  while (line[spaces] == ' ') ++spaces;
+  return spaces;
+}
+// The text before a comment, without the spaces that end it.
+inline std::string code_part(const char* line) {
+  std::string text(line);
+  text = text.substr(0, text.find('#'));
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+inline bool is_comment(const char* line) { return line[indent(line)] == '#'; }
+// A loop or branch: its body is the lines indented under it.
+inline bool is_header(const char* line) {
+  const std::string text = code_part(line);
+  return !text.empty() && text.back() == ':';
+}
+}  // namespace pseudo_code_layout
+
+// The lines lit for a statement starting at `line`: itself, its continuation lines (indented
+// deeper, under a line that is not a header) and the comments right under it, and the headers
+// of the loops it is in. A teacher sees where in the loop the replay is, not one line alone.
+inline std::vector<int> statement_block(const Pseudo_code& code, int line) {
+  using namespace pseudo_code_layout;
+  const auto& lines = code.lines;
+  std::vector<int> block = {line};
+  const int own = indent(lines[line]);
+  if (!is_header(lines[line])) {
+    for (int next = line + 1; next < int(lines.size()); ++next) {
+      const bool continues = indent(lines[next]) > own && !is_comment(lines[next]);
+      const bool explains = indent(lines[next]) >= own && is_comment(lines[next]);
+      if (!continues && !explains) break;
+      block.push_back(next);
+    }
+  }
+  int enclosing = own;
+  for (int above = line - 1; above >= 0 && enclosing > 0; --above) {
+    if (is_header(lines[above]) && indent(lines[above]) < enclosing) {
+      block.push_back(above);
+      enclosing = indent(lines[above]);
+    }
+  }
+  return block;
+}
+
+// Every line lit at a moment, in order.
+inline std::vector<int> highlighted_lines(const Pseudo_code& code, scene::Stage stage,
+                                          const Labelling_event* latest,
+                                          bool conflict_now = false) {
+  std::vector<int> lit;
+  for (int line : current_lines(code, stage, latest, conflict_now)) {
+    const auto block = statement_block(code, line);
+    lit.insert(lit.end(), block.begin(), block.end());
+  }
+  std::sort(lit.begin(), lit.end());
+  lit.erase(std::unique(lit.begin(), lit.end()), lit.end());
+  return lit;
 }
 
 }  // namespace sculpt::frontend

@@ -1205,10 +1205,15 @@ void Viewer::draw_pseudo_code() {
       std::visit([&](const auto& r) { return frontend::conflict_after(r.propagation, shown); },
                  *reconstruction_);
   const int current = frontend::current_line(code, request_.stage, latest_event(), conflict_now);
+  // The statement's loops and continuation lines in a softer colour, the statement itself marked.
+  const std::vector<int> lit =
+      frontend::highlighted_lines(code, request_.stage, latest_event(), conflict_now);
   const auto& lines = code.lines;
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "> %s", lines[i]);
+    } else if (std::binary_search(lit.begin(), lit.end(), i)) {
+      ImGui::TextColored(ImVec4(0.95f, 0.85f, 0.6f, 1.0f), "  %s", lines[i]);
     } else {
       ImGui::TextDisabled("  %s", lines[i]);
     }
