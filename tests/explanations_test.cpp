@@ -121,6 +121,9 @@ TEST(Explanations, EveryLineOfEveryPseudoCodeIsReachableByHighlighting) {
             light(frontend::highlighted_lines(code, stage, &event));
           }
           light(frontend::highlighted_lines(code, stage, nullptr, /*conflict_now=*/true));
+          Labelling_event pairing;
+          pairing.reason = Label_reason::pairing;
+          light(frontend::highlighted_lines(code, stage, &pairing, false, /*seed_partner=*/true));
         }
         for (int line = 0; line < size; ++line)
           EXPECT_TRUE(lit.count(line)) << "never lit: \"" << code.lines[line] << '"';
@@ -139,6 +142,16 @@ TEST(Explanations, AStatementIsLitWithItsLoopsAndItsContinuationLines) {
   EXPECT_EQ(frontend::highlighted_lines(paper, scene::Stage::propagation, &pairing),
             (std::vector<int>{7, 8, 11, 12}));
   EXPECT_EQ(frontend::current_line(paper, scene::Stage::propagation, &pairing), 12);
+  // The pairing of a convex seed is the paper's ISP line; in a real replay, right after the
+  // convex seeds.
+  EXPECT_EQ(frontend::current_line(paper, scene::Stage::propagation, &pairing, false, true), 5);
+  Options options;
+  options.method = Method::paper;
+  const auto star = reconstruct(shapes::star(200).samples, options);
+  bool isp_seen = false;
+  for (const auto& event : star.propagation.events)
+    isp_seen = isp_seen || frontend::labels_seed_partner(star, &event);
+  EXPECT_TRUE(isp_seen);
   const auto& boissonnat = frontend::pseudo_code(Method::boissonnat, Surface_kind::closed, 3);
   EXPECT_EQ(frontend::highlighted_lines(boissonnat, scene::Stage::solid, nullptr),
             (std::vector<int>{2, 3, 4, 5, 6, 7}));

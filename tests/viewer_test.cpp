@@ -250,6 +250,38 @@ TEST(Viewer, ACutAwayShowsInsideTheDelaunayTriangulation) {
             << "\n";
 }
 
+// A picture exported from the viewer is the view on screen: the cut-away and the neighbourhood
+// go with it, and the layers are those of the stage just chosen, before a frame has drawn it.
+TEST(Viewer, ExportedPicturesKeepTheCutAwayAndTheNeighbourhood) {
+  const std::string whole = testing::output_path("viewer-export-whole.png"),
+                    cut = testing::output_path("viewer-export-cut.png"),
+                    near = testing::output_path("viewer-export-near.png");
+  ASSERT_EQ(run_viewer_script("export-view", "example bumpy\nwait\nstage delaunay\nexport " +
+                                                 whole + " 700x600\nclip 0.5 30 60 0.06\nexport " +
+                                                 cut + " 700x600\nclip off\npick-sample 5\n"
+                                                 "neighbourhood on\nexport " +
+                                                 near + " 700x600\nquit\n"),
+            0);
+  const double whole_share = most_common_colour_share(render::read_png(whole));
+  const double cut_share = most_common_colour_share(render::read_png(cut));
+  const double near_share = most_common_colour_share(render::read_png(near));
+  EXPECT_LT(cut_share, whole_share / 2) << "whole " << whole_share << ", cut " << cut_share;
+  EXPECT_LT(near_share, whole_share / 2) << "whole " << whole_share << ", near " << near_share;
+}
+
+// Commands that do not apply to what is shown are refused in one line, not ignored.
+TEST(Viewer, RefusesCommandsThatDoNotApplyToWhatIsShown) {
+  const auto refused = [](const std::string& name, const std::string& script) {
+    EXPECT_EQ(run_viewer_script(name, script + "\nquit\n"), 1) << script;
+    const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/" + name + ".log");
+    EXPECT_NE(log.find("sculpt-view: script: "), std::string::npos) << log;
+  };
+  refused("refuse-clip-2d", "example star\nwait\nclip 0.5 0 0");
+  refused("refuse-edit-3d", "example sphere\nwait\nedit on");
+  refused("refuse-neighbourhood", "example sphere\nwait\nneighbourhood on");
+  refused("refuse-step", "example star\nmethod boissonnat\nwait\nstep 30");
+}
+
 // The lines "stats: {...}" a script printed, in order.
 std::vector<nlohmann::json> printed_statistics(const std::string& log) {
   std::vector<nlohmann::json> all;

@@ -174,7 +174,7 @@ int run_reconstruct(Reconstruct_arguments args) {
 
 int run_examples() {
   for (const auto& example : shapes::examples()) {
-    std::cout << fmt::format("  {:<12}{}D  {}\n", example.name, example.dimension,
+    std::cout << fmt::format("  {:<18}{}D  {}\n", example.name, example.dimension,
                              example.description);
   }
   return 0;

@@ -36,6 +36,10 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->add_option("--ball-every", shot.ball_every,
                    "Polar balls of every k-th pole only (with the layer polar-balls)")
       ->check(CLI::PositiveNumber);
+  render->add_flag("--polar-balls", shot.polar_balls,
+                   "3D: also draw the polar balls (every --ball-every-th), at any stage");
+  render->add_flag("--neighbourhood", shot.neighbourhood,
+                   "Only the cells, faces and balls near the --focus-sample");
   render->add_option("--focus-pole", shot.focus_pole,
                      "Show this pole's polar ball and the pole that labelled it");
   render->add_option("--method", shot.method, frontend::methods_help())

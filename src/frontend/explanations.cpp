@@ -104,18 +104,22 @@ std::string explanation(Method method, Surface_kind kind, int dimension, scene::
     case Stage::delaunay:
       return "The Delaunay triangulation of the samples and the corners of a box 5 times their "
              "size: every " +
-             cell(dimension) + " has an empty circumball. The " + facets(dimension) +
-             " of the surface are among its faces when the sampling is dense; every method here "
-             "chooses among them (the power crust builds its own).";
+             cell(dimension) + " has an empty " +
+             std::string(dimension == 2 ? "circumcircle" : "circumball") + ". The " +
+             facets(dimension) + " of the " +
+             std::string(dimension == 2 ? "curve are among its edges" : "surface are among its faces") +
+             " when the sampling is dense; every method here chooses among them" +
+             std::string(dimension == 2 ? "." : " (the power crust builds its own).");
     case Stage::hull:
       return "The convex hull: the Delaunay " + cells(dimension) +
              " whose vertices are all samples. Sculpting starts from it and carves the outside "
              "away (Kuo & Yau, Fig. 1); for a convex shape there is nothing to carve.";
     case Stage::voronoi:
       return "The Voronoi diagram, dual of the Delaunay triangulation: each sample's cell holds "
-             "the points nearer to it than to any other. Near a densely sampled surface the "
-             "cells are long and thin, along the normal: that is what the poles and the "
-             "co-cones read.";
+             "the points nearer to it than to any other. Near a densely sampled " +
+             std::string(dimension == 2 ? "curve" : "surface") +
+             " the cells are long and thin, along the normal: that is what the poles" +
+             std::string(dimension == 2 ? " read." : " and the co-cones read.");
     case Stage::poles:
       return "The poles (Amenta): p+, the farthest vertex of a sample's Voronoi cell, and p-, "
              "the farthest on the other side. They lie near the medial axis, inside and "
@@ -123,7 +127,8 @@ std::string explanation(Method method, Surface_kind kind, int dimension, scene::
              "on each side of the " +
              std::string(dimension == 2 ? "curve." : "surface.");
     case Stage::seeds:
-      return "The seeds: the convex poles, whose Voronoi cells reach the box corners. They lie "
+      return "The seeds: the convex poles, the Voronoi vertices made with a box corner (their "
+             "samples' cells reach the box). They lie "
              "outside any surface of the samples, so they are outer for sure, and the labelling "
              "starts from them" +
              std::string(kind == Surface_kind::bordered && method == Method::paper

@@ -21,6 +21,9 @@ struct Pseudo_code {
   std::map<scene::Stage, Line_list> lines_of_stage;
   std::map<Label_reason, Line_list> lines_of_reason;  // in the propagation: the latest event's
   Line_list before_any_event = {0};                   // in the propagation, before any event
+  // In the propagation: a convex seed's partner labelled by the pairing (the paper's ISP);
+  // empty where the method has no line of its own for it.
+  Line_list seed_partner;
   // In the propagation: the line of a conflict (a label offered against the one a pole has),
   // shown when one follows the event on screen; -1 for a method without conflicts.
   int conflict_line = -1;
@@ -53,7 +56,7 @@ inline Pseudo_code paper_pseudo_code() {
       "        label q like p",
       "    for q paired with p:",
       "        label q opposite p",
-      "    q labelled already: conflict, 1st label stays",
+      "    q labelled before: conflict, label kept",
       "OUP <- outer poles that are not convex",
       "DT <- insert(DT, OUP)",
       "solid <- cells whose vertices are all in S",
@@ -71,6 +74,7 @@ inline Pseudo_code paper_pseudo_code() {
                           {Label_reason::pairing, {12, 8}},
                           {Label_reason::ball_overlap, {10, 8}}};
   code.before_any_event = {6};
+  code.seed_partner = {5};
   code.conflict_line = 13;
   return code;
 }
@@ -83,14 +87,14 @@ inline void add_confidence_labelling_lines(Pseudo_code& code) {
       "for each sample s:",
       "    p+(s), p-(s) <- poles of Vor(s)",
       "OSP <- convex poles: outer, weight 1",
-      "heap <- OSP   # largest |outer - inner| first",
+      "heap <- OSP  # largest |outer-inner| first",
       "while heap not empty:",
       "    p <- most confident pole; label it",
       "    for q whose ball meets B(p) at s:",
       "        ev(q, label p) max= cos(p s q)",
       "    for q paired with p (antipodal):",
       "        ev(q, other side) max= -cos(p s q)",
-      "    ev >= 0.5 against q's label: contradicted",
+      "    ev >= .5 against q's label: contradicted",
   };
   code.lines_of_stage = common_stage_lines({2});
   code.lines_of_stage.insert({scene::Stage::seeds, {3}});
@@ -153,12 +157,12 @@ inline Pseudo_code open_curves_pseudo_code() {
       "for each sample s:",
       "    p+(s), p-(s) <- poles of Vor(s)",
       "OSP <- convex poles: outer, weight 1",
-      "label poles by confidence (as closed); contradicted",
+      "label poles as closed; contradicted",
       "for each sample s:   # NN-crust, with ends",
       "    q <- nearest Delaunay neighbour of s",
       "    r <- nearest at > 90 degrees from q",
-      "    offer sq; offer sr if |sr| <= 2.5 spacing",
-      "curve <- offers, shortest first, 2 per sample",
+      "    offer sq; sr too if |sr| <= 2.5 spacing",
+      "curve <- offers shortest first, 2 per sample",
   };
   code.lines_of_stage = common_stage_lines({2});
   code.lines_of_stage.insert({{Stage::seeds, {3}},
@@ -235,7 +239,7 @@ inline Pseudo_code surface_crust_pseudo_code() {
       "DT' <- Delaunay(S + P)   # P: the poles",
       "T <- triangles of DT' between samples",
       "drop t if its normal leans from p+(s)-s",
-      "    > 45 deg at its widest corner, > 67.5 else",
+      "    > 45 deg at its widest angle, 67.5 else",
   };
   // clang-format on
   const int pruning = add_manifold_extraction_lines(code);
@@ -301,7 +305,7 @@ inline Pseudo_code advancing_front_pseudo_code() {
       "DT <- Delaunay(S)   # CGAL's own, no box",
       "surface <- the triangle of smallest radius",
       "while the front (border) has an edge e:",
-      "    t <- triangle of DT on e, smallest radius,",
+      "    t <- DT triangle on e, smallest radius,",
       "         that keeps an oriented 2-manifold",
       "    add t to the surface; the front moves",
   };
@@ -352,8 +356,8 @@ inline Pseudo_code boissonnat_pseudo_code() {
       "while a sample is off the boundary:",
       "    c <- removable cell whose circumsphere",
       "         bulges farthest beyond its boundary",
-      "    # removable: 1 facet out, its apex off the",
-      "    # boundary; 2 out, their edge off it (3D)",
+      "    # removable: 1 facet out, apex off the",
+      "    # boundary; 2 out, edge off it (3D)",
       "    solid <- solid - c",
       "surface <- facets solid | rest",
   };
@@ -413,18 +417,28 @@ inline bool conflict_after(const Propagation_stage& propagation, long shown) {
 }
 
 // The statements a moment runs, the main one first. `conflict_now`: a conflict was offered
-// right after the latest event on screen.
+// right after the latest event on screen; `seed_partner`: that event labelled the partner of a
+// convex seed.
 inline Line_list current_lines(const Pseudo_code& code, scene::Stage stage,
-                               const Labelling_event* latest, bool conflict_now = false) {
+                               const Labelling_event* latest, bool conflict_now = false,
+                               bool seed_partner = false) {
   if (stage != scene::Stage::propagation) return code.lines_of_stage.at(stage);
   if (conflict_now && code.conflict_line >= 0) return {code.conflict_line};
+  if (seed_partner && !code.seed_partner.empty()) return code.seed_partner;
   return latest ? code.lines_of_reason.at(latest->reason) : code.before_any_event;
 }
 
 // The main line of a moment: the one the viewer marks with an arrow.
 inline int current_line(const Pseudo_code& code, scene::Stage stage, const Labelling_event* latest,
-                        bool conflict_now = false) {
-  return current_lines(code, stage, latest, conflict_now).front();
+                        bool conflict_now = false, bool seed_partner = false) {
+  return current_lines(code, stage, latest, conflict_now, seed_partner).front();
+}
+
+// Whether an event labels the partner of a convex seed (its source is a convex pole, by pairing).
+template <int D>
+bool labels_seed_partner(const Reconstruction<D>& r, const Labelling_event* event) {
+  return event && event->reason == Label_reason::pairing && event->source >= 0 &&
+         r.poles.poles[event->source].convex;
 }
 
 namespace pseudo_code_layout {
@@ -477,9 +491,9 @@ inline std::vector<int> statement_block(const Pseudo_code& code, int line) {
 // Every line lit at a moment, in order.
 inline std::vector<int> highlighted_lines(const Pseudo_code& code, scene::Stage stage,
                                           const Labelling_event* latest,
-                                          bool conflict_now = false) {
+                                          bool conflict_now = false, bool seed_partner = false) {
   std::vector<int> lit;
-  for (int line : current_lines(code, stage, latest, conflict_now)) {
+  for (int line : current_lines(code, stage, latest, conflict_now, seed_partner)) {
     const auto block = statement_block(code, line);
     lit.insert(lit.end(), block.begin(), block.end());
   }

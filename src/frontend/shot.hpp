@@ -31,6 +31,8 @@ struct Shot {
   bool wireframe = false, smooth = false, no_legend = false;
   double zoom = 1.0;               // applied to the fitted camera (< 1 zooms in)
   int ball_every = 1;              // polar balls of every k-th pole only
+  bool polar_balls = false;        // 3D: the polar balls at any stage (every ball_every-th)
+  bool neighbourhood = false;      // only what lies near the focus sample (scene::Request)
   double yaw = 0.6, pitch = 0.35;  // 3D: direction the fitted camera looks from (radians)
   std::string title;               // replaces the stage's title, when given
   // An animation instead of one picture (an animated WebP): "replay" (the labelling, event by

@@ -79,6 +79,8 @@ Shot shot_from_json(const nlohmann::json& j) {
   shot.no_legend = !j.value("legend", true);
   shot.zoom = j.value("zoom", shot.zoom);
   shot.ball_every = j.value("ball_every", 1);
+  shot.polar_balls = j.value("polar_balls", false);
+  shot.neighbourhood = j.value("neighbourhood", false);
   shot.yaw = j.value("yaw", shot.yaw);
   shot.pitch = j.value("pitch", shot.pitch);
   shot.title = j.value("title", "");
@@ -136,6 +138,10 @@ scene::Request request_of(const Shot& shot) {
   request.focus_sample = shot.focus_sample;
   request.focus_pole = shot.focus_pole;
   request.ball_every = shot.ball_every;
+  request.polar_balls = shot.polar_balls;
+  if (shot.neighbourhood && shot.focus_sample < 0)
+    throw io::Error("the neighbourhood view needs a picked sample (focus_sample)");
+  request.neighbourhood = shot.neighbourhood;
   request.layers = shot.layers;
   request.wireframe = shot.wireframe;
   request.smooth = shot.smooth;
@@ -234,9 +240,10 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
   if (animated) {
     std::vector<render::Image> images;
     scene::Scene last;
-    // The replay follows the pole just labelled, as the viewer does: the first picture's
-    // camera, panned whenever the pole leaves the view.
+    // The replay follows the pole just labelled, as the viewer does (render::follow_point),
+    // from the first picture's camera.
     std::optional<render::Camera> camera;
+    glm::vec3 lower{}, upper{};  // the samples' box
     const auto [width, height] = parse_size(shot.size);
     for (const Shot& frame : animation_frames(shot, shown)) {
       nlohmann::json followed;
@@ -247,12 +254,16 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
                   r.poles.poles[r.propagation.events[frame.step - 1].pole].center);
             },
             shown);
-        render::keep_in_view(*camera, pole, float(width) / float(height));
+        render::follow_point(*camera, pole, lower, upper, float(width) / float(height));
         followed = render::to_json(*camera);
       }
       Picture picture =
           draw_shot(*renderer_, frame, shown, followed.is_null() ? inline_camera : &followed);
-      if (!camera) camera = picture.camera;
+      if (!camera) {
+        camera = picture.camera;
+        lower = {picture.scene.lower[0], picture.scene.lower[1], picture.scene.lower[2]};
+        upper = {picture.scene.upper[0], picture.scene.upper[1], picture.scene.upper[2]};
+      }
       images.push_back(std::move(picture.image));
       last = std::move(picture.scene);
     }

@@ -43,6 +43,46 @@ bool keep_in_view(Camera& camera, const glm::vec3& point, float aspect, float ed
   return true;
 }
 
+namespace {
+
+// The camera looking as `camera` does, framing the box [lower, upper].
+Camera framing(const Camera& camera, const glm::vec3& lower, const glm::vec3& upper, float aspect) {
+  scene::Scene box;
+  box.dimension = camera.dimension;
+  box.lower = {lower.x, lower.y, lower.z};
+  box.upper = {upper.x, upper.y, upper.z};
+  Camera framed = fit(box, aspect);
+  framed.yaw = camera.yaw;
+  framed.pitch = camera.pitch;
+  framed.fov_degrees = camera.fov_degrees;
+  return framed;
+}
+
+float size_of_view(const Camera& camera) {
+  return camera.dimension == 2 ? camera.half_height : camera.distance;
+}
+
+}  // namespace
+
+bool follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& lower,
+                  const glm::vec3& upper, float aspect) {
+  const glm::vec3 margin = 0.2f * (upper - lower);
+  const bool near_the_shape = glm::all(glm::greaterThanEqual(point, lower - margin)) &&
+                              glm::all(glm::lessThanEqual(point, upper + margin));
+  if (near_the_shape) {
+    const Camera framed = framing(camera, lower, upper, aspect);
+    if (size_of_view(camera) > 1.5f * size_of_view(framed)) {
+      camera = framed;  // zoomed out for the seeds: back to the shape
+      return true;
+    }
+    return keep_in_view(camera, point, aspect);
+  }
+  Camera probe = camera;
+  if (!keep_in_view(probe, point, aspect)) return false;  // in view (or behind): stay
+  camera = framing(camera, glm::min(lower, point), glm::max(upper, point), aspect);
+  return true;
+}
+
 void Camera::orbit(float yaw_delta, float pitch_delta) {
   yaw += yaw_delta;
   pitch = std::clamp(pitch + pitch_delta, -1.55f, 1.55f);

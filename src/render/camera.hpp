@@ -54,6 +54,14 @@ glm::vec3 to_glm(const P& p) {
 bool keep_in_view(Camera& camera, const glm::vec3& point, float aspect, float edge = 0.85f,
                   float inside = 0.6f);
 
+// Following the replay without losing the shape: a point within the box [lower, upper] (the
+// samples', widened a little) is followed by keep_in_view, keeping the zoom; a point far out (a
+// convex seed by a box corner) makes the camera frame the box and the point together, and once
+// the action is back near the shape a camera left zoomed out that far frames it again.
+// Returns whether the camera moved.
+bool follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& lower,
+                  const glm::vec3& upper, float aspect);
+
 nlohmann::json to_json(const Camera& camera);
 Camera camera_from_json(const nlohmann::json& json);  // throws std::invalid_argument
 

@@ -66,10 +66,14 @@ int main(int argc, char** argv) {
       ->needs("--figure");
   app.add_flag("--no-animation", no_animation,
                "Jump to tour panels instead of moving the stage and camera there");
-  app.add_option("--script", script_path, "Run the commands of a script file, then quit");
-  app.add_option("--frames", frames, "Draw this many frames, then quit");
+  auto* script_option =
+      app.add_option("--script", script_path, "Run the commands of a script file, then quit");
+  auto* frames_option = app.add_option("--frames", frames, "Draw this many frames, then quit")
+                            ->check(CLI::PositiveNumber)
+                            ->excludes(script_option);
   app.add_option("--screenshot", screenshot,
-                 "With --frames: save the window to this PNG at the end");
+                 "With --frames: save the window to this PNG at the end")
+      ->needs(frames_option);
   app.add_option("--size", size, "Window size WIDTHxHEIGHT")
       ->capture_default_str()
       ->check([](const std::string& text) {
@@ -131,8 +135,9 @@ int main(int argc, char** argv) {
     try {
       if (!script_path.empty()) script = sculpt::viewer::Script::from_file(script_path);
       if (frames > 0) {
-        script = sculpt::viewer::Script::from_text("wait\nframes " + std::to_string(frames) +
-                                                   "\nscreenshot " + screenshot + "\nquit\n");
+        script = sculpt::viewer::Script::from_text(
+            "wait\nframes " + std::to_string(frames) +
+            (screenshot.empty() ? "" : "\nscreenshot " + screenshot) + "\nquit\n");
       }
     } catch (const std::exception& e) {
       std::cerr << "sculpt-view: " << e.what() << '\n';

@@ -169,7 +169,18 @@ std::string Script::before_frame(Viewer& viewer) {
       fail("'" + line + "': one argument expected");
       continue;
     }
-    if (command == "example") {
+    if (command == "help") {
+      std::cout << "commands: example NAME, open FILE, method NAME, stage ID, next, previous, "
+                   "step K, pick-sample K, pick-pole K, clip POS AZ EL [SLAB] | off, "
+                   "neighbourhood on|off, polar-balls EVERY|off, follow on|off, layer ID on|off, "
+                   "camera fit|zoom F|orbit YAW PITCH|pan X Y|save F|load F, edit on|off, "
+                   "add-point X Y, move-point K X Y, delete-point K, stroke SPACING X Y X Y... "
+                   "(SPACING a share of the box diagonal), undo, "
+                   "save-points F, explain, stats, figure ID, panel ID, expect-panel ID, key K, "
+                   "animation on|off, wait, wait-idle, expect-busy, cancel, frames N, "
+                   "screenshot F.png, export F.png [WxH], export-animation F.webp [WxH [FRAMES]], "
+                   "quit\n";
+    } else if (command == "example") {
       if (needs_argument("an example name")) viewer.open_example(argument);
     } else if (command == "open") {
       if (needs_argument("a file")) viewer.open_file(argument);
@@ -186,12 +197,18 @@ std::string Script::before_frame(Viewer& viewer) {
     } else if (command == "previous") {
       viewer.step_stage(-1);
     } else if (command == "step") {
+      if (viewer.has_reconstruction() && !viewer.has_replay()) {
+        fail("'" + line + "': this method has no replay of the labelling");
+        continue;
+      }
       if (const auto events = count("a number of events (or -1 for all)", -1, 1L << 40)) {
         viewer.set_step(*events);
       }
     } else if (command == "clip") {
       // clip POSITION AZIMUTH ELEVATION, or clip off
-      if (argument == "off") {
+      if (viewer.shown_dimension() == 2) {
+        fail("'" + line + "': the clip cuts 3D stages; this is a curve");
+      } else if (argument == "off") {
         viewer.clear_clip();
       } else {
         scene::Clip clip;
@@ -299,7 +316,13 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       done(viewer.export_animation(arguments[0], size->first, size->second, int(*frames)));
     } else if (command == "neighbourhood") {
-      on_off([&](bool on) { viewer.set_neighbourhood(on); });
+      on_off([&](bool on) {
+        if (on && viewer.picked_sample() < 0) {
+          fail("'" + line + "': pick a sample first (pick-sample K)");
+          return;
+        }
+        viewer.set_neighbourhood(on);
+      });
     } else if (command == "polar-balls") {
       // polar-balls EVERY (every k-th pole's ball; 0 or off: none)
       const auto every = argument == "off" ? std::optional<long>(0) : number(argument, 0, 1000000);
@@ -311,7 +334,13 @@ std::string Script::before_frame(Viewer& viewer) {
     } else if (command == "follow") {
       on_off([&](bool on) { viewer.set_follow(on); });
     } else if (command == "edit") {
-      on_off([&](bool on) { viewer.set_editing(on); });
+      on_off([&](bool on) {
+        if (on && viewer.shown_dimension() == 3) {
+          fail("'" + line + "': samples are edited in 2D; this is a surface");
+          return;
+        }
+        viewer.set_editing(on);
+      });
     } else if (command == "add-point") {
       const auto xy = reals(0);
       if (!xy || xy->size() != 2) {
@@ -339,7 +368,8 @@ std::string Script::before_frame(Viewer& viewer) {
       const auto values = reals(0);
       if (!values || values->size() < 5 || values->size() % 2 != 1 || (*values)[0] < 0.001 ||
           (*values)[0] > 1) {
-        fail("'" + line + "': expected stroke SPACING X1 Y1 X2 Y2 ... (spacing 0.001 to 1)");
+        fail("'" + line + "': expected stroke SPACING X1 Y1 X2 Y2 ... (spacing 0.001 to 1, a share of "
+             "the samples' box diagonal)");
         continue;
       }
       std::vector<Point<2>> stroke;
@@ -371,7 +401,7 @@ std::string Script::before_frame(Viewer& viewer) {
       commands_.clear();
       return "";
     } else {
-      fail("unknown command '" + command + "'");
+      fail("unknown command '" + command + "' (`help` lists them)");
     }
   }
   return "";

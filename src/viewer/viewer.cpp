@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
@@ -564,6 +565,17 @@ const Labelling_event* Viewer::latest_event() const {
       *reconstruction_);
 }
 
+int Viewer::shown_dimension() const {
+  return reconstruction_ ? dimension_of(*reconstruction_) : 0;
+}
+
+bool Viewer::has_replay() const {
+  if (!reconstruction_) return false;
+  const Options& options =
+      std::visit([](const auto& r) -> const Options& { return r.options; }, *reconstruction_);
+  return scene::has_stage(options.method, shown_dimension(), scene::Stage::propagation);
+}
+
 void Viewer::rebuild_scene() {
   if (!scene_dirty_ || !reconstruction_) return;
   scene_dirty_ = false;
@@ -831,6 +843,8 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
     message_ = "nothing to save yet";
     return false;
   }
+  // The layers below are those of the stage on screen, even before a frame has drawn it.
+  rebuild_scene();
   // The shown reconstruction's input and options (not those chosen for the next run).
   const Job_request& shown = shown_request_;
   nlohmann::json shot = {{"stage", scene::stage_id(request_.stage)},
@@ -840,6 +854,8 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
                          {"wireframe", request_.wireframe},
                          {"smooth", request_.smooth},
                          {"ball_every", request_.ball_every},
+                         {"polar_balls", request_.polar_balls},
+                         {"neighbourhood", request_.neighbourhood && request_.focus_sample >= 0},
                          {"bordered", shown.options.kind == Surface_kind::bordered},
                          {"closed", shown.options.kind == Surface_kind::closed},
                          {"box_factor", shown.options.box_factor},
@@ -850,6 +866,12 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
                          {"size", std::to_string(width) + "x" + std::to_string(height)},
                          {"output", std::filesystem::absolute(path).string()}};
   if (!animate.empty()) shot.update({{"animate", animate}, {"frames", frames}});
+  if (request_.clipped) {
+    const scene::Clip& c = request_.clip;
+    std::ostringstream clip;
+    clip << c.position << ',' << c.azimuth << ',' << c.elevation << ',' << c.slab;
+    shot["clip"] = clip.str();
+  }
   if (camera_is_panel_camera_ && !panel_on_screen().empty()) {
     // The panel's framing, refitted to the picture's size as the gallery does.
     const frontend::Shot& panel = tour_.image().shot;
@@ -1204,10 +1226,14 @@ void Viewer::draw_pseudo_code() {
   const bool conflict_now =
       std::visit([&](const auto& r) { return frontend::conflict_after(r.propagation, shown); },
                  *reconstruction_);
-  const int current = frontend::current_line(code, request_.stage, latest_event(), conflict_now);
+  const Labelling_event* latest = latest_event();
+  const bool seed_partner = std::visit(
+      [&](const auto& r) { return frontend::labels_seed_partner(r, latest); }, *reconstruction_);
+  const int current =
+      frontend::current_line(code, request_.stage, latest, conflict_now, seed_partner);
   // The statement's loops and continuation lines in a softer colour, the statement itself marked.
   const std::vector<int> lit =
-      frontend::highlighted_lines(code, request_.stage, latest_event(), conflict_now);
+      frontend::highlighted_lines(code, request_.stage, latest, conflict_now, seed_partner);
   const auto& lines = code.lines;
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {

@@ -122,6 +122,11 @@ class Viewer {
   void cancel() { job_.request_cancel(); }
   const std::string& message() const { return message_; }
   bool has_reconstruction() const { return reconstruction_ != nullptr; }
+  // The shown reconstruction's dimension (0 before any), whether its method has a replay of the
+  // labelling, and the picked sample (-1: none).
+  int shown_dimension() const;
+  bool has_replay() const;
+  int picked_sample() const { return request_.focus_sample; }
   scene::Stage stage() const { return request_.stage; }
   // The Explanation panel's paragraph for the stage on screen ("" before any reconstruction).
   std::string explanation() const;

@@ -41,7 +41,10 @@ void Viewer::follow_latest_event() {
   // From where the camera is going, if it is already moving; a point behind a 3D camera is
   // left to the arrow.
   render::Camera camera = camera_move_ ? camera_move_->to : camera_;
-  if (!render::keep_in_view(camera, points.front().at, aspect)) return;
+  const auto& scene = renderer_->scene();
+  const glm::vec3 lower(scene.lower[0], scene.lower[1], scene.lower[2]);
+  const glm::vec3 upper(scene.upper[0], scene.upper[1], scene.upper[2]);
+  if (!render::follow_point(camera, points.front().at, lower, upper, aspect)) return;
   camera_move_ = Camera_move{camera_, camera, 0.0f};
   camera_is_panel_camera_ = false;
 }
