@@ -19,8 +19,8 @@ std::string facets(int dimension) {
 std::string labelling(Method method, Surface_kind kind) {
   if (method == Method::paper) {
     return std::string(
-               "Pole separation (Kuo & Yau, sec. 3.1.1): the convex poles, whose Voronoi cells "
-               "reach the box, are outer for sure") +
+               "Pole separation (Kuo & Yau, sec. 3.1.1): the convex poles, Voronoi vertices "
+               "made with a box corner, are outer for sure") +
            (kind == Surface_kind::bordered
                 ? "; a bordered surface starts from one of them only, since its two sides meet "
                   "around the border. "

@@ -1136,6 +1136,7 @@ void Viewer::draw_panel(int height) {
         (!last_request_.path.empty() || !last_request_.example.empty() || editor_.active()))
       rerun();
   }
+  if (reconstruction_) draw_verdict();
   if (reconstruction_) {
     draw_stepper();
     if (dimension_of(*reconstruction_) == 3) draw_clip_controls();
@@ -1310,17 +1311,23 @@ void Viewer::draw_selection() {
   if (ImGui::Button("Clear selection")) pick_sample(-1);
 }
 
+// The truth about the result, green or red, at the top of the panel where it is always seen.
+void Viewer::draw_verdict() {
+  const Statistics& s =
+      std::visit([](const auto& r) -> const Statistics& { return r.stats; }, *reconstruction_);
+  const Verdict v = verdict(s);
+  ImGui::PushStyleColor(ImGuiCol_Text,
+                        v.manifold ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1));
+  ImGui::TextWrapped("%s: %s", to_string(s.method), v.line.c_str());
+  ImGui::PopStyleColor();
+}
+
 void Viewer::draw_statistics() {
   if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const Statistics& s =
       std::visit([](const auto& r) -> const Statistics& { return r.stats; }, *reconstruction_);
   const bool three = s.dimension == 3;
   ImGui::Text("%s", description_.c_str());
-  const Verdict v = verdict(s);
-  ImGui::PushStyleColor(ImGuiCol_Text,
-                        v.manifold ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1));
-  ImGui::TextWrapped("method %s: %s", to_string(s.method), v.line.c_str());
-  ImGui::PopStyleColor();
   if (sculpts(s.method)) {
     ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
     ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",

@@ -201,6 +201,7 @@ class Viewer {
   void draw_stepper();
   void draw_propagation_controls();
   void draw_pseudo_code();
+  void draw_verdict();
   void draw_explanation();
   void draw_statistics();
   void draw_layers();
