@@ -131,6 +131,10 @@ class Scene_builder {
     const float radius = 1.5f * float(std::sqrt(distances[k]));
     // The picked sample's own cell, poles and balls stay whole: they are what was asked for.
     keep_near(scene_, vec(s), radius, {"focus-cell", "focus-balls", "focus-poles"});
+    // A few dozen points, seen close: drawn larger, so each is seen as a sample or a pole.
+    for (auto& layer : scene_.layers) {
+      if (layer.primitive == Primitive::points) layer.size *= 2.5f;
+    }
     // The camera fits the neighbourhood: it is what the picture is about.
     for (int c = 0; c < 3; ++c) {
       scene_.lower[c] = vec(s)[c] - (c < D ? radius : 0);
