@@ -1239,6 +1239,10 @@ void Viewer::draw_pseudo_code() {
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "> %s", lines[i]);
+      // A new statement running, out of sight (a large font pushes it below the panel), is
+      // scrolled into it.
+      if (current != shown_code_line_ && !ImGui::IsItemVisible()) ImGui::SetScrollHereY(0.5f);
+      shown_code_line_ = current;
     } else if (std::binary_search(lit.begin(), lit.end(), i)) {
       ImGui::TextColored(ImVec4(0.95f, 0.85f, 0.6f, 1.0f), "  %s", lines[i]);
     } else {

@@ -269,6 +269,7 @@ class Viewer {
   float caption_min_height_ = 0;
 
   bool follow_ = true;  // the camera keeps the replay's pole just labelled in view
+  int shown_code_line_ = -1;  // the pseudo-code line last marked, to scroll to a new one
 
   // Live 2D editing.
   Point_editor editor_;
