@@ -16,7 +16,6 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
-#include "rounded_radius.hpp"
 #include "stage_clock.hpp"
 
 namespace sculpt {
@@ -34,8 +33,6 @@ void find_poles(const typename Traits::Triangulation& triangulation,
 
   // Circumcentres are computed again in each pass rather than stored: storing them for every cell
   // would take 24 bytes a cell (475 MB for the 19.8M cells of a 1M-point torus) to save ~2 s.
-  // Pass 1 keeps each cell's squared radius as a float (4 bytes a cell, freed after pass 2):
-  // pass 2 computes a centre only for a cell that could still be the p- of one of its samples.
   // Keeping a few largest balls per sample in one pass does not find p- either: a sample's
   // largest Voronoi vertices crowd together at the far end of its cell, on the side of p+
   // (measured: the 4 largest are all on that side for 98% of bunny00's samples).
@@ -45,11 +42,9 @@ void find_poles(const typename Traits::Triangulation& triangulation,
   std::vector<Cell_handle> plus_cell(n);
   const double cells = 2.0 * static_cast<double>(result.delaunay.cell_count);
   std::size_t done = 0;
-  std::vector<float> rounded_radius2(result.delaunay.cell_count);
   for (auto cell : Traits::finite_cells(triangulation)) {
     if (++done % 262144 == 0) clock.report(double(done) / cells);
     const double r2 = squared_radius(cell, Traits::circumcenter(triangulation, cell));
-    rounded_radius2[cell->info()] = rounded_to_float(r2);
     for (int i = 0; i <= D; ++i) {
       const int s = cell->vertex(i)->info();
       if (s < n && r2 > plus_radius2[s]) {
@@ -66,14 +61,6 @@ void find_poles(const typename Traits::Triangulation& triangulation,
   std::vector<Cell_handle> minus_cell(n);
   for (auto cell : Traits::finite_cells(triangulation)) {
     if (++done % 262144 == 0) clock.report(double(done) / cells);
-    // A cell no larger than every sample's p- so far changes nothing, as the test below decides.
-    const double at_most = at_least_the_rounded(rounded_radius2[cell->info()]);
-    bool could_change = false;
-    for (int i = 0; i <= D; ++i) {
-      const int s = cell->vertex(i)->info();
-      could_change = could_change || (s < n && at_most > minus_radius2[s]);
-    }
-    if (!could_change) continue;
     const auto center = Traits::circumcenter(triangulation, cell);
     const double r2 = squared_radius(cell, center);
     for (int i = 0; i <= D; ++i) {
@@ -86,8 +73,6 @@ void find_poles(const typename Traits::Triangulation& triangulation,
       }
     }
   }
-
-  std::vector<float>().swap(rounded_radius2);
 
   // Deduplicate: one pole per Delaunay cell, numbered in the order the samples first name them
   // (sample by sample, p+ before p-). Sorting the 2n namings by cell finds the repeats without a

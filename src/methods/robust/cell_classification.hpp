@@ -19,7 +19,6 @@
 #include <vector>
 
 #include "../../core/circumball_query.hpp"
-#include "../../core/rounded_radius.hpp"
 #include "../../core/stage_clock.hpp"
 #include "manifold_carving.hpp"
 
@@ -100,7 +99,6 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
   const int n = static_cast<int>(result.sample_count());
   Cell_judgement judgement;
   judgement.outer.assign(result.delaunay.cell_count, 0);
-  judgement.radius2.assign(result.delaunay.cell_count, 0.0f);
   std::size_t done = 0;
   for (auto cell : Traits::finite_cells(triangulation)) {
     if (++done % 262144 == 0) clock.report(double(done) / double(result.delaunay.cell_count));
@@ -112,7 +110,6 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
     }
     if (!all_samples) continue;
     const Point<D> x = Traits::from_cgal(Traits::circumcenter(triangulation, cell));
-    judgement.radius2[cell->info()] = rounded_to_float(squared_circumradius<Traits>(cell, x));
     if (outer_poles.holds_point(cell, x)) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_pole_inside);
     } else if (polar_balls.power_cell_label(x, samples) == Label::outer) {

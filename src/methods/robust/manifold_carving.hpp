@@ -40,9 +40,6 @@ namespace sculpt {
 // outer pole it is) is computed when asked, for the few cells that are asked about.
 struct Cell_judgement {
   std::vector<std::uint8_t> outer;  // 0: inner; else 1 + Carve_reason
-  // The squared circumradius of every all-sample cell, rounded to a float: the carving order,
-  // kept from the judgement, which computed the circumcentres (a cell is pushed up to 4 times).
-  std::vector<float> radius2;
 };
 
 template <class Traits>
@@ -115,8 +112,11 @@ class Manifold_carving {
   }
   bool judged_outer(Cell_handle cell) const { return judgement_.outer[cell->info()] != 0; }
 
-  // The squared circumradius of an all-sample cell, rounded to a float: the carving order.
-  float radius2(Cell_handle cell) const { return judgement_.radius2[cell->info()]; }
+  // The squared circumradius, rounded to a float: the carving order.
+  float radius2(Cell_handle cell) const {
+    return static_cast<float>(squared_circumradius<Traits>(
+        cell, Traits::from_cgal(Traits::circumcenter(triangulation_, cell))));
+  }
 
   // How many samples have this cell as their outer pole: a sample's poles are cells around it,
   // so only the cell's own vertices can.
