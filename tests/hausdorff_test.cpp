@@ -50,5 +50,29 @@ TEST(Hausdorff, IsInfiniteWithoutTriangles) {
   EXPECT_TRUE(std::isinf(hausdorff_distance(points, {{0, 1, 2}}, points, {{0, 1, 3}})));  // flat
 }
 
+// The benchmark's denser inputs: one Loop step puts a vertex on every edge of a closed mesh
+// (V + E vertices, 4 F triangles), keeps it closed and of the same genus, and moves it less than
+// its own size; a mesh that is not a manifold is refused.
+TEST(Loop_subdivision, PutsAVertexOnEveryEdgeOfTheSameClosedSurface) {
+  const Triangle_mesh octahedron = {
+      {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
+      {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}};
+  const Triangle_mesh dense = loop_subdivided(octahedron);
+  EXPECT_EQ(dense.points.size(), 6u + 12u);
+  EXPECT_EQ(dense.triangles.size(), 4u * 8u);
+  const Statistics topology = facet_topology(dense.points.size(), dense.triangles);
+  EXPECT_EQ(topology.non_manifold_ridges, 0u);
+  EXPECT_EQ(topology.boundary_ridges, 0u);
+  EXPECT_EQ(topology.euler_characteristic, 2);
+  for (const auto& p : dense.points) {
+    const double r = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    EXPECT_GT(r, 0.3);  // smoothed towards the centre, not collapsed onto it
+    EXPECT_LT(r, 1.0);  // Loop's masks average: nothing moves out of the hull
+  }
+  const Triangle_mesh fin = {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}},
+                             {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}};  // three triangles on one edge
+  EXPECT_THROW(loop_subdivided(fin), Input_error);
+}
+
 }  // namespace
 }  // namespace sculpt

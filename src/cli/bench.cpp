@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <iostream>
@@ -16,6 +17,7 @@
 #include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
+#include "io/writers.hpp"
 #include "render/headless.hpp"
 #include "report.hpp"
 #include "shapes/shapes.hpp"
@@ -446,7 +448,37 @@ nlohmann::json measure_input(const std::string& name, const std::vector<std::str
   return row;
 }
 
-int run_bench(const Bench_arguments& args) {
+// Meshes Loop-subdivided into a folder of their own, as files the measuring processes read;
+// the folder goes when the benchmark ends, however it ends.
+struct Subdivided_meshes {
+  std::filesystem::path folder;
+  std::vector<std::string> paths;
+  explicit Subdivided_meshes(const std::vector<std::string>& meshes) {
+    if (meshes.empty()) return;
+    folder = std::filesystem::temp_directory_path() /
+             ("sculpt-bench-" + std::to_string(getpid()));
+    std::filesystem::create_directories(folder);
+    for (const auto& mesh : meshes) {
+      const frontend::Input input = frontend::load_input(mesh, "", 3);
+      if (input.reference_triangles.empty())
+        throw io::Error(mesh + ": no triangles to subdivide (a mesh file is needed)");
+      const Triangle_mesh dense = loop_subdivided(
+          {std::get<std::vector<Point<3>>>(input.points), input.reference_triangles});
+      const auto stem = std::filesystem::path(mesh).stem().string();
+      paths.push_back((folder / (stem + "-loop1.off")).string());
+      io::write_surface(paths.back(), dense.points, dense.triangles, true);
+    }
+  }
+  ~Subdivided_meshes() {
+    std::error_code ignored;
+    if (!folder.empty()) std::filesystem::remove_all(folder, ignored);
+  }
+};
+
+int run_bench(const Bench_arguments& given) {
+  Bench_arguments args = given;
+  const Subdivided_meshes subdivided(args.loop_subdivided);
+  args.inputs.insert(args.inputs.end(), subdivided.paths.begin(), subdivided.paths.end());
   std::vector<nlohmann::json> rows;
   for (const auto& [name, source] : bench_inputs(args)) {
     rows.push_back(measure_input(name, source, args));

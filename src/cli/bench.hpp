@@ -14,6 +14,7 @@ namespace sculpt::cli {
 struct Bench_arguments {
   std::vector<std::string> inputs;    // point files
   std::vector<std::string> examples;  // built-in example names
+  std::vector<std::string> loop_subdivided;  // meshes measured once Loop-subdivided (4x denser)
   int torus_points = 0;               // also random points on a torus, if > 0
   int render_triangles = 0;           // also time a headless render of a surface this large
   bool edits = false;                 // also time the viewer's live 2D edit (200 to 5,000 points)

@@ -269,6 +269,9 @@ int main(int argc, char** argv) {
   bench->add_option("inputs", bench_args.inputs, "Point files");
   bench->add_option("--example", bench_args.examples, "Built-in examples");
   bench->add_option("--torus", bench_args.torus_points, "Also N random points on a torus");
+  bench->add_option("--loop-subdivided", bench_args.loop_subdivided,
+                    "Also these meshes after one step of Loop subdivision (about 4 times the "
+                    "vertices, on the same surface)");
   bench->add_option("--render", bench_args.render_triangles,
                     "Also time a headless 1600x1200 render of a surface of N triangles");
   bench->add_flag("--edits", bench_args.edits,

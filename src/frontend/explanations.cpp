@@ -108,8 +108,8 @@ std::string explanation(Method method, Surface_kind kind, int dimension, scene::
              std::string(dimension == 2 ? "circumcircle" : "circumball") + ". The " +
              facets(dimension) + " of the " +
              std::string(dimension == 2 ? "curve are among its edges" : "surface are among its faces") +
-             " when the sampling is dense; every method here chooses among them" +
-             std::string(dimension == 2 ? "." : " (the power crust builds its own).");
+             " when the sampling is dense; every method here chooses among them (the power "
+             "crust builds its own).";
     case Stage::hull:
       return "The convex hull: the Delaunay " + cells(dimension) +
              " whose vertices are all samples. Sculpting starts from it and carves the outside "

@@ -409,7 +409,6 @@ inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface
   return inserts_poles(method, kind, dimension) ? robust_bordered : robust;
 }
 
-// The line to highlight for a stage; in the propagation, the line of the latest event's reason.
 // Whether a conflict was offered right after the first `shown` events (before the next one).
 inline bool conflict_after(const Propagation_stage& propagation, long shown) {
   return std::any_of(propagation.conflicts.begin(), propagation.conflicts.end(),
@@ -434,11 +433,13 @@ inline int current_line(const Pseudo_code& code, scene::Stage stage, const Label
   return current_lines(code, stage, latest, conflict_now, seed_partner).front();
 }
 
-// Whether an event labels the partner of a convex seed (its source is a convex pole, by pairing).
+// Whether an event labels the partner of an outer seed (by pairing from one of the seeds; when
+// bordered, the one seed chosen, not any convex pole).
 template <int D>
 bool labels_seed_partner(const Reconstruction<D>& r, const Labelling_event* event) {
+  const auto& seeds = r.seeds.outer_seeds;
   return event && event->reason == Label_reason::pairing && event->source >= 0 &&
-         r.poles.poles[event->source].convex;
+         std::find(seeds.begin(), seeds.end(), event->source) != seeds.end();
 }
 
 namespace pseudo_code_layout {

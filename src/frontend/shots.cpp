@@ -244,6 +244,7 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
     // from the first picture's camera.
     std::optional<render::Camera> camera;
     glm::vec3 lower{}, upper{};  // the samples' box
+    bool framed_far = false;     // the camera frames a far pole with the shape
     const auto [width, height] = parse_size(shot.size);
     for (const Shot& frame : animation_frames(shot, shown)) {
       nlohmann::json followed;
@@ -254,7 +255,10 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
                   r.poles.poles[r.propagation.events[frame.step - 1].pole].center);
             },
             shown);
-        render::follow_point(*camera, pole, lower, upper, float(width) / float(height));
+        const render::Follow moved = render::follow_point(*camera, pole, lower, upper,
+                                                          float(width) / float(height), framed_far);
+        framed_far = moved == render::Follow::framed_far ||
+                     (framed_far && moved == render::Follow::stayed);
         followed = render::to_json(*camera);
       }
       Picture picture =

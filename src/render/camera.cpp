@@ -45,42 +45,53 @@ bool keep_in_view(Camera& camera, const glm::vec3& point, float aspect, float ed
 
 namespace {
 
-// The camera looking as `camera` does, framing the box [lower, upper].
+// The camera looking as `camera` does (its direction and field of view), framing the box
+// [lower, upper].
 Camera framing(const Camera& camera, const glm::vec3& lower, const glm::vec3& upper, float aspect) {
   scene::Scene box;
   box.dimension = camera.dimension;
   box.lower = {lower.x, lower.y, lower.z};
   box.upper = {upper.x, upper.y, upper.z};
   Camera framed = fit(box, aspect);
+  const auto half_angle = [&](float fov) { return glm::radians(fov) / 2 * std::min(1.0f, aspect); };
+  framed.distance *= std::sin(half_angle(framed.fov_degrees)) / std::sin(half_angle(camera.fov_degrees));
+  framed.fov_degrees = camera.fov_degrees;
   framed.yaw = camera.yaw;
   framed.pitch = camera.pitch;
-  framed.fov_degrees = camera.fov_degrees;
   return framed;
 }
 
-float size_of_view(const Camera& camera) {
-  return camera.dimension == 2 ? camera.half_height : camera.distance;
+// Whether a point is on screen within `edge` of the half view (and in front of a 3D camera).
+bool on_screen(const Camera& camera, const glm::vec3& point, float aspect, float edge) {
+  const glm::vec4 clip = camera.projection(aspect) * camera.view() * glm::vec4(point, 1.0f);
+  if (clip.w <= 0) return false;
+  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  return std::abs(ndc.x) <= edge && std::abs(ndc.y) <= edge;
 }
 
 }  // namespace
 
-bool follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& lower,
-                  const glm::vec3& upper, float aspect) {
+Follow follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& lower,
+                    const glm::vec3& upper, float aspect, bool framed_far_before) {
   const glm::vec3 margin = 0.2f * (upper - lower);
   const bool near_the_shape = glm::all(glm::greaterThanEqual(point, lower - margin)) &&
                               glm::all(glm::lessThanEqual(point, upper + margin));
   if (near_the_shape) {
-    const Camera framed = framing(camera, lower, upper, aspect);
-    if (size_of_view(camera) > 1.5f * size_of_view(framed)) {
-      camera = framed;  // zoomed out for the seeds: back to the shape
-      return true;
+    if (framed_far_before) {
+      camera = framing(camera, lower, upper, aspect);  // the seeds are done: back to the shape
+      return Follow::returned;
     }
-    return keep_in_view(camera, point, aspect);
+    return keep_in_view(camera, point, aspect) ? Follow::panned : Follow::stayed;
   }
-  Camera probe = camera;
-  if (!keep_in_view(probe, point, aspect)) return false;  // in view (or behind): stay
+  if (on_screen(camera, point, aspect, 0.85f)) return Follow::stayed;
   camera = framing(camera, glm::min(lower, point), glm::max(upper, point), aspect);
-  return true;
+  return Follow::framed_far;
+}
+
+bool same_view(const Camera& a, const Camera& b) {
+  return a.dimension == b.dimension && a.center == b.center && a.half_height == b.half_height &&
+         a.target == b.target && a.distance == b.distance && a.yaw == b.yaw &&
+         a.pitch == b.pitch && a.fov_degrees == b.fov_degrees;
 }
 
 void Camera::orbit(float yaw_delta, float pitch_delta) {

@@ -54,13 +54,16 @@ glm::vec3 to_glm(const P& p) {
 bool keep_in_view(Camera& camera, const glm::vec3& point, float aspect, float edge = 0.85f,
                   float inside = 0.6f);
 
-// Following the replay without losing the shape: a point within the box [lower, upper] (the
-// samples', widened a little) is followed by keep_in_view, keeping the zoom; a point far out (a
-// convex seed by a box corner) makes the camera frame the box and the point together, and once
-// the action is back near the shape a camera left zoomed out that far frames it again.
-// Returns whether the camera moved.
-bool follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& lower,
-                  const glm::vec3& upper, float aspect);
+// Following the replay without losing the shape. A point near the box [lower, upper] (the
+// samples') is followed by keep_in_view, keeping the zoom; a point far out of view (a convex seed
+// by a box corner, in front of or behind a 3D camera) makes the camera frame the box and the
+// point together. Once the action is back near the shape, a camera that a far point framed, and
+// nobody moved since (`framed_far_before`), frames the shape again; a zoom the user chose stays.
+enum class Follow { stayed, panned, framed_far, returned };
+Follow follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& lower,
+                    const glm::vec3& upper, float aspect, bool framed_far_before);
+// Whether two cameras show the same view.
+bool same_view(const Camera& a, const Camera& b);
 
 nlohmann::json to_json(const Camera& camera);
 Camera camera_from_json(const nlohmann::json& json);  // throws std::invalid_argument

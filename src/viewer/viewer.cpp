@@ -1136,8 +1136,8 @@ void Viewer::draw_panel(int height) {
         (!last_request_.path.empty() || !last_request_.example.empty() || editor_.active()))
       rerun();
   }
-  if (reconstruction_) draw_verdict();
   if (reconstruction_) {
+    draw_verdict();
     draw_stepper();
     if (dimension_of(*reconstruction_) == 3) draw_clip_controls();
     if (dimension_of(*reconstruction_) == 2) draw_editing_controls();
@@ -1236,11 +1236,14 @@ void Viewer::draw_pseudo_code() {
   const std::vector<int> lit =
       frontend::highlighted_lines(code, request_.stage, latest, conflict_now, seed_partner);
   const auto& lines = code.lines;
+  // The code scrolls in a box of its own, at most 45% of the panel high (a projector's large
+  // font): the running statement is scrolled into sight there, never the verdict and controls.
+  const float all_lines = ImGui::GetTextLineHeightWithSpacing() * float(lines.size()) +
+                          ImGui::GetStyle().WindowPadding.y;
+  ImGui::BeginChild("pseudo-code", ImVec2(0, std::min(all_lines, 0.45f * ImGui::GetWindowHeight())));
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "> %s", lines[i]);
-      // A new statement running, out of sight (a large font pushes it below the panel), is
-      // scrolled into it.
       if (current != shown_code_line_ && !ImGui::IsItemVisible()) ImGui::SetScrollHereY(0.5f);
       shown_code_line_ = current;
     } else if (std::binary_search(lit.begin(), lit.end(), i)) {
@@ -1249,6 +1252,7 @@ void Viewer::draw_pseudo_code() {
       ImGui::TextDisabled("  %s", lines[i]);
     }
   }
+  ImGui::EndChild();
 }
 
 void Viewer::draw_layers() {

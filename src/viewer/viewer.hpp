@@ -269,6 +269,8 @@ class Viewer {
   float caption_min_height_ = 0;
 
   bool follow_ = true;  // the camera keeps the replay's pole just labelled in view
+  // The camera as the replay last framed a far pole with the shape (render::follow_point).
+  std::optional<render::Camera> far_framing_;
   int shown_code_line_ = -1;  // the pseudo-code line last marked, to scroll to a new one
 
   // Live 2D editing.

@@ -1,6 +1,7 @@
-// The replay follows the action: the pole just labelled is kept in view (the camera pans to it,
-// keeping its zoom), and what lies outside the view (the pole just labelled when following is
-// off, the outer seeds far out by the box corners) gets an arrow at the edge pointing to it.
+// The replay follows the action: the pole just labelled is kept in view (render::follow_point:
+// near the shape the camera pans, keeping its zoom; a seed far out is framed with the shape),
+// and what lies outside the view (the pole just labelled when following is off, the outer seeds
+// far out by the box corners) gets an arrow at the edge pointing to it.
 #include <imgui.h>
 
 #include <cmath>
@@ -44,7 +45,15 @@ void Viewer::follow_latest_event() {
   const auto& scene = renderer_->scene();
   const glm::vec3 lower(scene.lower[0], scene.lower[1], scene.lower[2]);
   const glm::vec3 upper(scene.upper[0], scene.upper[1], scene.upper[2]);
-  if (!render::follow_point(camera, points.front().at, lower, upper, aspect)) return;
+  const bool framed_far_before = far_framing_ && render::same_view(camera, *far_framing_);
+  const render::Follow moved =
+      render::follow_point(camera, points.front().at, lower, upper, aspect, framed_far_before);
+  if (moved == render::Follow::stayed) return;
+  if (moved == render::Follow::framed_far) {
+    far_framing_ = camera;
+  } else {
+    far_framing_.reset();
+  }
   camera_move_ = Camera_move{camera_, camera, 0.0f};
   camera_is_panel_camera_ = false;
 }
