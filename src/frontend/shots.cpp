@@ -265,8 +265,8 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
           draw_shot(*renderer_, frame, shown, followed.is_null() ? inline_camera : &followed);
       if (!camera) {
         camera = picture.camera;
-        lower = {picture.scene.lower[0], picture.scene.lower[1], picture.scene.lower[2]};
-        upper = {picture.scene.upper[0], picture.scene.upper[1], picture.scene.upper[2]};
+        lower = render::to_glm(picture.scene.lower);
+        upper = render::to_glm(picture.scene.upper);
       }
       images.push_back(std::move(picture.image));
       last = std::move(picture.scene);

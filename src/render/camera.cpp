@@ -29,17 +29,35 @@ glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fov_degrees), aspect, distance * 0.01f, distance * 100.0f);
 }
 
-bool keep_in_view(Camera& camera, const glm::vec3& point, float aspect, float edge, float inside) {
+namespace {
+
+// Where a point falls on screen (x and y from -1 to 1 across the picture) and its depth; a depth
+// of 0 or less: behind a 3D camera.
+struct Projected {
+  glm::vec2 ndc;
+  float depth;
+};
+
+Projected project(const Camera& camera, const glm::vec3& point, float aspect) {
   const glm::vec4 clip = camera.projection(aspect) * camera.view() * glm::vec4(point, 1.0f);
-  if (clip.w <= 0) return false;
-  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-  if (std::abs(ndc.x) <= edge && std::abs(ndc.y) <= edge) return false;
+  return {clip.w > 0 ? glm::vec2(clip) / clip.w : glm::vec2(0.0f), clip.w};
+}
+
+bool within(const glm::vec2& ndc, float edge) {
+  return std::abs(ndc.x) <= edge && std::abs(ndc.y) <= edge;
+}
+
+}  // namespace
+
+bool keep_in_view(Camera& camera, const glm::vec3& point, float aspect, float edge, float inside) {
+  const auto [ndc, depth] = project(camera, point, aspect);
+  if (depth <= 0 || within(ndc, edge)) return false;
   const float dx = ndc.x - std::clamp(ndc.x, -inside, inside);
   const float dy = ndc.y - std::clamp(ndc.y, -inside, inside);
   // pan() moves by the visible half height at the target; a point at another depth moves on
-  // screen by target distance / its depth as much (clip.w is its depth; 1 in 2D).
-  const float depth = camera.dimension == 3 ? clip.w / camera.distance : 1.0f;
-  camera.pan(dx * aspect * depth, dy * depth);
+  // screen by target distance / its depth as much (its depth is 1 in 2D).
+  const float scale = camera.dimension == 3 ? depth / camera.distance : 1.0f;
+  camera.pan(dx * aspect * scale, dy * scale);
   return true;
 }
 
@@ -61,14 +79,6 @@ Camera framing(const Camera& camera, const glm::vec3& lower, const glm::vec3& up
   return framed;
 }
 
-// Whether a point is on screen within `edge` of the half view (and in front of a 3D camera).
-bool on_screen(const Camera& camera, const glm::vec3& point, float aspect, float edge) {
-  const glm::vec4 clip = camera.projection(aspect) * camera.view() * glm::vec4(point, 1.0f);
-  if (clip.w <= 0) return false;
-  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-  return std::abs(ndc.x) <= edge && std::abs(ndc.y) <= edge;
-}
-
 }  // namespace
 
 Follow follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& lower,
@@ -83,7 +93,8 @@ Follow follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& low
     }
     return keep_in_view(camera, point, aspect) ? Follow::panned : Follow::stayed;
   }
-  if (on_screen(camera, point, aspect, 0.85f)) return Follow::stayed;
+  const auto [ndc, depth] = project(camera, point, aspect);
+  if (depth > 0 && within(ndc, 0.85f)) return Follow::stayed;
   camera = framing(camera, glm::min(lower, point), glm::max(upper, point), aspect);
   return Follow::framed_far;
 }

@@ -21,10 +21,8 @@ std::vector<Viewer::Point_of_interest> Viewer::points_of_interest() const {
                               "pole " + std::to_string(e->pole) + " just labelled"});
           // Following a seed far out leaves the shape behind: an arrow leads back to it.
           const scene::Scene& scene = renderer_->scene();
-          points.push_back({(glm::vec3(scene.lower[0], scene.lower[1], scene.lower[2]) +
-                             glm::vec3(scene.upper[0], scene.upper[1], scene.upper[2])) *
-                                0.5f,
-                            "the samples"});
+          points.push_back(
+              {(render::to_glm(scene.lower) + render::to_glm(scene.upper)) * 0.5f, "the samples"});
         } else if (request_.stage == scene::Stage::seeds) {
           for (int seed : r.seeds.outer_seeds)
             points.push_back({render::to_glm(r.poles.poles[seed].center), "outer seeds"});
@@ -43,11 +41,10 @@ void Viewer::follow_latest_event() {
   // left to the arrow.
   render::Camera camera = camera_move_ ? camera_move_->to : camera_;
   const auto& scene = renderer_->scene();
-  const glm::vec3 lower(scene.lower[0], scene.lower[1], scene.lower[2]);
-  const glm::vec3 upper(scene.upper[0], scene.upper[1], scene.upper[2]);
   const bool framed_far_before = far_framing_ && render::same_view(camera, *far_framing_);
   const render::Follow moved =
-      render::follow_point(camera, points.front().at, lower, upper, aspect, framed_far_before);
+      render::follow_point(camera, points.front().at, render::to_glm(scene.lower),
+                           render::to_glm(scene.upper), aspect, framed_far_before);
   if (moved == render::Follow::stayed) return;
   if (moved == render::Follow::framed_far) {
     far_framing_ = camera;
