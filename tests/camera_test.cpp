@@ -1,10 +1,10 @@
 // The replay's camera (render::follow_point): it keeps the action in view without losing the
 // shape, and leaves alone a zoom the user chose.
+#include "render/camera.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
-
-#include "render/camera.hpp"
 
 namespace sculpt {
 namespace {

@@ -94,8 +94,7 @@ TEST(Explanations, EveryLineOfEveryPseudoCodeIsReachableByHighlighting) {
     for (Method method : testing::methods_in(dimension)) {
       const std::string name = to_string(method);
       for (Surface_kind kind : {Surface_kind::closed, Surface_kind::bordered}) {
-        SCOPED_TRACE(std::string(name) + " " + std::to_string(dimension) + "D " +
-                     to_string(kind));
+        SCOPED_TRACE(std::string(name) + " " + std::to_string(dimension) + "D " + to_string(kind));
         const auto& code = frontend::pseudo_code(method, kind, dimension);
         const int size = static_cast<int>(code.lines.size());
         std::set<int> lit;

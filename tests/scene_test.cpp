@@ -73,6 +73,7 @@ TEST(Scene, TheSurfaceStageShowsBordersAndDefects) {
 
   Options closed;  // the saddle as if it were closed: the paper's rule leaves defects
   closed.method = Method::paper;
+  closed.kind = Surface_kind::closed;
   const auto forced = reconstruct(shapes::saddle(20), closed);
   ASSERT_GT(forced.stats.non_manifold_ridges, 0u);
   const scene::Scene defects_scene = scene::build_scene(forced, surface);

@@ -89,8 +89,10 @@ TEST(Surfaces_3d, BorderedSaddleIsOneSheetWithOneBorder) {
 }
 
 TEST(Surfaces_3d, ClosedModeOnASheetGivesNoBorder) {
-  // The same saddle without --bordered is sculpted as a solid: its border disappears.
-  const auto result = reconstruct(shapes::saddle(20));
+  // The same saddle reconstructed as closed is sculpted as a solid: its border disappears.
+  Options closed;
+  closed.kind = Surface_kind::closed;
+  const auto result = reconstruct(shapes::saddle(20), closed);
   EXPECT_EQ(result.stats.boundary_ridges, 0u);
 }
 

@@ -257,12 +257,13 @@ TEST(Viewer, ExportedPicturesKeepTheCutAwayAndTheNeighbourhood) {
   const std::string whole = testing::output_path("viewer-export-whole.png"),
                     cut = testing::output_path("viewer-export-cut.png"),
                     near = testing::output_path("viewer-export-near.png");
-  ASSERT_EQ(run_viewer_script("export-view", "example bumpy\nwait\nstage delaunay\nexport " +
-                                                 whole + " 700x600\nclip 0.5 30 60 0.06\nexport " +
-                                                 cut + " 700x600\nclip off\npick-sample 5\n"
-                                                 "neighbourhood on\nexport " +
-                                                 near + " 700x600\nquit\n"),
-            0);
+  ASSERT_EQ(
+      run_viewer_script("export-view", "example bumpy\nwait\nstage delaunay\nexport " + whole +
+                                           " 700x600\nclip 0.5 30 60 0.06\nexport " + cut +
+                                           " 700x600\nclip off\npick-sample 5\n"
+                                           "neighbourhood on\nexport " +
+                                           near + " 700x600\nquit\n"),
+      0);
   // An exported picture has no panel: all of it is measured.
   const double whole_share = most_common_colour_share(render::read_png(whole), 0, 0);
   const double cut_share = most_common_colour_share(render::read_png(cut), 0, 0);

@@ -53,7 +53,13 @@ using Facet = std::array<int, D>;
 // ---------------------------------------------------------------------------------------------
 // Options
 
-enum class Surface_kind { closed, bordered };
+// Closed (the shape bounds a solid), bordered (it ends somewhere: a sheet, a part scanned from
+// one side), or automatic: the methods with a bordered rule of their own (robust, paper)
+// reconstruct closed first and, when the result spans openings, bordered too, and keep the one
+// with fewer defects (core/automatic_kind.hpp). A result's kind is never automatic: its options
+// and statistics say which was kept, and Statistics::kind_chosen_automatically that it was
+// chosen.
+enum class Surface_kind { closed, bordered, automatic };
 
 // The reconstruction method: siblings over the shared stages 1-3. The names are what the command
 // line, the viewer and the statistics use (method_names(), parse_method()).
@@ -99,7 +105,7 @@ struct Progress {
 // The one place the defaults live: front ends initialise their own settings from Options{}.
 struct Options {
   Method method = Method::robust;
-  Surface_kind kind = Surface_kind::closed;
+  Surface_kind kind = Surface_kind::automatic;
   Surface_rule rule = Surface_rule::automatic;
   // Side lengths of the bounding box BB relative to those of the samples' bounding box.
   double box_factor = 5.0;
@@ -269,9 +275,12 @@ struct Crust_stage {
 // The co-cone also marks the samples where the sampling is too sparse for its rule
 // (undersampled: Dey & Giesen 2001); the tight co-cone, those whose triangles in the co-cone's
 // surface do not make one closed fan (no umbrella: Dey & Goswami 2003).
+// The robust method's bordered surfaces (3D) take the paper's bordered surface as candidates,
+// less the triangles spanning an opening (wider than the samples' spacing there): spanning.
 template <int D>
 struct Candidates_stage {
   std::vector<Facet<D>> chosen;
+  std::vector<Facet<D>> spanning;
   std::vector<Facet<D>> pruned;
   bool rims_kept = false;
   std::vector<int> undersampled;
@@ -287,6 +296,10 @@ struct Stage_measure {
 struct Statistics {
   Method method = Method::robust;
   Surface_kind kind = Surface_kind::closed;
+  // Automatic kind: the kind was chosen, and how many facets of the closed attempt spanned an
+  // opening (core/spanning_openings.hpp; 0: closed was kept at once).
+  bool kind_chosen_automatically = false;
+  std::size_t closed_spanning_facets = 0;
   int dimension = 0;
   std::size_t samples = 0;  // n
   // The stages ran on (sample - translation) * 2^scale_exponent, both exact (any finite
@@ -307,6 +320,7 @@ struct Statistics {
   std::size_t sculpted_cells = 0;    // cells of DT(S ∪ OUP); 0 when it was not built
   std::size_t solid_cells = 0;
   std::size_t candidate_facets = 0;      // crust, co-cone (3D): triangles the filter chose
+  std::size_t spanning_facets = 0;       // robust bordered (3D): removed as spanning an opening
   std::size_t pruned_facets = 0;         // of those, removed at a sharp edge
   bool rims_kept = false;                // the pruning kept the rims of holes (Candidates_stage)
   std::size_t undersampled_samples = 0;  // co-cones: samples judged undersampled
@@ -383,6 +397,8 @@ Surface_rule resolved_rule(const Options& options);
 // joins nearest neighbours (bordered curves: joins_neighbours).
 bool inserts_poles(Method method, Surface_kind kind, int dimension);
 bool joins_neighbours(Method method, Surface_kind kind, int dimension);
+// Whether the method reconstructs bordered shapes by a rule of its own (else the kind is moot).
+bool has_bordered_rule(Method method);
 
 // The verdict on a result, from its statistics: a closed 2-manifold (closed curve in 2D), a
 // bordered one (open curves), or what is wrong with it.
@@ -451,6 +467,7 @@ const char* to_string(Label label);
 const char* to_string(Label_reason reason);
 const char* to_string(Surface_rule rule);
 const char* to_string(Surface_kind kind);
+bool parse_kind(const std::string& name, Surface_kind& kind);  // closed, bordered, automatic
 const char* version();
 
 }  // namespace sculpt

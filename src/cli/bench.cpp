@@ -224,14 +224,14 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
     Options options;
     if (!parse_method(job.method, options.method))
       throw Input_error("unknown method " + job.method);
-    options.kind = job.bordered ? Surface_kind::bordered : Surface_kind::closed;
+    options.kind = job.bordered ? Surface_kind::bordered : Options{}.kind;
     options.keep_triangulations = false;
     options.keep_solid = false;  // as `sculpt reconstruct` without --solid
     Run_description run;
     run.input = input.description;
-    run.kind = to_string(options.kind);
-    run.rule = surface_rule_name(options, D);
     const auto result = reconstruct(points, options);
+    run.kind = to_string(result.stats.kind);
+    run.rule = surface_rule_name(result.options, D);
     out = report_json(result.stats, run);
     if (result.interpolates()) add_reproduced(result.surface);  // else: vertices of its own
   }
@@ -455,8 +455,7 @@ struct Subdivided_meshes {
   std::vector<std::string> paths;
   explicit Subdivided_meshes(const std::vector<std::string>& meshes) {
     if (meshes.empty()) return;
-    folder = std::filesystem::temp_directory_path() /
-             ("sculpt-bench-" + std::to_string(getpid()));
+    folder = std::filesystem::temp_directory_path() / ("sculpt-bench-" + std::to_string(getpid()));
     std::filesystem::create_directories(folder);
     for (const auto& mesh : meshes) {
       const frontend::Input input = frontend::load_input(mesh, "", 3);

@@ -106,7 +106,9 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
                           Run_description run) {
   Options options;
   parse_method(args.method, options.method);
-  options.kind = args.bordered ? Surface_kind::bordered : Surface_kind::closed;
+  options.kind = args.bordered ? Surface_kind::bordered
+                 : args.closed ? Surface_kind::closed
+                               : Options{}.kind;
   parse_rule(args.rule, options.rule);
   options.box_factor = args.box_factor;
   options.alpha = args.alpha;
@@ -117,7 +119,8 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 
   const Reconstruction<D> result = reconstruct(samples, options);
   clear_status();
-  run.rule = surface_rule_name(options, D);
+  run.rule = surface_rule_name(result.options, D);
+  run.kind = to_string(result.stats.kind);
 
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();
@@ -152,15 +155,16 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 }
 
 int run_reconstruct(Reconstruct_arguments args) {
-  // An example is reconstructed as its own kind, as in the viewer and the benchmark.
+  // An example is reconstructed as its own kind, as in the viewer and the benchmark; a file as
+  // --closed or --bordered say, else of the kind chosen automatically.
   const shapes::Example* example = shapes::find_example(args.example);
   args.bordered = !args.closed && (args.bordered || (example && example->bordered));
+  args.closed = args.closed || (example && !example->bordered);
   const frontend::Input input =
       frontend::load_input(args.input, args.example, args.dimension, args.merge_duplicates);
   check_output_formats(args, input.dimension());
   Run_description run;
   run.input = input.description;
-  run.kind = args.bordered ? "bordered" : "closed";
   run.box_factor = args.box_factor;
   run.read_seconds = input.read_seconds;
   return std::visit(
@@ -208,10 +212,13 @@ int main(int argc, char** argv) {
                         "Exit with code 3 when the result is not a closed (or, with --bordered, "
                         "bordered) 2-manifold through every sample; the output is still written");
   reconstruct->add_flag("--bordered", args.bordered,
-                        "The samples come from a surface (curve) with a border (a bordered "
-                        "example is reconstructed so without it)");
+                        "The samples come from a surface (curve) with a border. Without "
+                        "--bordered or --closed, an example is reconstructed as its own kind and "
+                        "a file as its samples show: closed, unless the closed result spans "
+                        "openings and the bordered one has fewer defects");
   reconstruct
-      ->add_flag("--closed", args.closed, "Reconstruct a bordered example as if it were closed")
+      ->add_flag("--closed", args.closed,
+                 "The samples come from a closed surface (curve); also for a bordered example")
       ->excludes("--bordered");
   reconstruct->add_option("--solid", args.solid,
                           "Also write the sculpted solid: .mesh (Medit), .vtu, .node/.ele");

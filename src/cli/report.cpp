@@ -25,6 +25,10 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     out << fmt::format("  {:<28}{:>12}\n", name, value);
   };
   row("samples (n)", stats.samples);
+  if (stats.kind_chosen_automatically) {
+    row("kind (chosen automatically)", to_string(stats.kind));
+    row("closed: facets over openings", stats.closed_spanning_facets);
+  }
   const auto& t = stats.translation;
   row("normalised (exactly)",
       fmt::format(
@@ -54,6 +58,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);
   if (stats.method == Method::alpha_shape) row("alpha (radius)", fmt::format("{:g}", stats.alpha));
+  if (stats.spanning_facets > 0) row("triangles spanning openings", stats.spanning_facets);
   if (stats.candidate_facets > 0) {
     row("candidates / pruned", fmt::format("{} / {}{}", stats.candidate_facets, stats.pruned_facets,
                                            stats.rims_kept ? " (rims of holes kept)" : ""));

@@ -182,8 +182,31 @@ bool joins_neighbours(Method method, Surface_kind kind, int dimension) {
   return method == Method::robust && kind == Surface_kind::bordered && dimension == 2;
 }
 
+bool parse_kind(const std::string& name, Surface_kind& kind) {
+  for (const Surface_kind k :
+       {Surface_kind::closed, Surface_kind::bordered, Surface_kind::automatic}) {
+    if (name == to_string(k)) {
+      kind = k;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool has_bordered_rule(Method method) {
+  return method == Method::robust || method == Method::paper;
+}
+
 const char* to_string(Surface_kind kind) {
-  return kind == Surface_kind::closed ? "closed" : "bordered";
+  switch (kind) {
+    case Surface_kind::closed:
+      return "closed";
+    case Surface_kind::bordered:
+      return "bordered";
+    case Surface_kind::automatic:
+      return "automatic";
+  }
+  return "?";
 }
 
 const char* version() {

@@ -1,12 +1,16 @@
-// A k-d tree of points answering one question: is there a point strictly closer to x than r
+// A k-d tree of points answering two questions. Is there a point strictly closer to x than r
 // that a test accepts? The circumball queries (circumball_query.hpp) ask it of the poles for
 // every all-sample cell: x its circumcentre, r its circumradius plus a margin, the test CGAL's
 // exact in-sphere predicate. The search stops at the first point accepted, and skips a node
-// whose bounding box lies at distance r or more. Points are stored in the tree's order, so a
-// leaf's points are contiguous in memory.
+// whose bounding box lies at distance r or more. How far is each point from its k-th nearest?
+// The test for facets spanning an opening (spanning_openings.hpp) asks it of the samples, for
+// their spacing. Points are stored in the tree's order, so a leaf's points are contiguous in
+// memory, and neighbouring queries run one after the other.
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <numeric>
 #include <sculpt/sculpt.hpp>
 #include <vector>
@@ -24,6 +28,7 @@ class Point_tree {
     if (count > 0) build(first, order, 0, count);
     points_.reserve(count);
     for (int i : order) points_.push_back(first[i]);
+    input_index_ = std::move(order);
   }
 
   // Whether some point p at squared distance below r2 from x has accept(p) true.
@@ -60,6 +65,61 @@ class Point_tree {
 
   bool any_within(const Point<D>& x, double r2) const {
     return any_within(x, r2, [](const Point<D>&) { return true; });
+  }
+
+  // The squared distance from x to its k-th nearest point (k >= 1; a point at x itself counts),
+  // or infinity when there are fewer than k points. Nearer children are searched first, and a
+  // node no nearer than the k-th distance found so far is skipped.
+  // For every point, in the order given, the squared distance to its k-th nearest point (itself
+  // the first).
+  std::vector<double> kth_nearest_distances2(int k) const {
+    std::vector<double> result(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      result[input_index_[i]] = kth_nearest_distance2(points_[i], k);
+    }
+    return result;
+  }
+
+  static constexpr int most_neighbours = 15;
+  double kth_nearest_distance2(const Point<D>& x, int k) const {
+    // The k smallest squared distances so far, as a max-heap (no allocation: k is small).
+    std::array<double, most_neighbours + 1> nearest;
+    int found = 0;
+    const auto bound = [&] { return found < k ? INFINITY : nearest[0]; };
+    const auto gap2_to = [&](const Node& node) {
+      double gap2 = 0;
+      for (int d = 0; d < D; ++d) {
+        const double gap = std::max({node.lo[d] - x[d], 0.0, x[d] - node.hi[d]});
+        gap2 += gap * gap;
+      }
+      return gap2;
+    };
+    if (nodes_.empty() || k < 1 || k > most_neighbours) return INFINITY;
+    int stack[64];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[stack[--top]];
+      if (gap2_to(node) >= bound()) continue;
+      if (node.left >= 0) {
+        const bool left_first = gap2_to(nodes_[node.left]) <= gap2_to(nodes_[node.right]);
+        stack[top++] = left_first ? node.right : node.left;
+        stack[top++] = left_first ? node.left : node.right;
+        continue;
+      }
+      for (int i = node.begin; i < node.end; ++i) {
+        double d2 = 0;
+        for (int d = 0; d < D; ++d) {
+          const double delta = x[d] - points_[i][d];
+          d2 += delta * delta;
+        }
+        if (d2 >= bound()) continue;
+        nearest[found++] = d2;
+        std::push_heap(nearest.begin(), nearest.begin() + found);
+        if (found > k) std::pop_heap(nearest.begin(), nearest.begin() + found--);
+      }
+    }
+    return bound();
   }
 
  private:
@@ -101,6 +161,7 @@ class Point_tree {
   }
 
   std::vector<Point<D>> points_;  // in the tree's order
+  std::vector<int> input_index_;  // of each of them
   std::vector<Node> nodes_;
 };
 

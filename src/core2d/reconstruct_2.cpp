@@ -1,11 +1,14 @@
 // The one place the 2D algorithm is compiled: everything else links against it.
+#include "../core/automatic_kind.hpp"
 #include "../core/reconstruction.hpp"
 #include "traits_2.hpp"
 
 namespace sculpt {
 
 Reconstruction<2> reconstruct(const std::vector<Point<2>>& samples, const Options& options) {
-  return reconstruct_with<Traits_2>(samples, options);
+  return reconstruct_choosing_kind<2>(options, [&](const Options& resolved) {
+    return reconstruct_with<Traits_2>(samples, resolved);
+  });
 }
 
 }  // namespace sculpt

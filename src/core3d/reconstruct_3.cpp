@@ -1,11 +1,14 @@
 // The one place the 3D algorithm is compiled: everything else links against it.
+#include "../core/automatic_kind.hpp"
 #include "../core/reconstruction.hpp"
 #include "traits_3.hpp"
 
 namespace sculpt {
 
 Reconstruction<3> reconstruct(const std::vector<Point<3>>& samples, const Options& options) {
-  return reconstruct_with<Traits_3>(samples, options);
+  return reconstruct_choosing_kind<3>(options, [&](const Options& resolved) {
+    return reconstruct_with<Traits_3>(samples, resolved);
+  });
 }
 
 }  // namespace sculpt

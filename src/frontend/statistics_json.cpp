@@ -5,6 +5,9 @@ namespace sculpt::frontend {
 std::string surface_rule_name(const Options& options, int dimension) {
   if (!sculpts(options.method)) return to_string(options.method);
   if (joins_neighbours(options.method, options.kind, dimension)) return "nearest neighbours";
+  if (options.method == Method::robust && options.kind == Surface_kind::bordered) {
+    return "openings cut";  // methods/robust/bordered_surface.hpp
+  }
   return inserts_poles(options.method, options.kind, dimension) ? to_string(resolved_rule(options))
                                                                 : "manifold carve";
 }
@@ -19,6 +22,9 @@ nlohmann::json statistics_json(const Statistics& stats) {
   const Verdict verdict = sculpt::verdict(stats);
   return {
       {"method", to_string(stats.method)},
+      {"kind", to_string(stats.kind)},
+      {"kind_chosen_automatically", stats.kind_chosen_automatically},
+      {"closed_spanning_facets", stats.closed_spanning_facets},
       {"verdict", verdict.line},
       {"manifold", verdict.manifold},
       {"dimension", stats.dimension},
@@ -40,6 +46,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"solid_cells", stats.solid_cells},
       {"candidate_facets", stats.candidate_facets},
       {"pruned_facets", stats.pruned_facets},
+      {"spanning_facets", stats.spanning_facets},
       {"rims_kept", stats.rims_kept},
       {"undersampled_samples", stats.undersampled_samples},
       {"samples_without_umbrella", stats.samples_without_umbrella},

@@ -134,10 +134,9 @@ Options options_from(const std::string& method, const std::string& kind, const s
     for (const char* name : method_names()) names += std::string(names.empty() ? "" : ", ") + name;
     throw Input_error("no method '" + method + "' (methods: " + names + ")");
   }
-  if (kind != "closed" && kind != "bordered") {
-    throw Input_error("no kind of surface '" + kind + "' (kinds: closed, bordered)");
+  if (!parse_kind(kind, options.kind)) {
+    throw Input_error("no kind of surface '" + kind + "' (kinds: closed, bordered, automatic)");
   }
-  options.kind = kind == "closed" ? Surface_kind::closed : Surface_kind::bordered;
   if (!parse_rule(rule, options.rule)) {
     throw Input_error("no surface rule '" + rule + "' (rules: auto, skin, extraction)");
   }
@@ -177,6 +176,8 @@ Result reconstruct_points(const py::object& points, const std::string& method,
     throw;
   }
   // The result keeps its options but not the callback (nor the Python objects it holds).
+  // An automatic kind is resolved: the result says which kind it is.
+  std::visit([&](auto& r) { result.options.kind = r.options.kind; }, result.reconstruction);
   std::visit([](auto& r) { r.options.progress = nullptr; }, result.reconstruction);
   return result;
 }
@@ -312,7 +313,8 @@ carving            events: records (cell, reason) of the cells of delaunay remov
 crust              voronoi_vertices (v, d), cells, cell_count: DT(S + V) of the crust, whose
                    sites are the samples then the Voronoi vertices
 candidates         chosen, pruned (k, d): the facets the crust or co-cone chose, those pruned;
-                   rims_kept
+                   rims_kept; spanning (k, d): robust bordered surfaces, the facets removed as
+                   spanning an opening (the paper's bordered surface is chosen + spanning)
 
 The pictures of sculpt.render name stages as the viewer does (sculpt.stages(method, d)):
 'sculpted-delaunay' draws sculpted_delaunay, 'propagation' the events, and so on.)";
@@ -538,7 +540,10 @@ points               an (n, 2) or (n, 3) array, or anything numpy.asarray makes 
 method               a name of sculpt.methods(): 'robust' (the default, for real scans),
                      'paper' (Kuo & Yau as published), 'crust', 'nn-crust', 'cocone',
                      'advancing-front', 'alpha-shape'
-kind                 'closed', or 'bordered' for samples of a surface (curve) with a border
+kind                 'automatic' (the default): closed, unless the closed result spans openings
+                     and the bordered one has fewer defects (the result's kind and
+                     stats['kind_chosen_automatically'] say what was kept); 'closed'; or
+                     'bordered' for samples of a surface (curve) with a border
 rule                 paper method: which facets make the surface, 'auto', 'skin' or
                      'extraction' (the paper's rule)
 box_factor           the bounding box's size relative to the samples' box (the paper: 5)

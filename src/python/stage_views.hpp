@@ -172,6 +172,7 @@ py::dict stage_objects(py::handle owner, const Reconstruction<D>& r) {
     py::dict candidates;
     candidates["chosen"] = rows_view(owner, r.candidates.chosen);
     candidates["pruned"] = rows_view(owner, r.candidates.pruned);
+    candidates["spanning"] = rows_view(owner, r.candidates.spanning);
     candidates["rims_kept"] = r.candidates.rims_kept;
     stages["candidates"] = stage_object(candidates);
   }

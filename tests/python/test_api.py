@@ -90,8 +90,10 @@ def test_the_statistics_and_verdict_are_the_command_lines(example, method, sculp
                      "--stats", stats)
     assert run.returncode == 0, run.stderr
     cli = json.loads(stats.read_text())
-    # As the command line computes: without keeping the triangulations.
-    result = sculpt.reconstruct(sculpt.example(example), method=method, keep_triangulations=False)
+    # As the command line computes: without keeping the triangulations, and an example as the
+    # kind it is (these are closed).
+    result = sculpt.reconstruct(sculpt.example(example), method=method, kind="closed",
+                                keep_triangulations=False)
     timings = {"input", "read_seconds", "write_seconds", "total_seconds", "stages"}
     assert set(result.stats) == set(cli) - {"input", "read_seconds", "write_seconds"}
     for field in set(cli) - timings:

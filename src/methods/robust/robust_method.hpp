@@ -6,8 +6,11 @@
 //   8.  surface     the facets between the solid and the outside
 // No pole is inserted: a cell judged outer is removed directly, so DT(S ∪ OUP) is never built.
 // Bordered curves (section 4, in 2D) join each sample to its nearest neighbours and end where the
-// samples end (open_curves.hpp). Bordered surfaces keep the paper's insertion of UP and its
-// extraction rule, with the confidence labels; their own rule is future work.
+// samples end (open_curves.hpp). Bordered surfaces take the paper's insertion of UP and its
+// extraction rule, with the confidence labels, as candidates; the triangles spanning an opening
+// go, and the rest is made a manifold (bordered_surface.hpp):
+//   6d. openings    the triangles wider than the samples' spacing there removed
+//   6e. pruning, walk  the manifold extraction of the candidates left
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -16,6 +19,7 @@
 #include "../../core/label_statistics.hpp"
 #include "../../core/stage_clock.hpp"
 #include "../paper/paper_method.hpp"
+#include "bordered_surface.hpp"
 #include "cell_classification.hpp"
 #include "confidence_labelling.hpp"
 #include "manifold_carving.hpp"
@@ -40,6 +44,10 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
   }
   if (inserts_poles(Method::robust, result.options.kind, Traits::dimension)) {
     sculpt_with_poles<Traits>(triangulation, result, clock);
+    if constexpr (Traits::dimension == 3) {
+      open_borders({result.sites.begin(), result.sites.begin() + result.sample_count()}, result,
+                   clock);
+    }
     return;
   }
 

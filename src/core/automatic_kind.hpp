@@ -1,0 +1,84 @@
+// One mode for real scans: closed or bordered, chosen from the samples.
+//
+// A user should not have to know whether a scan is closed. The closed reconstruction is right on
+// closed shapes, and on a shape with openings it caps them with facets far wider than the
+// samples' spacing (spanning_openings.hpp). So:
+//
+//   R_closed <- the closed reconstruction
+//   if no facet of R_closed spans an opening: keep R_closed
+//   R_bordered <- the bordered reconstruction
+//   keep R_bordered if defects(R_bordered) < defects(R_closed) + facets of R_closed spanning
+//   an opening; else R_closed
+//
+// defects = non-manifold ridges + non-manifold vertices + samples left off. A facet spanning an
+// opening counts as a defect of the closed result: a surface made up across missing data. A
+// closed shape whose sampling clumps or has a gap (a few spanning facets) keeps its closed
+// result unless the bordered one is cleaner; a sheet, a part scanned from one side, a shell
+// with holes has hundreds, and a bordered result with few defects.
+//
+// The closed attempt is a full reconstruction: when bordered is kept, its time shows as the
+// stage "closed attempt".
+#pragma once
+
+#include <chrono>
+#include <sculpt/sculpt.hpp>
+#include <vector>
+
+#include "exact_normalisation.hpp"
+#include "spanning_openings.hpp"
+
+namespace sculpt {
+
+inline std::size_t defects(const Statistics& stats) {
+  return stats.non_manifold_ridges + stats.non_manifold_vertices + stats.unused_samples;
+}
+
+// run(options) reconstructs with the given options (kind closed or bordered).
+template <int D, class Run>
+Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
+  if (options.kind != Surface_kind::automatic) return run(options);
+  Options closed = options;
+  closed.kind = Surface_kind::closed;
+  const auto started = std::chrono::steady_clock::now();
+  Reconstruction<D> closed_result = run(closed);
+  closed_result.stats.kind_chosen_automatically = true;
+  if (!has_bordered_rule(options.method)) return closed_result;
+
+  const auto choosing = std::chrono::steady_clock::now();
+  // Measured where the stages were computed, scaled by a power of two (exact): squared
+  // distances neither overflow nor underflow at any scale.
+  const auto& sites = closed_result.sites;
+  std::vector<Point<D>> samples(sites.begin(), sites.begin() + closed_result.sample_count());
+  samples = normalised<D>(samples, normalisation_of<D>(samples));
+  const std::size_t spanning = count_spanning<D>(samples, closed_result.surface);
+  closed_result.stats.closed_spanning_facets = spanning;
+  const auto now = std::chrono::steady_clock::now();
+  const double choice_seconds = std::chrono::duration<double>(now - choosing).count();
+  const double closed_seconds = std::chrono::duration<double>(now - started).count();
+  if (spanning == 0) {
+    auto& stats = closed_result.stats;
+    const double peak = stats.stages.empty() ? 0.0 : stats.stages.back().peak_memory_mib;
+    stats.stages.push_back(Stage_measure{"kind choice", choice_seconds, peak});
+    stats.total_seconds += choice_seconds;
+    return closed_result;
+  }
+
+  Options bordered = options;
+  bordered.kind = Surface_kind::bordered;
+  Reconstruction<D> bordered_result = run(bordered);
+  if (defects(bordered_result.stats) >= defects(closed_result.stats) + spanning) {
+    return closed_result;
+  }
+  bordered_result.stats.kind_chosen_automatically = true;
+  bordered_result.stats.closed_spanning_facets = spanning;
+  auto& stages = bordered_result.stats.stages;
+  stages.insert(stages.begin(),
+                Stage_measure{"closed attempt", closed_seconds,
+                              closed_result.stats.stages.empty()
+                                  ? 0.0
+                                  : closed_result.stats.stages.back().peak_memory_mib});
+  bordered_result.stats.total_seconds += closed_seconds;
+  return bordered_result;
+}
+
+}  // namespace sculpt

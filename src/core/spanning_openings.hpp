@@ -1,0 +1,99 @@
+// Facets that span an opening: where the samples end, a reconstruction that closes the shape
+// bridges the gap with facets far wider than the gaps between samples around them.
+//
+// A facet of a well-sampled curve or surface has an empty ball through its vertices no larger
+// than the gaps between samples there (the restricted Delaunay property of an ε-sample), and its
+// circumscribed circle (for an edge: the circle on it as diameter) is the smallest ball through
+// its vertices. A facet across an opening has its vertices on the opening's rim, so its circle is
+// about as wide as the opening (an ear between three consecutive rim samples of a round hole:
+// exactly the hole's radius). Measured against the samples' local spacing, the two are far apart.
+//
+//   spacing(p) <- distance from p to the farthest of its first ring of neighbours: its k-th
+//                 nearest sample, k = 2 on a curve and 6 on a surface
+//   a facet spans an opening when its circumradius > ρ · the largest spacing of its vertices
+//
+// The largest spacing of the vertices keeps facets where a dense region meets a sparse one. An
+// opening narrower than about ρ spacings is not told from a gap in the sampling.
+//
+// Measured (the closing note of the bordered-surfaces issue): on the closed skins of 15 closed
+// inputs (the built-in ones, CGAL's knot1, bunny00, fandisk, hand, elephant, the scans cactus,
+// hotdogs and knot) the ratio stays below 2.5, except where the sampling clumps (CGAL's femur,
+// 13) or a scan misses a patch (cactus, 3.2); across the openings of the bordered test shapes
+// it reaches 5 to 50.
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sculpt/sculpt.hpp>
+#include <vector>
+
+#include "point_tree.hpp"
+
+namespace sculpt {
+
+// The first ring of neighbours: two on a curve, about six on a surface.
+template <int D>
+inline constexpr int first_ring_size = D == 2 ? 2 : 6;
+// How many spacings wide a facet's circumscribed circle may be and still be on the shape.
+inline constexpr double opening_ratio = 3.0;
+
+// Per sample, the distance to its first_ring_size-th nearest other sample.
+template <int D>
+std::vector<double> sample_spacings(const std::vector<Point<D>>& samples) {
+  const Point_tree<D> tree(samples.data(), samples.data() + samples.size());
+  // A sample is its own nearest point, hence one more.
+  std::vector<double> spacing = tree.kth_nearest_distances2(first_ring_size<D> + 1);
+  for (double& s : spacing) s = std::sqrt(s);
+  return spacing;
+}
+
+// The radius of the smallest circle through a facet's vertices: half an edge's length, or a
+// triangle's circumradius (infinite when its vertices are collinear).
+template <int D>
+double facet_circumradius(const std::vector<Point<D>>& points, const Facet<D>& facet) {
+  const auto difference = [&](int a, int b) {
+    std::array<double, D> d{};
+    for (int k = 0; k < D; ++k) d[k] = points[b][k] - points[a][k];
+    return d;
+  };
+  const auto dot = [](const std::array<double, D>& u, const std::array<double, D>& v) {
+    double sum = 0;
+    for (int k = 0; k < D; ++k) sum += u[k] * v[k];
+    return sum;
+  };
+  if constexpr (D == 2) {
+    const auto edge = difference(facet[0], facet[1]);
+    return std::sqrt(dot(edge, edge)) / 2;
+  } else {
+    const auto ab = difference(facet[0], facet[1]), ac = difference(facet[0], facet[2]),
+               bc = difference(facet[1], facet[2]);
+    const std::array<double, 3> normal = {ab[1] * ac[2] - ab[2] * ac[1],
+                                          ab[2] * ac[0] - ab[0] * ac[2],
+                                          ab[0] * ac[1] - ab[1] * ac[0]};
+    const double twice_area = std::sqrt(dot(normal, normal));
+    if (twice_area == 0) return INFINITY;
+    return std::sqrt(dot(ab, ab) * dot(ac, ac) * dot(bc, bc)) / (2 * twice_area);
+  }
+}
+
+template <int D>
+bool spans_opening(const std::vector<Point<D>>& samples, const std::vector<double>& spacing,
+                   const Facet<D>& facet) {
+  double local = 0;
+  for (int v : facet) local = std::max(local, spacing[v]);
+  return facet_circumradius<D>(samples, facet) > opening_ratio * local;
+}
+
+// How many of the facets span an opening.
+template <int D>
+std::size_t count_spanning(const std::vector<Point<D>>& samples,
+                           const std::vector<Facet<D>>& facets) {
+  if (facets.empty()) return 0;
+  const std::vector<double> spacing = sample_spacings<D>(samples);
+  return static_cast<std::size_t>(std::count_if(facets.begin(), facets.end(), [&](const auto& f) {
+    return spans_opening<D>(samples, spacing, f);
+  }));
+}
+
+}  // namespace sculpt
