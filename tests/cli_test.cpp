@@ -130,6 +130,26 @@ TEST(Cli, VerdictAndRequireManifold) {
   EXPECT_NE(robust.out.find("verdict: closed 2-manifold"), std::string::npos) << robust.out;
 }
 
+TEST(Cli, AFileIsReconstructedAsTheKindItsSamplesShow) {
+  // Half a sphere in a file, nothing said about its kind: it comes back with its opening, and
+  // the report says the kind was chosen; --closed caps it.
+  std::string points;
+  for (const auto& p : shapes::hemisphere(1500)) {
+    points += fmt::format("{} {} {}\n", p[0], p[1], p[2]);
+  }
+  const auto input = write_file("half-sphere.xyz", points);
+  const auto output = output_path("half-sphere.stl");
+  const Command_result chosen = run_sculpt("reconstruct " + input + " -o " + output);
+  EXPECT_EQ(chosen.exit_code, 0) << chosen.err;
+  EXPECT_NE(chosen.out.find("bordered, method robust"), std::string::npos) << chosen.out;
+  EXPECT_NE(chosen.out.find("kind (chosen automatically)"), std::string::npos) << chosen.out;
+  EXPECT_NE(chosen.out.find("verdict: bordered 2-manifold with 1 border loop"), std::string::npos)
+      << chosen.out;
+  const Command_result closed = run_sculpt("reconstruct --closed " + input + " -o " + output);
+  EXPECT_NE(closed.out.find("verdict: closed 2-manifold"), std::string::npos) << closed.out;
+  EXPECT_EQ(closed.out.find("chosen automatically"), std::string::npos);
+}
+
 TEST(Cli, AllOutputsOrNone) {
   // The solid's folder is missing: nothing is written, not even the surface, and one line says why.
   const auto surface = output_path("all-or-none.stl");

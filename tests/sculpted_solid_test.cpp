@@ -29,6 +29,7 @@ template <int D>
 void expect_queries_match_insertion(const std::vector<Point<D>>& samples) {
   Options options;
   options.method = Method::paper;
+  options.kind = Surface_kind::closed;
   options.keep_triangulations = true;  // builds DT(S ∪ OUP) by insertion
   const auto inserted = reconstruct(samples, options);
   options.keep_triangulations = false;  // answers with queries on DT(S ∪ BBV)

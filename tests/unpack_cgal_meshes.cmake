@@ -7,6 +7,7 @@ execute_process(
   COMMAND ${CMAKE_COMMAND} -E tar xzf "${ARCHIVE}" data/meshes/bunny00.off data/meshes/knot1.off
           data/meshes/hand.off data/meshes/femur.off data/meshes/fandisk.off
           data/meshes/elephant.off data/meshes/refined_elephant.off data/meshes/armadillo.off
+          data/meshes/holes.off data/meshes/mech-holes-shark.off
   WORKING_DIRECTORY "${DESTINATION}"
   RESULT_VARIABLE result)
 if(NOT result EQUAL 0)

@@ -8,18 +8,21 @@
 // about as wide as the opening (an ear between three consecutive rim samples of a round hole:
 // exactly the hole's radius). Measured against the samples' local spacing, the two are far apart.
 //
-//   spacing(p) <- distance from p to the farthest of its first ring of neighbours: its k-th
-//                 nearest sample, k = 2 on a curve and 6 on a surface
-//   a facet spans an opening when its circumradius > ρ · the largest spacing of its vertices
+//   spacing(p) <- on a surface, the distance from p to its 6th nearest sample (about its first
+//                 ring of neighbours); on a curve, to its nearest (an end of a curve has
+//                 neighbours on one side only, which would double a farther one)
+//   a facet spans an opening when its circumradius > ρ · the largest spacing of its vertices,
+//   ρ = 3 on a surface, 2 on a curve
 //
 // The largest spacing of the vertices keeps facets where a dense region meets a sparse one. An
 // opening narrower than about ρ spacings is not told from a gap in the sampling.
 //
-// Measured (the closing note of the bordered-surfaces issue): on the closed skins of 15 closed
-// inputs (the built-in ones, CGAL's knot1, bunny00, fandisk, hand, elephant, the scans cactus,
-// hotdogs and knot) the ratio stays below 2.5, except where the sampling clumps (CGAL's femur,
-// 13) or a scan misses a patch (cactus, 3.2); across the openings of the bordered test shapes
-// it reaches 5 to 50.
+// Measured (the closing note of the bordered-surfaces issue) on the closed reconstructions of
+// closed inputs: surfaces (the built-in ones, CGAL's knot1, bunny00, fandisk, hand, elephant,
+// the scans cactus, hotdogs and knot) stay below 2.5, except where the sampling clumps (CGAL's
+// femur, 13) or a scan misses a patch (cactus, 3.2); curves (the built-in ones and the sparse
+// sets of the hnn-crust paper) below 1.5. Across the openings of bordered shapes: 5 to 50 on
+// surfaces, 2.5 (the arms of a spiral) to 9 on curves.
 #pragma once
 
 #include <algorithm>
@@ -32,18 +35,19 @@
 
 namespace sculpt {
 
-// The first ring of neighbours: two on a curve, about six on a surface.
+// Which neighbour's distance is a sample's spacing.
 template <int D>
-inline constexpr int first_ring_size = D == 2 ? 2 : 6;
+inline constexpr int spacing_neighbour = D == 2 ? 1 : 6;
 // How many spacings wide a facet's circumscribed circle may be and still be on the shape.
-inline constexpr double opening_ratio = 3.0;
+template <int D>
+inline constexpr double opening_ratio = D == 2 ? 2.0 : 3.0;
 
-// Per sample, the distance to its first_ring_size-th nearest other sample.
+// Per sample, the distance to its spacing_neighbour-th nearest other sample.
 template <int D>
 std::vector<double> sample_spacings(const std::vector<Point<D>>& samples) {
   const Point_tree<D> tree(samples.data(), samples.data() + samples.size());
   // A sample is its own nearest point, hence one more.
-  std::vector<double> spacing = tree.kth_nearest_distances2(first_ring_size<D> + 1);
+  std::vector<double> spacing = tree.kth_nearest_distances2(spacing_neighbour<D> + 1);
   for (double& s : spacing) s = std::sqrt(s);
   return spacing;
 }
@@ -82,7 +86,7 @@ bool spans_opening(const std::vector<Point<D>>& samples, const std::vector<doubl
                    const Facet<D>& facet) {
   double local = 0;
   for (int v : facet) local = std::max(local, spacing[v]);
-  return facet_circumradius<D>(samples, facet) > opening_ratio * local;
+  return facet_circumradius<D>(samples, facet) > opening_ratio<D> * local;
 }
 
 // How many of the facets span an opening.

@@ -1,9 +1,11 @@
 #include "shapes.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <stdexcept>
+#include <utility>
 
 namespace sculpt::shapes {
 namespace {
@@ -243,6 +245,55 @@ std::vector<Point<3>> hemisphere(int samples) {
   return points;
 }
 
+std::vector<Point<3>> open_cylinder(int samples) {
+  // Rows of samples around the axis, each row offset by half a step from the last so the
+  // samples form near-equilateral triangles; the inner rows are jittered, the two end rows are
+  // exact circles: the borders.
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> jitter(-0.2, 0.2);
+  const double height = 3.0;
+  const int rows = static_cast<int>(std::sqrt(samples * height / (2 * pi)));
+  const int columns = samples / rows;
+  std::vector<Point<3>> points;
+  for (int row = 0; row < rows; ++row) {
+    const bool end_row = row == 0 || row == rows - 1;
+    for (int column = 0; column < columns; ++column) {
+      const double angle =
+          2 * pi * (column + 0.5 * (row % 2) + (end_row ? 0.0 : jitter(random))) / columns;
+      const double z = -height / 2 + height * (row + (end_row ? 0.0 : jitter(random))) / (rows - 1);
+      points.push_back({std::cos(angle), std::sin(angle), z});
+    }
+  }
+  return points;
+}
+
+std::vector<Point<3>> wavy_annulus(int samples) {
+  // A sunflower spiral restricted to radii 0.5 to 1 (uniform by area), lifted by a wave of
+  // three periods around the axis.
+  const double golden = pi * (3.0 - std::sqrt(5.0));
+  std::vector<Point<3>> points;
+  for (int i = 0; i < samples; ++i) {
+    const double r = std::sqrt(0.25 + 0.75 * (i + 0.5) / samples);
+    const double angle = golden * i;
+    points.push_back({r * std::cos(angle), r * std::sin(angle), 0.12 * r * std::sin(3 * angle)});
+  }
+  return points;
+}
+
+std::vector<Point<3>> sphere_with_holes(int samples) {
+  // Three round holes, of angular radius 0.35, 0.5 and 0.7, around the three axes. The
+  // smallest is about 3.5 spacings (sixth-neighbour distances) wide in radius: an opening the
+  // bordered rule tells from a gap in the sampling (core/spanning_openings.hpp).
+  const std::array<std::pair<int, double>, 3> holes = {{{0, 0.35}, {1, 0.5}, {2, 0.7}}};
+  std::vector<Point<3>> points;
+  for (const auto& p : sphere(samples)) {
+    bool in_hole = false;
+    for (const auto& [axis, radius] : holes) in_hole = in_hole || p[axis] >= std::cos(radius);
+    if (!in_hole) points.push_back(p);
+  }
+  return points;
+}
+
 std::vector<Point<3>> torus_knot_tube(int samples, unsigned seed) {
   // The (2,3) torus knot c(t) on a torus of radii 1 and 0.45, with a tube of radius 0.16 around
   // it; points are spread evenly in t and in the angle around the tube.
@@ -359,6 +410,11 @@ const std::vector<Example>& examples() {
       {"saddle", 3, "the saddle z = x^2 - y^2, 40 x 40 jittered samples (bordered)", true},
       {"monkey-saddle", 3, "the monkey saddle z = x^3 - 3xy^2, 40 x 40 samples (bordered)", true},
       {"hemisphere", 3, "half a sphere, 3000 samples (bordered)", true},
+      {"open-cylinder", 3, "a tube open at both ends, about 3000 jittered samples (bordered)",
+       true},
+      {"wavy-annulus", 3, "a wavy ring: a sheet with an outer and an inner border (bordered)",
+       true},
+      {"holey-sphere", 3, "a sphere with three round holes of different sizes (bordered)", true},
       {"torso", 3, "a smooth torso-like blob, 8000 samples", false},
       {"torus-knot", 3, "a tube around a (2,3) torus knot, 12000 samples", false},
       {"three-holes", 3, "three overlapping tori: a solid with three holes, ~10000 samples", false},
@@ -444,6 +500,9 @@ std::vector<Point<3>> example_points_3(const std::string& name) {
   if (name == "saddle") return saddle(40);
   if (name == "monkey-saddle") return monkey_saddle(40);
   if (name == "hemisphere") return hemisphere(3000);
+  if (name == "open-cylinder") return open_cylinder(3000);
+  if (name == "wavy-annulus") return wavy_annulus(3000);
+  if (name == "holey-sphere") return sphere_with_holes(4000);
   if (name == "torso") return torso(8000);
   if (name == "torus-knot") return torus_knot_tube(12000);
   if (name == "three-holes") return three_holes(10000);

@@ -48,7 +48,11 @@ std::vector<Point<3>> torus(int samples, double major = 1.0, double minor = 0.4,
 std::vector<Point<3>> bumpy_sphere(int samples);     // a sphere with six dents and bumps
 std::vector<Point<3>> saddle(int samples_per_side);  // z = x^2 - y^2 over [-1, 1]^2, jittered
 std::vector<Point<3>> monkey_saddle(int samples_per_side);  // z = 0.35 (x^3 - 3 x y^2), jittered
-std::vector<Point<3>> hemisphere(int samples);  // the upper half of a sphere: one border
+std::vector<Point<3>> hemisphere(int samples);     // the upper half of a sphere: one border
+std::vector<Point<3>> open_cylinder(int samples);  // radius 1, height 3: two borders
+std::vector<Point<3>> wavy_annulus(int samples);   // radii 0.5 to 1, wavy: two borders
+std::vector<Point<3>> sphere_with_holes(
+    int samples);  // the unit sphere, three holes: three borders
 std::vector<Point<3>> torus_knot_tube(int samples,
                                       unsigned seed = 3);  // a tube around a (2,3) knot
 std::vector<Point<3>> three_holes(int samples,

@@ -7,7 +7,8 @@
 // (core/spanning_openings.hpp), so they go, and what is left is made a manifold:
 //
 //   candidates <- the paper's bordered surface, with the confidence labels
-//   spanning   <- the candidates wider than ρ times the samples' spacing there
+//   spanning   <- the candidates wider than ρ = 3 times the samples' spacing there, and, grown
+//                 from them across edges, those wider than 2 times
 //   surface    <- manifold extraction of candidates - spanning (prune sharp edges, walk the
 //                 outer boundary: methods/extraction/manifold_extraction.hpp)
 #pragma once
@@ -21,6 +22,13 @@
 
 namespace sculpt {
 
+// An opening found grows over the triangles next to it wider than this many spacings: its rim
+// samples see neighbours on one side only, which makes their spacing look larger, so the
+// triangles along the rim measure less than the opening's middle (the hysteresis of an edge
+// detector: strong evidence starts an opening, weaker evidence extends it). Below 2 legitimate
+// triangles of jittered samples would go too (up to 1.84 on the closed test shapes).
+inline constexpr double opening_growth_ratio = 2.0;
+
 // From the paper's bordered surface in result.surface to the robust one; the candidates stage
 // keeps both sets.
 inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>& result,
@@ -30,9 +38,33 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   auto& candidates = result.candidates;
   candidates.chosen.clear();
   candidates.spanning.clear();
-  for (const auto& triangle : result.surface) {
-    (spans_opening<3>(samples, spacing, triangle) ? candidates.spanning : candidates.chosen)
-        .push_back(triangle);
+  const auto& triangles = result.surface;
+  const extraction_detail::Edge_map edges(triangles);
+  std::vector<char> removed(triangles.size(), 0);
+  std::vector<int> queue;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    if (spans_opening<3>(samples, spacing, triangles[t])) {
+      removed[t] = 1;
+      queue.push_back(t);
+    }
+  }
+  while (!queue.empty()) {
+    const int t = queue.back();
+    queue.pop_back();
+    for (int j = 0; j < 3; ++j) {
+      for (int u : edges.on(triangles[t][j], triangles[t][(j + 1) % 3])) {
+        if (removed[u]) continue;
+        double local = 0;
+        for (int v : triangles[u]) local = std::max(local, spacing[v]);
+        if (facet_circumradius<3>(samples, triangles[u]) > opening_growth_ratio * local) {
+          removed[u] = 1;
+          queue.push_back(u);
+        }
+      }
+    }
+  }
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    (removed[t] ? candidates.spanning : candidates.chosen).push_back(triangles[t]);
   }
   result.stats.spanning_facets = candidates.spanning.size();
   extract_manifold(samples, result, clock);

@@ -1,0 +1,184 @@
+// Bordered surfaces end where the samples end, and the automatic kind closes what is closed and
+// keeps the borders that are there: generated shapes whose borders are known.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <map>
+#include <set>
+#include <string>
+
+#include "shapes/shapes.hpp"
+#include "test_support.hpp"
+
+namespace sculpt {
+namespace {
+
+Options of_kind(Surface_kind kind) {
+  Options options;
+  options.kind = kind;
+  return options;
+}
+
+// The vertices of edges on one triangle only.
+std::set<int> border_vertices(const std::vector<Facet<3>>& triangles) {
+  std::map<std::pair<int, int>, int> count;
+  for (const auto& t : triangles) {
+    for (int j = 0; j < 3; ++j) ++count[std::minmax(t[j], t[(j + 1) % 3])];
+  }
+  std::set<int> vertices;
+  for (const auto& [edge, times] : count) {
+    if (times == 1) vertices.insert({edge.first, edge.second});
+  }
+  return vertices;
+}
+
+struct Bordered_shape {
+  std::string example;
+  std::size_t loops;
+  // Whether a point lies at the true border, within about two sample spacings.
+  std::function<bool(const Point<3>&)> at_border;
+};
+
+std::ostream& operator<<(std::ostream& out, const Bordered_shape& shape) {
+  return out << shape.example;
+}
+
+double radius_xy(const Point<3>& p) {
+  return std::hypot(p[0], p[1]);
+}
+
+const std::vector<Bordered_shape>& bordered_shapes() {
+  static const std::vector<Bordered_shape> shapes = {
+      {"hemisphere", 1, [](const Point<3>& p) { return p[2] < 0.1; }},
+      // 40 x 40 samples over [-1, 1]^2: a step of 0.05.
+      {"saddle", 1,
+       [](const Point<3>& p) { return std::max(std::abs(p[0]), std::abs(p[1])) > 0.9; }},
+      {"monkey-saddle", 1,
+       [](const Point<3>& p) { return std::max(std::abs(p[0]), std::abs(p[1])) > 0.9; }},
+      // Height 3, rows about 0.1 apart.
+      {"open-cylinder", 2, [](const Point<3>& p) { return std::abs(p[2]) > 1.3; }},
+      {"wavy-annulus", 2,
+       [](const Point<3>& p) { return radius_xy(p) < 0.56 || radius_xy(p) > 0.96; }},
+      // Holes of angular radius 0.35, 0.5, 0.7 about x, y and z; samples about 0.06 apart.
+      {"holey-sphere", 3,
+       [](const Point<3>& p) {
+         return p[0] > std::cos(0.35 + 0.12) || p[1] > std::cos(0.5 + 0.12) ||
+                p[2] > std::cos(0.7 + 0.12);
+       }},
+  };
+  return shapes;
+}
+
+class Bordered_surface : public ::testing::TestWithParam<Bordered_shape> {};
+
+TEST_P(Bordered_surface, EveryBorderIsFoundWhereTheSamplesEnd) {
+  const Bordered_shape& shape = GetParam();
+  const auto samples = shapes::example_points_3(shape.example);
+  const auto result = reconstruct(samples, of_kind(Surface_kind::bordered));
+  const Statistics& s = result.stats;
+  EXPECT_EQ(s.boundary_loops, shape.loops);
+  EXPECT_EQ(s.non_manifold_ridges, 0u);
+  EXPECT_EQ(s.non_manifold_vertices, 0u);
+  EXPECT_EQ(s.unused_samples, 0u);
+  EXPECT_EQ(s.components, 1u);
+  EXPECT_TRUE(verdict(s).manifold) << verdict(s).line;
+  for (int v : border_vertices(result.surface)) {
+    EXPECT_TRUE(shape.at_border(samples[v]))
+        << "a border vertex away from the true border: sample " << v << " at (" << samples[v][0]
+        << ", " << samples[v][1] << ", " << samples[v][2] << ")";
+  }
+}
+
+// The automatic kind finds the same border.
+TEST_P(Bordered_surface, TheAutomaticKindKeepsTheBorders) {
+  const auto samples = shapes::example_points_3(GetParam().example);
+  const auto bordered = reconstruct(samples, of_kind(Surface_kind::bordered));
+  const auto automatic = reconstruct(samples);
+  EXPECT_EQ(automatic.stats.kind, Surface_kind::bordered);
+  EXPECT_EQ(automatic.options.kind, Surface_kind::bordered);
+  EXPECT_TRUE(automatic.stats.kind_chosen_automatically);
+  EXPECT_GT(automatic.stats.closed_spanning_facets, 0u);
+  EXPECT_EQ(automatic.surface, bordered.surface);
+  ASSERT_FALSE(automatic.stats.stages.empty());
+  EXPECT_EQ(automatic.stats.stages.front().name, "closed attempt");
+}
+
+INSTANTIATE_TEST_SUITE_P(Shapes, Bordered_surface, ::testing::ValuesIn(bordered_shapes()),
+                         [](const auto& info) {
+                           std::string name = info.param.example;
+                           std::replace(name.begin(), name.end(), '-', '_');
+                           return name;
+                         });
+
+TEST(Bordered_surface, TheCapOverAnOpeningIsWhatGoes) {
+  // The paper's bordered rule caps most of the hemisphere's opening; the robust rule removes the
+  // cap's triangles (far wider than the spacing) and its border runs all around the rim.
+  const auto samples = shapes::hemisphere(3000);
+  Options paper = of_kind(Surface_kind::bordered);
+  paper.method = Method::paper;
+  const auto capped = reconstruct(samples, paper);
+  EXPECT_LT(capped.stats.boundary_ridges, 20u);
+  const auto robust = reconstruct(samples, of_kind(Surface_kind::bordered));
+  EXPECT_GT(robust.stats.boundary_ridges, 50u);
+  EXPECT_GT(robust.stats.spanning_facets, 0u);
+  EXPECT_EQ(robust.candidates.spanning.size(), robust.stats.spanning_facets);
+  // The candidates were the paper's bordered surface (with the robust labels): the spanning
+  // triangles and the chosen ones share none.
+  const auto chosen = testing::unordered(robust.candidates.chosen);
+  for (const auto& t : testing::unordered(robust.candidates.spanning)) {
+    EXPECT_EQ(chosen.count(t), 0u);
+  }
+}
+
+// Closed shapes: the automatic kind gives exactly the closed result.
+TEST(Automatic_kind, ClosedSurfacesStayClosed) {
+  for (const char* name : {"sphere", "torus", "bumpy", "torso", "bumpy-nonuniform"}) {
+    SCOPED_TRACE(name);
+    const auto samples = shapes::example_points_3(name);
+    const auto closed = reconstruct(samples, of_kind(Surface_kind::closed));
+    const auto automatic = reconstruct(samples);
+    EXPECT_EQ(automatic.stats.kind, Surface_kind::closed);
+    EXPECT_TRUE(automatic.stats.kind_chosen_automatically);
+    EXPECT_EQ(automatic.stats.closed_spanning_facets, 0u);
+    EXPECT_EQ(automatic.surface, closed.surface);
+    EXPECT_EQ(automatic.stats.stages.back().name, "kind choice");
+  }
+}
+
+TEST(Automatic_kind, ClosedCurvesStayClosedAndOpenOnesOpen) {
+  for (const char* name : {"circle", "star", "blob", "nested", "nonuniform"}) {
+    SCOPED_TRACE(name);
+    const auto samples = shapes::example_points_2(name);
+    const auto closed = reconstruct(samples, of_kind(Surface_kind::closed));
+    const auto automatic = reconstruct(samples);
+    EXPECT_EQ(automatic.stats.kind, Surface_kind::closed);
+    EXPECT_EQ(automatic.surface, closed.surface);
+  }
+  for (const char* name : {"arc", "wavy-arc", "spiral", "strokes"}) {
+    SCOPED_TRACE(name);
+    const auto samples = shapes::example_points_2(name);
+    const auto bordered = reconstruct(samples, of_kind(Surface_kind::bordered));
+    const auto automatic = reconstruct(samples);
+    EXPECT_EQ(automatic.stats.kind, Surface_kind::bordered);
+    EXPECT_EQ(automatic.surface, bordered.surface);
+    EXPECT_EQ(automatic.stats.non_manifold_ridges, 0u) << "no branch point";
+    EXPECT_EQ(automatic.stats.unused_samples, 0u);
+  }
+}
+
+// Methods without a bordered rule of their own run once, as closed.
+TEST(Automatic_kind, MethodsWithoutABorderedRuleRunOnce) {
+  Options cocone;
+  cocone.method = Method::cocone;
+  const auto result = reconstruct(shapes::hemisphere(1500), cocone);
+  EXPECT_EQ(result.stats.kind, Surface_kind::closed);
+  EXPECT_TRUE(result.stats.kind_chosen_automatically);
+  for (const auto& stage : result.stats.stages) {
+    EXPECT_NE(stage.name, "closed attempt");
+    EXPECT_NE(stage.name, "kind choice");
+  }
+}
+
+}  // namespace
+}  // namespace sculpt
