@@ -107,7 +107,8 @@ std::string explanation(Method method, Surface_kind kind, int dimension, scene::
              cell(dimension) + " has an empty " +
              std::string(dimension == 2 ? "circumcircle" : "circumball") + ". The " +
              facets(dimension) + " of the " +
-             std::string(dimension == 2 ? "curve are among its edges" : "surface are among its faces") +
+             std::string(dimension == 2 ? "curve are among its edges"
+                                        : "surface are among its faces") +
              " when the sampling is dense; every method here chooses among them (the power "
              "crust builds its own).";
     case Stage::hull:

@@ -83,18 +83,12 @@ inline Pseudo_code paper_pseudo_code() {
 // (src/methods/robust/confidence_labelling.hpp), after the poles: its lines and their places.
 inline void add_confidence_labelling_lines(Pseudo_code& code) {
   code.lines = {
-      "DT <- Delaunay(S + BBV)   # BB: 5x box",
-      "for each sample s:",
-      "    p+(s), p-(s) <- poles of Vor(s)",
-      "OSP <- convex poles: outer, weight 1",
-      "heap <- OSP  # largest |outer-inner| first",
-      "while heap not empty:",
-      "    p <- most confident pole; label it",
-      "    for q whose ball meets B(p) at s:",
-      "        ev(q, label p) max= cos(p s q)",
-      "    for q paired with p (antipodal):",
-      "        ev(q, other side) max= -cos(p s q)",
-      "    ev >= .5 against q's label: contradicted",
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",     "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",        "OSP <- convex poles: outer, weight 1",
+      "heap <- OSP  # largest |outer-inner| first", "while heap not empty:",
+      "    p <- most confident pole; label it",     "    for q whose ball meets B(p) at s:",
+      "        ev(q, label p) max= cos(p s q)",     "    for q paired with p (antipodal):",
+      "        ev(q, other side) max= -cos(p s q)", "    ev >= .5 against q's label: contradicted",
   };
   code.lines_of_stage = common_stage_lines({2});
   code.lines_of_stage.insert({scene::Stage::seeds, {3}});
@@ -112,8 +106,8 @@ inline Pseudo_code bordered_surface_pseudo_code(Pseudo_code code, int first_seed
   using scene::Stage;
   code.lines[first_seed_line] = "OSP <- one convex pole: outer   # bordered";
   // The labelling stays (its conflict line too); what follows it changes.
-  code.lines.resize(std::max(code.lines_of_reason.at(Label_reason::pairing)[0], code.conflict_line) +
-                    1);
+  code.lines.resize(
+      std::max(code.lines_of_reason.at(Label_reason::pairing)[0], code.conflict_line) + 1);
   const int up = int(code.lines.size());
   code.lines.insert(code.lines.end(), {
                                           "UP <- labelled poles that are not convex",
@@ -153,16 +147,11 @@ inline Pseudo_code open_curves_pseudo_code() {
   using scene::Stage;
   Pseudo_code code;
   code.lines = {
-      "DT <- Delaunay(S + BBV)   # BB: 5x box",
-      "for each sample s:",
-      "    p+(s), p-(s) <- poles of Vor(s)",
-      "OSP <- convex poles: outer, weight 1",
-      "label poles as closed; contradicted",
-      "for each sample s:   # NN-crust, with ends",
-      "    q <- nearest Delaunay neighbour of s",
-      "    r <- nearest at > 90 degrees from q",
-      "    offer sq; sr too if |sr| <= 2.5 spacing",
-      "curve <- offers shortest first, 2 per sample",
+      "DT <- Delaunay(S + BBV)   # BB: 5x box",      "for each sample s:",
+      "    p+(s), p-(s) <- poles of Vor(s)",         "OSP <- convex poles: outer, weight 1",
+      "label poles as closed; contradicted",         "for each sample s:   # NN-crust, with ends",
+      "    q <- nearest Delaunay neighbour of s",    "    r <- nearest at > 90 degrees from q",
+      "    offer sq; sr too if |sr| <= 2.5 spacing", "curve <- offers shortest first, 2 per sample",
   };
   code.lines_of_stage = common_stage_lines({2});
   code.lines_of_stage.insert({{Stage::seeds, {3}},
@@ -208,7 +197,8 @@ inline Pseudo_code nn_crust_pseudo_code() {
       "    r <- nearest at > 90 degrees from q",
       "    keep sq, sr",
   };
-  code.lines_of_stage = {{Stage::samples, {0}}, {Stage::delaunay, {0}}, {Stage::surface, {4, 2, 3}}};
+  code.lines_of_stage = {
+      {Stage::samples, {0}}, {Stage::delaunay, {0}}, {Stage::surface, {4, 2, 3}}};
   return code;
 }
 
@@ -302,12 +292,9 @@ inline Pseudo_code advancing_front_pseudo_code() {
   using scene::Stage;
   Pseudo_code code;
   code.lines = {
-      "DT <- Delaunay(S)   # CGAL's own, no box",
-      "surface <- the triangle of smallest radius",
-      "while the front (border) has an edge e:",
-      "    t <- DT triangle on e, smallest radius,",
-      "         that keeps an oriented 2-manifold",
-      "    add t to the surface; the front moves",
+      "DT <- Delaunay(S)   # CGAL's own, no box",   "surface <- the triangle of smallest radius",
+      "while the front (border) has an edge e:",    "    t <- DT triangle on e, smallest radius,",
+      "         that keeps an oriented 2-manifold", "    add t to the surface; the front moves",
   };
   code.lines_of_stage = {
       {Stage::samples, {0}}, {Stage::delaunay, {0}}, {Stage::surface, {2, 1, 3, 5}}};
@@ -455,7 +442,9 @@ inline std::string code_part(const char* line) {
   while (!text.empty() && text.back() == ' ') text.pop_back();
   return text;
 }
-inline bool is_comment(const char* line) { return line[indent(line)] == '#'; }
+inline bool is_comment(const char* line) {
+  return line[indent(line)] == '#';
+}
 // A loop or branch: its body is the lines indented under it.
 inline bool is_header(const char* line) {
   const std::string text = code_part(line);
@@ -491,8 +480,8 @@ inline std::vector<int> statement_block(const Pseudo_code& code, int line) {
 
 // Every line lit at a moment, in order.
 inline std::vector<int> highlighted_lines(const Pseudo_code& code, scene::Stage stage,
-                                          const Labelling_event* latest,
-                                          bool conflict_now = false, bool seed_partner = false) {
+                                          const Labelling_event* latest, bool conflict_now = false,
+                                          bool seed_partner = false) {
   std::vector<int> lit;
   for (int line : current_lines(code, stage, latest, conflict_now, seed_partner)) {
     const auto block = statement_block(code, line);

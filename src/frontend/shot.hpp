@@ -13,7 +13,7 @@ namespace sculpt::frontend {
 struct Shot {
   std::string input, example;
   // The kind of surface: bordered if asked or if the example is so, unless closed is forced
-  // (a lesson on what the closed algorithm does to a sheet): reconstructs_bordered().
+  // (a lesson on what the closed algorithm does to a sheet); a file's, chosen: kind_of().
   bool bordered = false, closed = false;
   bool merge_duplicates = false;  // drop a file's repeated points instead of refusing it
   int dimension = 0;
@@ -44,10 +44,16 @@ struct Shot {
   std::string output;
 };
 
-// Whether a shot's input is reconstructed as a bordered surface (open curves in 2D).
-inline bool reconstructs_bordered(const Shot& shot) {
+// The kind a shot's input is reconstructed as: bordered (open curves in 2D) if asked or if the
+// example is so, closed if asked or if the example is so, else (a file) the default, chosen
+// from the samples.
+inline Surface_kind kind_of(const Shot& shot) {
   const shapes::Example* example = shapes::find_example(shot.example);
-  return !shot.closed && (shot.bordered || (example && example->bordered));
+  if (!shot.closed && (shot.bordered || (example && example->bordered))) {
+    return Surface_kind::bordered;
+  }
+  if (shot.closed || example) return Surface_kind::closed;
+  return Options{}.kind;
 }
 
 }  // namespace sculpt::frontend

@@ -257,8 +257,8 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
             shown);
         const render::Follow moved = render::follow_point(*camera, pole, lower, upper,
                                                           float(width) / float(height), framed_far);
-        framed_far = moved == render::Follow::framed_far ||
-                     (framed_far && moved == render::Follow::stayed);
+        framed_far =
+            moved == render::Follow::framed_far || (framed_far && moved == render::Follow::stayed);
         followed = render::to_json(*camera);
       }
       Picture picture =
@@ -298,8 +298,7 @@ Any_reconstruction reconstruct_input(const Input& input, const Options& options)
 }
 
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
-  const std::string key = shot.input + "|" + shot.example + "|" +
-                          std::to_string(reconstructs_bordered(shot)) + "|" +
+  const std::string key = shot.input + "|" + shot.example + "|" + to_string(kind_of(shot)) + "|" +
                           std::to_string(shot.dimension) + "|" + std::to_string(shot.box_factor) +
                           "|" + shot.rule + "|" + shot.method + "|" + std::to_string(shot.alpha) +
                           "|" + std::to_string(shot.merge_duplicates);
@@ -317,7 +316,7 @@ const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
     throw io::Error("no surface rule '" + shot.rule + "' (rules: auto, skin, extraction)");
   }
   // An example is reconstructed as its own kind, as in the viewer and the command line.
-  options.kind = reconstructs_bordered(shot) ? Surface_kind::bordered : Surface_kind::closed;
+  options.kind = kind_of(shot);
   options.box_factor = shot.box_factor;
   options.alpha = shot.alpha;
   Any_reconstruction result = reconstruct_input(input, options);

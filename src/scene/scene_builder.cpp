@@ -560,6 +560,7 @@ class Scene_builder {
       if (request_.smooth)
         layer.normals = vertex_normals(points, r_.surface, static_cast<int>(points.size()));
       borders_and_defects();
+      openings();
       if (request_.wireframe) {
         Layer& wire = add("wireframe", "edges", Primitive::lines, palette::wireframe, 1.0f);
         wire.in_legend = false;
@@ -632,6 +633,22 @@ class Scene_builder {
     marked("undersampled", "undersampled samples", candidates.undersampled, palette::undersampled);
     marked("without-umbrella", "samples without umbrella", candidates.without_umbrella,
            palette::without_umbrella);
+  }
+
+  // The triangles the robust bordered rule removed as spanning an opening, as edges: the caps
+  // the closed rules would have put over the openings (methods/robust/bordered_surface.hpp).
+  void openings() {
+    const auto& spanning = r_.candidates.spanning;
+    if (spanning.empty()) return;
+    Layer& layer =
+        add("openings", "removed over openings (" + std::to_string(spanning.size()) + ")",
+            Primitive::lines, palette::opening, 1.0f);
+    for (const auto& facet : spanning) {
+      for (int j = 0; j < D; ++j) {
+        layer.positions.push_back(vec(r_.sites[facet[j]]));
+        layer.positions.push_back(vec(r_.sites[facet[(j + 1) % D]]));
+      }
+    }
   }
 
   // The result's border (curve ends in 2D, border edges in 3D) and its non-manifold ridges

@@ -42,12 +42,14 @@ int main(int argc, char** argv) {
   int frames = 0;
   std::string size = "1280x720";  // fits a 1366x768 laptop screen, title bar and task bar included
   float font_scale = 1.0f;
-  bool bordered = false, merge_duplicates = false;
+  bool bordered = false, closed = false, merge_duplicates = false;
   app.add_option("file", file, "Point file to open (default: the built-in example)");
   app.add_option("--example", example, "Built-in example to open")->capture_default_str();
   app.add_flag("--bordered", bordered,
                "Reconstruct a bordered surface (an example is reconstructed as its own kind "
-               "otherwise)");
+               "otherwise, and a file as its samples show)");
+  app.add_flag("--closed", closed, "Reconstruct a closed surface, also from a bordered example")
+      ->excludes("--bordered");
   app.add_flag("--merge-duplicates", merge_duplicates,
                "Drop a file's repeated points instead of refusing the file");
   std::string method = sculpt::to_string(sculpt::Options{}.method);
@@ -154,11 +156,15 @@ int main(int argc, char** argv) {
         return 2;
       }
     } else if (!file.empty()) {
-      viewer.set_bordered(bordered);
+      if (bordered || closed) {
+        viewer.set_kind(bordered ? sculpt::Surface_kind::bordered : sculpt::Surface_kind::closed);
+      }
       viewer.set_merge_duplicates(merge_duplicates);
       viewer.open_file(file);
     } else {
-      viewer.open_example(example, bordered);
+      viewer.open_example(example, bordered ? sculpt::Surface_kind::bordered
+                                   : closed ? sculpt::Surface_kind::closed
+                                            : sculpt::Surface_kind::automatic);
     }
 
     double last = glfwGetTime();

@@ -368,7 +368,8 @@ std::string Script::before_frame(Viewer& viewer) {
       const auto values = reals(0);
       if (!values || values->size() < 5 || values->size() % 2 != 1 || (*values)[0] < 0.001 ||
           (*values)[0] > 1) {
-        fail("'" + line + "': expected stroke SPACING X1 Y1 X2 Y2 ... (spacing 0.001 to 1, a share of "
+        fail("'" + line +
+             "': expected stroke SPACING X1 Y1 X2 Y2 ... (spacing 0.001 to 1, a share of "
              "the samples' box diagonal)");
         continue;
       }

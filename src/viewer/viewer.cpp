@@ -12,9 +12,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "frontend/explanations.hpp"
 #include "frontend/pseudo_code.hpp"
@@ -89,13 +89,15 @@ Viewer::Viewer() : renderer_(std::make_unique<render::Renderer>()) {}
 // ---------------------------------------------------------------------------------------------
 // Reconstructions
 
-void Viewer::open_example(const std::string& name, bool force_bordered) {
+void Viewer::open_example(const std::string& name, Surface_kind kind) {
   close_tour();
   stop_editing();
   Job_request request;
   request.example = name;
   if (const auto* example = shapes::find_example(name)) {
-    bordered_ = force_bordered || example->bordered;
+    kind_ = kind != Surface_kind::automatic ? kind
+            : example->bordered             ? Surface_kind::bordered
+                                            : Surface_kind::closed;
   }
   start_job(request);
 }
@@ -135,7 +137,7 @@ bool Viewer::switch_method(const std::string& name) {
 
 Job_request Viewer::with_options(Job_request request) const {
   request.options.method = method_at(method_);
-  request.options.kind = bordered_ ? Surface_kind::bordered : Surface_kind::closed;
+  request.options.kind = kind_;
   request.options.box_factor = box_factor_;
   request.options.alpha = alpha_;
   request.merge_duplicates = merge_duplicates_;
@@ -423,7 +425,7 @@ void Viewer::show_tour_panel() {
   Method method = Options{}.method;
   parse_method(shot.method, method);
   set_method(method);
-  bordered_ = frontend::reconstructs_bordered(shot);
+  kind_ = frontend::kind_of(shot);
   box_factor_ = static_cast<float>(shot.box_factor);
   alpha_ = static_cast<float>(shot.alpha);
   rule_ = rule_index(shot.rule);
@@ -1116,7 +1118,20 @@ void Viewer::draw_panel(int height) {
       rerun();
     }
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", describe(method_at(method_)));
-    ImGui::Checkbox("bordered surface", &bordered_);
+    // Automatic: closed, unless the closed result spans openings and the bordered one has fewer
+    // defects (the verdict line says which was kept).
+    static const char* kinds[] = {"automatic", "closed", "bordered"};
+    int kind = kind_ == Surface_kind::closed ? 1 : kind_ == Surface_kind::bordered ? 2 : 0;
+    if (ImGui::Combo("kind", &kind, kinds, 3)) {
+      kind_ = kind == 1   ? Surface_kind::closed
+              : kind == 2 ? Surface_kind::bordered
+                          : Surface_kind::automatic;
+    }
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "automatic: closed, unless the closed result spans openings and the bordered one is "
+          "cleaner");
+    }
     ImGui::Checkbox("merge repeated points", &merge_duplicates_);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
@@ -1240,7 +1255,8 @@ void Viewer::draw_pseudo_code() {
   // font): the running statement is scrolled into sight there, never the verdict and controls.
   const float all_lines = ImGui::GetTextLineHeightWithSpacing() * float(lines.size()) +
                           ImGui::GetStyle().WindowPadding.y;
-  ImGui::BeginChild("pseudo-code", ImVec2(0, std::min(all_lines, 0.45f * ImGui::GetWindowHeight())));
+  ImGui::BeginChild("pseudo-code",
+                    ImVec2(0, std::min(all_lines, 0.45f * ImGui::GetWindowHeight())));
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {
       ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "> %s", lines[i]);
@@ -1336,6 +1352,17 @@ void Viewer::draw_statistics() {
       std::visit([](const auto& r) -> const Statistics& { return r.stats; }, *reconstruction_);
   const bool three = s.dimension == 3;
   ImGui::Text("%s", description_.c_str());
+  if (s.kind_chosen_automatically) {
+    if (s.closed_spanning_facets > 0) {
+      ImGui::TextWrapped("kind: %s, chosen (closed spanned openings with %zu %s)",
+                         to_string(s.kind), s.closed_spanning_facets,
+                         three ? "triangles" : "edges");
+    } else {
+      ImGui::Text("kind: %s, chosen (no opening)", to_string(s.kind));
+    }
+  } else {
+    ImGui::Text("kind: %s", to_string(s.kind));
+  }
   if (sculpts(s.method)) {
     ImGui::Text("n %zu   poles %zu   m %zu", s.samples, s.poles, s.inserted_poles);
     ImGui::Text("%s %zu   unlabelled %zu", s.method == Method::paper ? "conflicts" : "contradicted",
@@ -1344,6 +1371,7 @@ void Viewer::draw_statistics() {
     ImGui::Text("n %zu   poles %zu", s.samples, s.poles);
   }
   if (s.method == Method::alpha_shape) ImGui::Text("alpha %g", s.alpha);
+  if (s.spanning_facets > 0) ImGui::Text("triangles spanning openings %zu", s.spanning_facets);
   if (s.candidate_facets > 0) {
     ImGui::Text("cells %zu   candidates %zu, pruned %zu%s", s.delaunay_cells, s.candidate_facets,
                 s.pruned_facets, s.rims_kept ? " (rims kept)" : "");

@@ -31,14 +31,14 @@ class Viewer {
   Viewer();
 
   // Reconstruction inputs; each starts a background job.
-  // An example is reconstructed as its own kind (bordered or closed), or bordered if forced.
-  void open_example(const std::string& name, bool force_bordered = false);
+  // An example is reconstructed as its own kind (bordered or closed), unless one is forced.
+  void open_example(const std::string& name, Surface_kind kind = Surface_kind::automatic);
   void open_file(const std::string& path);
   void rerun();  // same input, current options
   // Reconstructs the loaded input again with another method ("crust", "paper", ...), keeping
   // the camera; false, with a message, for an unknown method or nothing loaded.
   bool switch_method(const std::string& name);
-  void set_bordered(bool bordered) { bordered_ = bordered; }
+  void set_kind(Surface_kind kind) { kind_ = kind; }
   void set_merge_duplicates(bool merge) { merge_duplicates_ = merge; }
   void set_method(Method method) {
     const auto& names = method_names();
@@ -234,7 +234,7 @@ class Viewer {
   std::string message_;
 
   // Options for the next run.
-  bool bordered_ = false;
+  Surface_kind kind_ = Options{}.kind;
   float box_factor_ = static_cast<float>(Options{}.box_factor);
   bool merge_duplicates_ = false;
   float alpha_ = static_cast<float>(Options{}.alpha);
