@@ -236,10 +236,10 @@ const std::vector<Figure>& paper_figures() {
          "extraction rule, the boundary is created and a bordered surface is reconstructed as "
          "shown in the bottom of Fig. 8(b).",
          "the built-in `saddle` (z = x^2 - y^2, 40 x 40 jittered samples)",
-         "The saddle stands in for the foot. A hemisphere would show it less well: its "
-         "opening is mostly capped even when bordered (only 13 border edges; see Fig. 13a "
-         "and Table 1), because facets across it have an outer apex and no inserted pole "
-         "breaks them.",
+         "The saddle stands in for the foot. A hemisphere shows the rule's limit: its border cuts "
+         "across the rim in 13 long chords, the slivers between them and the rim kept (Fig. 13a "
+         "and Table 1), because facets there have an outer apex and no inserted pole breaks "
+         "them. Panel (d) is not the paper's: the robust method's bordered rule removes them.",
          {{"a", "all concave poles UP inserted: inner (red) and outer (orange)",
            "For a bordered surface all concave poles UP are inserted, inner ones too: near the "
            "border, inner poles of border samples fall outside the sheet and cut it there.",
@@ -249,9 +249,16 @@ const std::vector<Figure>& paper_figures() {
            "thin slivers survive and their skins double the sheet, with no border.",
            wire(closed(shot("example:saddle", "surface")))},
           {"c", "bordered: the border is created",
-           "Bordered again: the facets kept are those with an outer pole for an apex, and the "
-           "sheet ends where the samples end.",
-           wire(bordered(shot("example:saddle", "surface")))}}});
+           "Bordered again, by the paper's extraction rule: the facets kept are those with an "
+           "outer pole for an apex, and the sheet ends where the samples end.",
+           wire(bordered(shot("example:saddle", "surface")))},
+          {"d", "robust rule: the hemisphere's opening found",
+           "Not the paper's: the robust method's bordered rule on a hemisphere, seen into its "
+           "opening. The paper's rule cuts across the rim (Fig. 13a); here the triangles across "
+           "the opening, far wider than the gaps between samples (violet), are removed and the "
+           "border (orange) follows the rim.",
+           from_below(
+               bordered(with_method(shot("example:hemisphere", "surface"), Method::robust)))}}});
     f.push_back(
         {"fig09",
          "Fig. 9 An example of a three-dimensional bordered surface reconstruction (a hyper "
@@ -268,7 +275,9 @@ const std::vector<Figure>& paper_figures() {
            "Poles on both sides of the sheet. Which side is called inner is arbitrary for a "
            "sheet; the bordered rule inserts both.",
            bordered(shot("example:saddle", "outer-concave"))},
-          {"c", "the shaded surface", "The bordered surface through every sample, left open.",
+          {"c", "the shaded surface",
+           "The bordered surface through every sample, left open: the paper's extraction rule "
+           "drew it, its border in orange.",
            bordered(shot("example:saddle", "surface"))},
           {"d", "a zoom", "Closer, with the edges.",
            bordered(zoomed(shot("example:saddle", "surface"), 0.4f))}}});
@@ -339,21 +348,36 @@ const std::vector<Figure>& paper_figures() {
          "Figure 13(b) is a shampoo bottle model. Figure 13(c) displays a monkey bar. Figure "
          "13(d) displays a golf club model. Figure 13(e) reveals a good surface reconstruction "
          "of an automobile exterior surface.",
-         "the built-in `hemisphere`, `saddle` and `monkey-saddle` (box factor 1.5)",
-         "The paper's scans are not available; generated sheets stand in. The hemisphere, seen "
-         "from below, keeps only a small hole of its opening (13 border edges). The monkey saddle "
-         "needs a box factor of 1.5: with 5, its flat centre has both poles near the box, "
-         "and 860 non-manifold edges appear.",
-         {{"a", "hemisphere",
-           "A hemisphere, bordered, seen into its opening: the paper's rule keeps most of a cap "
-           "across it, since facets there have an outer apex and no inserted pole breaks them.",
+         "the built-in `hemisphere`, `saddle` and `monkey-saddle` (default box factor 5, and "
+         "1.5)",
+         "The paper's scans are not available; generated sheets stand in. Panels (a), (c) and "
+         "(d) are the paper's extraction rule: the hemisphere's border, seen from below, cuts "
+         "across its rim in 13 long chords, and the monkey saddle needs a box factor "
+         "of 1.5 (with 5, its flat centre has both poles near the box, and 860 non-manifold "
+         "edges appear). Panels (b) and (e) are not the paper's: the robust method's bordered "
+         "rule, at the default box, finds both borders whole.",
+         {{"a", "hemisphere, paper's rule",
+           "A hemisphere, bordered, seen into its opening: the paper's rule keeps slivers across "
+           "the rim, its border 13 long chords, since facets there have an outer apex and no "
+           "inserted pole breaks them.",
            from_below(bordered(shot("example:hemisphere", "surface")))},
-          {"b", "saddle", "A saddle: here the rule finds the whole border.",
+          {"b", "hemisphere, robust rule",
+           "The robust method's bordered rule on the same samples: the slivers across the rim are "
+           "far wider than the gaps between samples (violet) and go; the border (orange) follows "
+           "the rim.",
+           from_below(
+               bordered(with_method(shot("example:hemisphere", "surface"), Method::robust)))},
+          {"c", "saddle, paper's rule", "A saddle: here the paper's rule finds the whole border.",
            bordered(shot("example:saddle", "surface"))},
-          {"c", "monkey saddle",
-           "A monkey saddle, with a box 1.5 times the samples' bounds: with the default 5, its "
-           "flat centre gets poles near the box and non-manifold edges.",
-           bordered(wire(shot("example:monkey-saddle", "surface")), 1.5)}}});
+          {"d", "monkey saddle, paper's rule, box 1.5",
+           "A monkey saddle by the paper's rule, with a box 1.5 times the samples' bounds: with "
+           "the default 5, its flat centre gets poles near the box and non-manifold edges.",
+           bordered(wire(shot("example:monkey-saddle", "surface")), 1.5)},
+          {"e", "monkey saddle, robust rule, box 5",
+           "The robust method's bordered rule at the default box: one border loop, no "
+           "non-manifold edge, every sample on it.",
+           bordered(
+               wire(with_method(shot("example:monkey-saddle", "surface"), Method::robust)))}}});
     f.push_back(
         {"fig14",
          "Fig. 14 The comparison of our proposed algorithm with the power crust algorithm. "

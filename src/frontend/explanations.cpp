@@ -81,6 +81,14 @@ std::string surface(Method method, Surface_kind kind, int dimension) {
       what +=
           dimension == 2 ? "." : ", the candidates left after pruning, walked from the outside.";
       break;
+    case Method::robust:
+      what += dimension == 3 && kind == Surface_kind::bordered
+                  ? ": the paper's bordered surface less the triangles spanning an opening "
+                    "(violet), those whose circumscribed circle is wider than 3 times the "
+                    "samples' spacing there (the distance to the 6th nearest sample), and, next "
+                    "to them, 2 times; the rest is pruned and walked as the co-cone's is."
+                  : ".";
+      break;
     default:
       what += ".";
   }

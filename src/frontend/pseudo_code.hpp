@@ -122,6 +122,22 @@ inline Pseudo_code bordered_surface_pseudo_code(Pseudo_code code, int first_seed
   return code;
 }
 
+// The robust method's bordered surfaces (src/methods/robust/bordered_surface.hpp): the paper's
+// bordered surface is the candidates, less the triangles spanning an opening.
+inline Pseudo_code robust_bordered_pseudo_code(Pseudo_code code) {
+  using scene::Stage;
+  const int candidates = code.lines_of_stage.at(Stage::surface).front();
+  code.lines[candidates] = "cands <- facets of S with an outer apex";
+  code.lines.insert(code.lines.end(), {
+                                          "# R: circumradius; h: 6th-neighbour distance",
+                                          "drop f: R(f) > 3 h, next to those > 2 h",
+                                          "surface <- prune, walk the rest",
+                                      });
+  code.lines_of_stage[Stage::surface] = {candidates + 2, candidates, candidates + 1,
+                                         candidates + 3};
+  return code;
+}
+
 inline Pseudo_code robust_pseudo_code() {
   using scene::Stage;
   Pseudo_code code;
@@ -359,7 +375,8 @@ inline Pseudo_code boissonnat_pseudo_code() {
 inline const Pseudo_code& pseudo_code(Method method, Surface_kind kind = Surface_kind::closed,
                                       int dimension = 3) {
   static const Pseudo_code paper_bordered = bordered_surface_pseudo_code(paper_pseudo_code(), 4),
-                           robust_bordered = bordered_surface_pseudo_code(robust_pseudo_code(), 3);
+                           robust_bordered = robust_bordered_pseudo_code(
+                               bordered_surface_pseudo_code(robust_pseudo_code(), 3));
   static const Pseudo_code paper = paper_pseudo_code(), robust = robust_pseudo_code(),
                            open_curves = open_curves_pseudo_code(), crust = crust_pseudo_code(),
                            nn_crust = nn_crust_pseudo_code(),
