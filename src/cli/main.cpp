@@ -31,7 +31,8 @@ struct Reconstruct_arguments {
   int seed_sample = Options{}.bordered_seed_sample;
   double box_factor = Options{}.box_factor;
   double alpha = Options{}.alpha;
-  bool bordered = false, closed = false, ascii = false, quiet = false, merge_duplicates = false;
+  bool bordered = false, closed = false, automatic = false, ascii = false, quiet = false,
+       merge_duplicates = false;
   bool require_manifold = false;
 };
 
@@ -158,8 +159,10 @@ int run_reconstruct(Reconstruct_arguments args) {
   // An example is reconstructed as its own kind, as in the viewer and the benchmark; a file as
   // --closed or --bordered say, else of the kind chosen automatically.
   const shapes::Example* example = shapes::find_example(args.example);
-  args.bordered = !args.closed && (args.bordered || (example && example->bordered));
-  args.closed = args.closed || (example && !example->bordered);
+  if (!args.automatic) {
+    args.bordered = !args.closed && (args.bordered || (example && example->bordered));
+    args.closed = args.closed || (example && !example->bordered);
+  }
   const frontend::Input input =
       frontend::load_input(args.input, args.example, args.dimension, args.merge_duplicates);
   check_output_formats(args, input.dimension());
@@ -220,6 +223,11 @@ int main(int argc, char** argv) {
       ->add_flag("--closed", args.closed,
                  "The samples come from a closed surface (curve); also for a bordered example")
       ->excludes("--bordered");
+  reconstruct
+      ->add_flag("--automatic", args.automatic,
+                 "Choose the kind from the samples, also for an example (a file's default)")
+      ->excludes("--bordered")
+      ->excludes("--closed");
   reconstruct->add_option("--solid", args.solid,
                           "Also write the sculpted solid: .mesh (Medit), .vtu, .node/.ele");
   reconstruct
