@@ -48,5 +48,33 @@ TEST(Progress, EveryMethodRunsItsPlannedStagesAndTheOverallProgressOnlyGrows) {
   }
 }
 
+// The automatic kind runs closed, then maybe bordered: each run has half the bar, and a closed
+// result kept jumps to the end; the bar still only grows, from 0 to 1.
+template <int D>
+void check_automatic_progress(const std::vector<Point<D>>& points, Surface_kind kept) {
+  for (Method method : {Method::robust, Method::paper}) {
+    Options options = testing::with_method(method);
+    std::vector<double> overall;
+    options.progress = [&](const Progress& p) {
+      overall.push_back(p.overall);
+      return true;
+    };
+    const auto r = reconstruct(points, options);
+    SCOPED_TRACE(std::string(to_string(method)) + " " + std::to_string(D) + "D");
+    EXPECT_EQ(r.stats.kind, kept);
+    ASSERT_FALSE(overall.empty());
+    EXPECT_EQ(overall.front(), 0.0);
+    EXPECT_DOUBLE_EQ(overall.back(), 1.0);
+    for (std::size_t i = 1; i < overall.size(); ++i) EXPECT_GE(overall[i], overall[i - 1]);
+  }
+}
+
+TEST(Progress, TheAutomaticKindFillsTheBarOnce) {
+  check_automatic_progress<2>(shapes::star(60).samples, Surface_kind::closed);
+  check_automatic_progress<2>(shapes::open_arc(40).samples, Surface_kind::bordered);
+  check_automatic_progress<3>(shapes::bumpy_sphere(600), Surface_kind::closed);
+  check_automatic_progress<3>(shapes::hemisphere(1500), Surface_kind::bordered);
+}
+
 }  // namespace
 }  // namespace sculpt

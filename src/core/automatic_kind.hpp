@@ -17,7 +17,8 @@
 // with holes has hundreds, and a bordered result with few defects.
 //
 // The closed attempt is a full reconstruction: when bordered is kept, its time shows as the
-// stage "closed attempt".
+// stage "closed attempt". The overall progress gives each run half the bar (which is not known
+// in advance): a closed result kept jumps from one half to the end.
 #pragma once
 
 #include <chrono>
@@ -37,12 +38,31 @@ inline std::size_t defects(const Statistics& stats) {
 template <int D, class Run>
 Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
   if (options.kind != Surface_kind::automatic) return run(options);
-  Options closed = options;
-  closed.kind = Surface_kind::closed;
+  // The options of one run, its overall progress mapped onto [from, to] of the caller's.
+  const auto run_options = [&](Surface_kind kind, double from, double to) {
+    Options resolved = options;
+    resolved.kind = kind;
+    if (options.progress) {
+      resolved.progress = [from, to, report = options.progress](const Progress& p) {
+        Progress mapped = p;
+        mapped.overall = from + (to - from) * p.overall;
+        return report(mapped);
+      };
+    }
+    return resolved;
+  };
+  const auto report_done = [&](const char* stage) {
+    if (options.progress && !options.progress(Progress{stage, 1.0, 1.0})) throw Cancelled();
+  };
+  if (!has_bordered_rule(options.method)) {  // one run, the kind moot
+    Reconstruction<D> result = run(run_options(Surface_kind::closed, 0.0, 1.0));
+    result.stats.kind_chosen_automatically = true;
+    return result;
+  }
+  const Options closed = run_options(Surface_kind::closed, 0.0, 0.5);
   const auto started = std::chrono::steady_clock::now();
   Reconstruction<D> closed_result = run(closed);
   closed_result.stats.kind_chosen_automatically = true;
-  if (!has_bordered_rule(options.method)) return closed_result;
 
   const auto choosing = std::chrono::steady_clock::now();
   // Measured where the stages were computed, scaled by a power of two (exact): squared
@@ -60,12 +80,11 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
     const double peak = stats.stages.empty() ? 0.0 : stats.stages.back().peak_memory_mib;
     stats.stages.push_back(Stage_measure{"kind choice", choice_seconds, peak});
     stats.total_seconds += choice_seconds;
+    report_done("kind choice");
     return closed_result;
   }
 
-  Options bordered = options;
-  bordered.kind = Surface_kind::bordered;
-  Reconstruction<D> bordered_result = run(bordered);
+  Reconstruction<D> bordered_result = run(run_options(Surface_kind::bordered, 0.5, 1.0));
   if (defects(bordered_result.stats) >= defects(closed_result.stats) + spanning) {
     return closed_result;
   }
