@@ -123,11 +123,12 @@ TEST(Bordered_surface, TheCapOverAnOpeningIsWhatGoes) {
   EXPECT_GT(robust.stats.boundary_ridges, 50u);
   EXPECT_GT(robust.stats.spanning_facets, 0u);
   EXPECT_EQ(robust.candidates.spanning.size(), robust.stats.spanning_facets);
-  // The candidates were the paper's bordered surface (with the robust labels): the spanning
-  // triangles and the chosen ones share none.
+  // The surface is made of the chosen candidates only: no triangle over the opening stays.
   const auto chosen = testing::unordered(robust.candidates.chosen);
+  const auto surface = testing::unordered(robust.surface);
+  for (const auto& t : surface) EXPECT_EQ(chosen.count(t), 1u);
   for (const auto& t : testing::unordered(robust.candidates.spanning)) {
-    EXPECT_EQ(chosen.count(t), 0u);
+    EXPECT_EQ(surface.count(t), 0u);
   }
 }
 
@@ -167,16 +168,21 @@ TEST(Automatic_kind, ClosedCurvesStayClosedAndOpenOnesOpen) {
   }
 }
 
-// Methods without a bordered rule of their own run once, as closed.
-TEST(Automatic_kind, MethodsWithoutABorderedRuleRunOnce) {
-  Options cocone;
-  cocone.method = Method::cocone;
-  const auto result = reconstruct(shapes::hemisphere(1500), cocone);
-  EXPECT_EQ(result.stats.kind, Surface_kind::closed);
-  EXPECT_TRUE(result.stats.kind_chosen_automatically);
-  for (const auto& stage : result.stats.stages) {
-    EXPECT_NE(stage.name, "closed attempt");
-    EXPECT_NE(stage.name, "kind choice");
+// The other methods take the automatic kind as closed and run once: the co-cone (no bordered
+// rule) and the paper's method (as published, told its kind).
+TEST(Automatic_kind, OnlyTheRobustMethodChooses) {
+  for (Method method : {Method::cocone, Method::paper}) {
+    SCOPED_TRACE(to_string(method));
+    const auto result = reconstruct(shapes::hemisphere(1500), testing::with_method(method));
+    Options closed = testing::with_method(method);
+    closed.kind = Surface_kind::closed;
+    EXPECT_EQ(result.surface, reconstruct(shapes::hemisphere(1500), closed).surface);
+    EXPECT_EQ(result.stats.kind, Surface_kind::closed);
+    EXPECT_FALSE(result.stats.kind_chosen_automatically);
+    for (const auto& stage : result.stats.stages) {
+      EXPECT_NE(stage.name, "closed attempt");
+      EXPECT_NE(stage.name, "kind choice");
+    }
   }
 }
 

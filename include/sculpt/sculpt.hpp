@@ -54,11 +54,11 @@ using Facet = std::array<int, D>;
 // Options
 
 // Closed (the shape bounds a solid), bordered (it ends somewhere: a sheet, a part scanned from
-// one side), or automatic: the methods with a bordered rule of their own (robust, paper)
-// reconstruct closed first and, when the result spans openings, bordered too, and keep the one
-// with fewer defects (core/automatic_kind.hpp). A result's kind is never automatic: its options
-// and statistics say which was kept, and Statistics::kind_chosen_automatically that it was
-// chosen.
+// one side), or automatic: the robust method reconstructs closed first and, when the result
+// spans openings, bordered too, and keeps the one with fewer defects (core/automatic_kind.hpp);
+// the other methods take automatic as closed. A result's kind is never automatic: its options
+// and statistics say which was kept, and Statistics::kind_chosen_automatically that the robust
+// method chose it.
 enum class Surface_kind { closed, bordered, automatic };
 
 // The reconstruction method: siblings over the shared stages 1-3. The names are what the command
@@ -397,8 +397,10 @@ Surface_rule resolved_rule(const Options& options);
 // joins nearest neighbours (bordered curves: joins_neighbours).
 bool inserts_poles(Method method, Surface_kind kind, int dimension);
 bool joins_neighbours(Method method, Surface_kind kind, int dimension);
-// Whether the method reconstructs bordered shapes by a rule of its own (else the kind is moot).
-bool has_bordered_rule(Method method);
+// Whether the automatic kind chooses between closed and bordered for this method: the robust
+// method's. The paper's, as published, is told its kind (automatic is closed); the others have
+// no bordered rule.
+bool chooses_kind(Method method);
 
 // The verdict on a result, from its statistics: a closed 2-manifold (closed curve in 2D), a
 // bordered one (open curves), or what is wrong with it.

@@ -224,7 +224,9 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
     Options options;
     if (!parse_method(job.method, options.method))
       throw Input_error("unknown method " + job.method);
-    options.kind = job.bordered ? Surface_kind::bordered : Options{}.kind;
+    options.kind = job.bordered ? Surface_kind::bordered
+                   : job.closed ? Surface_kind::closed
+                                : Options{}.kind;
     options.keep_triangulations = false;
     options.keep_solid = false;  // as `sculpt reconstruct` without --solid
     Run_description run;
@@ -397,7 +399,7 @@ std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
     const auto* known = shapes::find_example(example);
     if (!known) throw frontend::Usage_error("unknown example '" + example + "'");
     std::vector<std::string> source = {"--example", example};
-    if (known->bordered) source.push_back("--bordered");
+    source.push_back(known->bordered ? "--bordered" : "--closed");  // an example is its own kind
     inputs.emplace_back(example, source);
   }
   if (args.torus_points > 0) {

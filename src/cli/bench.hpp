@@ -12,15 +12,15 @@
 namespace sculpt::cli {
 
 struct Bench_arguments {
-  std::vector<std::string> inputs;    // point files
-  std::vector<std::string> examples;  // built-in example names
+  std::vector<std::string> inputs;           // point files
+  std::vector<std::string> examples;         // built-in example names
   std::vector<std::string> loop_subdivided;  // meshes measured once Loop-subdivided (4x denser)
-  int torus_points = 0;               // also random points on a torus, if > 0
-  int render_triangles = 0;           // also time a headless render of a surface this large
-  bool edits = false;                 // also time the viewer's live 2D edit (200 to 5,000 points)
-  int runs = 1;                       // each measurement this many times, interleaved: the median
-  std::vector<std::string> methods;   // empty: every method
-  bool advancing_front = true;        // also CGAL's Advancing Front (3D)
+  int torus_points = 0;                      // also random points on a torus, if > 0
+  int render_triangles = 0;                  // also time a headless render of a surface this large
+  bool edits = false;                // also time the viewer's live 2D edit (200 to 5,000 points)
+  int runs = 1;                      // each measurement this many times, interleaved: the median
+  std::vector<std::string> methods;  // empty: every method
+  bool advancing_front = true;       // also CGAL's Advancing Front (3D)
   bool bordered = false;
   bool merge_duplicates = false;
   std::string json;  // write the rows as JSON too
@@ -47,7 +47,7 @@ struct Bench_job {
   std::string method;
   std::string input, example;
   int torus_points = 0;
-  bool bordered = false;
+  bool bordered = false, closed = false;  // neither: the kind is chosen (Options{}.kind)
   bool merge_duplicates = false;
 };
 

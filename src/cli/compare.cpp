@@ -214,7 +214,7 @@ class Comparison {
       parse_method(method, parsed);
       Options options;
       options.method = parsed;
-      options.kind = shot.bordered ? Surface_kind::bordered : Surface_kind::closed;
+      options.kind = frontend::kind_of(shot);  // as the timed job: an example's own, else chosen
       const frontend::Any_reconstruction result = frontend::reconstruct_input(input, options);
       const Statistics& stats =
           std::visit([](const auto& r) -> const Statistics& { return r.stats; }, result);

@@ -156,8 +156,8 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
 }
 
 int run_reconstruct(Reconstruct_arguments args) {
-  // An example is reconstructed as its own kind, as in the viewer and the benchmark; a file as
-  // --closed or --bordered say, else of the kind chosen automatically.
+  // An example is reconstructed as its own kind, as in the viewer, render and the benchmark; a
+  // file as --closed or --bordered say, else of the kind chosen automatically.
   const shapes::Example* example = shapes::find_example(args.example);
   if (!args.automatic) {
     args.bordered = !args.closed && (args.bordered || (example && example->bordered));
@@ -212,8 +212,9 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::IsMember(sculpt::method_names()));
   reconstruct->add_flag("--require-manifold", args.require_manifold,
-                        "Exit with code 3 when the result is not a closed (or, with --bordered, "
-                        "bordered) 2-manifold through every sample; the output is still written");
+                        "Exit with code 3 when the result is not a closed (or, bordered, a "
+                        "bordered) 2-manifold through every sample, of the kind kept; the output "
+                        "is still written");
   reconstruct->add_flag("--bordered", args.bordered,
                         "The samples come from a surface (curve) with a border. Without "
                         "--bordered or --closed, an example is reconstructed as its own kind and "
@@ -342,6 +343,7 @@ int main(int argc, char** argv) {
   bench_job_command->add_option("--example", bench_job.example);
   bench_job_command->add_option("--torus", bench_job.torus_points);
   bench_job_command->add_flag("--bordered", bench_job.bordered);
+  bench_job_command->add_flag("--closed", bench_job.closed);
   bench_job_command->add_flag("--merge-duplicates", bench_job.merge_duplicates);
 
   app.footer(sculpt::frontend::exit_codes_help);

@@ -61,9 +61,11 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   render->add_option("--save-camera", shot.save_camera, "Write the camera used as JSON");
   render->add_option("--size", shot.size, "Image size WIDTHxHEIGHT")->capture_default_str();
   render->add_flag("--bordered", shot.bordered,
-                   "Reconstruct a bordered surface (an example is reconstructed as its own kind "
-                   "otherwise)");
-  render->add_flag("--closed", shot.closed, "Reconstruct a bordered example as if it were closed")
+                   "Reconstruct a bordered surface (otherwise an example is reconstructed as its "
+                   "own kind, and a file as its samples show)");
+  render
+      ->add_flag("--closed", shot.closed,
+                 "Reconstruct a closed surface, also from a bordered example")
       ->excludes("--bordered");
   render->add_flag("--merge-duplicates", shot.merge_duplicates,
                    "Drop the file's repeated points instead of refusing it");

@@ -193,8 +193,8 @@ bool parse_kind(const std::string& name, Surface_kind& kind) {
   return false;
 }
 
-bool has_bordered_rule(Method method) {
-  return method == Method::robust || method == Method::paper;
+bool chooses_kind(Method method) {
+  return method == Method::robust;
 }
 
 const char* to_string(Surface_kind kind) {

@@ -81,12 +81,13 @@ double facet_circumradius(const std::vector<Point<D>>& points, const Facet<D>& f
   }
 }
 
+// Whether the facet's circumradius is over `ratio` times the largest spacing of its vertices.
 template <int D>
 bool spans_opening(const std::vector<Point<D>>& samples, const std::vector<double>& spacing,
-                   const Facet<D>& facet) {
+                   const Facet<D>& facet, double ratio = opening_ratio<D>) {
   double local = 0;
   for (int v : facet) local = std::max(local, spacing[v]);
-  return facet_circumradius<D>(samples, facet) > opening_ratio<D> * local;
+  return facet_circumradius<D>(samples, facet) > ratio * local;
 }
 
 // How many of the facets span an opening.

@@ -157,7 +157,8 @@ int main(int argc, char** argv) {
       }
     } else if (!file.empty()) {
       if (bordered || closed) {
-        viewer.set_kind(bordered ? sculpt::Surface_kind::bordered : sculpt::Surface_kind::closed);
+        viewer.set_file_kind(bordered ? sculpt::Surface_kind::bordered
+                                      : sculpt::Surface_kind::closed);
       }
       viewer.set_merge_duplicates(merge_duplicates);
       viewer.open_file(file);

@@ -107,6 +107,7 @@ void Viewer::open_file(const std::string& path) {
   stop_editing();
   Job_request request;
   request.path = path;
+  kind_ = file_kind_;  // a file: as asked on the command line, else chosen from its samples
   std::snprintf(path_field_, sizeof path_field_, "%s", path.c_str());
   start_job(request);
 }
@@ -849,6 +850,8 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
   rebuild_scene();
   // The shown reconstruction's input and options (not those chosen for the next run).
   const Job_request& shown = shown_request_;
+  const Statistics& shown_stats =
+      std::visit([](const auto& r) -> const Statistics& { return r.stats; }, *reconstruction_);
   nlohmann::json shot = {{"stage", scene::stage_id(request_.stage)},
                          {"step", request_.step},
                          {"focus_sample", request_.focus_sample},
@@ -858,8 +861,10 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
                          {"ball_every", request_.ball_every},
                          {"polar_balls", request_.polar_balls},
                          {"neighbourhood", request_.neighbourhood && request_.focus_sample >= 0},
-                         {"bordered", shown.options.kind == Surface_kind::bordered},
-                         {"closed", shown.options.kind == Surface_kind::closed},
+                         // The kind kept (an automatic choice made explicit), so that
+                         // sculpt render draws the same reconstruction.
+                         {"bordered", shown_stats.kind == Surface_kind::bordered},
+                         {"closed", shown_stats.kind == Surface_kind::closed},
                          {"box_factor", shown.options.box_factor},
                          {"alpha", shown.options.alpha},
                          {"rule", to_string(shown.options.rule)},

@@ -38,7 +38,8 @@ class Viewer {
   // Reconstructs the loaded input again with another method ("crust", "paper", ...), keeping
   // the camera; false, with a message, for an unknown method or nothing loaded.
   bool switch_method(const std::string& name);
-  void set_kind(Surface_kind kind) { kind_ = kind; }
+  // The kind files are reconstructed as (--closed, --bordered; else automatic).
+  void set_file_kind(Surface_kind kind) { kind_ = file_kind_ = kind; }
   void set_merge_duplicates(bool merge) { merge_duplicates_ = merge; }
   void set_method(Method method) {
     const auto& names = method_names();
@@ -235,6 +236,7 @@ class Viewer {
 
   // Options for the next run.
   Surface_kind kind_ = Options{}.kind;
+  Surface_kind file_kind_ = Options{}.kind;
   float box_factor_ = static_cast<float>(Options{}.box_factor);
   bool merge_duplicates_ = false;
   float alpha_ = static_cast<float>(Options{}.alpha);

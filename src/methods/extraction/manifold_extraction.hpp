@@ -201,10 +201,11 @@ inline std::vector<Facet<3>> prune_sharp_edges(const std::vector<Point<3>>& poin
   return pruned;
 }
 
-// The pruning above, with rims pruned unless that leaves a sample that had triangles without any.
-// `rims` tells which ran.
+// The pruning above, with rims pruned unless that leaves a sample that had triangles without any
+// (or with rims kept at once, for a surface known to have borders). `rims` tells which ran.
 inline std::vector<Facet<3>> prune_candidates(const std::vector<Point<3>>& points,
                                               std::vector<Facet<3>>& triangles, Rims& rims) {
+  if (rims == Rims::kept) return prune_sharp_edges(points, triangles, Rims::kept);
   const auto covered = [&](const std::vector<Facet<3>>& set) {
     std::vector<char> on(points.size(), 0);
     for (const auto& t : set) {
@@ -390,7 +391,7 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
 // The extraction as a method's last stages: prune the chosen candidates, then walk; the
 // candidates stage and the statistics record both.
 inline void extract_manifold(const std::vector<Point<3>>& samples, Reconstruction<3>& result,
-                             Stage_clock& clock) {
+                             Stage_clock& clock, Rims rims = Rims::pruned) {
   // In a canonical order: CGAL's facet iterator reports a facet from whichever of its two cells
   // has the lower address, so the order the methods find them in (and their orientation) changes
   // from run to run, and the pruning and the walk depend on it where the samples are degenerate
@@ -401,7 +402,6 @@ inline void extract_manifold(const std::vector<Point<3>>& samples, Reconstructio
   result.stats.candidate_facets = chosen.size();
   clock.start("pruning");
   std::vector<Facet<3>> kept = chosen;
-  Rims rims = Rims::pruned;
   result.candidates.pruned = prune_candidates(samples, kept, rims);
   result.candidates.rims_kept = result.stats.rims_kept = rims == Rims::kept;
   result.stats.pruned_facets = result.candidates.pruned.size();

@@ -54,9 +54,7 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
     for (int j = 0; j < 3; ++j) {
       for (int u : edges.on(triangles[t][j], triangles[t][(j + 1) % 3])) {
         if (removed[u]) continue;
-        double local = 0;
-        for (int v : triangles[u]) local = std::max(local, spacing[v]);
-        if (facet_circumradius<3>(samples, triangles[u]) > opening_growth_ratio * local) {
+        if (spans_opening<3>(samples, spacing, triangles[u], opening_growth_ratio)) {
           removed[u] = 1;
           queue.push_back(u);
         }
@@ -67,7 +65,8 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
     (removed[t] ? candidates.spanning : candidates.chosen).push_back(triangles[t]);
   }
   result.stats.spanning_facets = candidates.spanning.size();
-  extract_manifold(samples, result, clock);
+  // Borders are expected: the rims are kept from the start (pruning them would eat the sheet).
+  extract_manifold(samples, result, clock, Rims::kept);
 }
 
 }  // namespace sculpt
