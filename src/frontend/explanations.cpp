@@ -140,13 +140,13 @@ std::string explanation(Method method, Surface_kind kind, int dimension, scene::
              "samples' cells reach the box). They lie "
              "outside any surface of the samples, so they are outer for sure, and the labelling "
              "starts from them" +
-             std::string(kind == Surface_kind::bordered && method == Method::paper
+             std::string(kind == Surface_kind::bordered && inserts_poles(method, kind, dimension)
                              ? "; bordered, only one of them does."
                              : ".");
     case Stage::propagation:
       return labelling(method, kind);
     case Stage::outer_concave:
-      return method == Method::paper && kind == Surface_kind::bordered
+      return kind == Surface_kind::bordered && inserts_poles(method, kind, dimension)
                  ? "The poles to insert, bordered: every labelled pole that is not convex (UP). "
                    "Inserted among the samples, they break the Delaunay cells on both sides of "
                    "the sheet."
@@ -154,6 +154,11 @@ std::string explanation(Method method, Surface_kind kind, int dimension, scene::
                    "concavities. The cells whose circumball holds one are outside the shape; "
                    "inserting them breaks those cells (sec. 3.2).";
     case Stage::sculpted_delaunay:
+      if (kind == Surface_kind::bordered && inserts_poles(method, kind, dimension)) {
+        return "DT(S + UP): the samples triangulated with every labelled pole that is not "
+               "convex. The facets between samples with an outer pole for an apex are the "
+               "candidates of the surface.";
+      }
       return "DT(S + OUP): the samples triangulated with the outer concave poles. The cells "
              "whose vertices are all samples are the solid; the concavities are now cut off. "
              "The command line reads the same solid off the first triangulation by circumball "
