@@ -20,16 +20,10 @@ Options of_kind(Surface_kind kind) {
   return options;
 }
 
-// The vertices of edges on one triangle only.
+// The vertices of the border's edges.
 std::set<int> border_vertices(const std::vector<Facet<3>>& triangles) {
-  std::map<std::pair<int, int>, int> count;
-  for (const auto& t : triangles) {
-    for (int j = 0; j < 3; ++j) ++count[std::minmax(t[j], t[(j + 1) % 3])];
-  }
   std::set<int> vertices;
-  for (const auto& [edge, times] : count) {
-    if (times == 1) vertices.insert({edge.first, edge.second});
-  }
+  for (const auto& [a, b] : testing::border_edges(triangles)) vertices.insert({a, b});
   return vertices;
 }
 

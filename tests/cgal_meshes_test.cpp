@@ -102,18 +102,6 @@ TEST(Cgal_meshes, UndersampledFemurHasFiveTimesFewerDefects) {
 // slot left off); holes.off (a shell with 7) with its outer border exactly and two of its six
 // holes: the four others span 2 to 2.7 spacings, under the rule's 3 (spanning_openings.hpp),
 // and stay closed.
-std::set<std::pair<int, int>> border_edges(const std::vector<Facet<3>>& triangles) {
-  std::map<std::pair<int, int>, int> count;
-  for (const auto& t : triangles) {
-    for (int j = 0; j < 3; ++j) ++count[std::minmax(t[j], t[(j + 1) % 3])];
-  }
-  std::set<std::pair<int, int>> edges;
-  for (const auto& [edge, times] : count) {
-    if (times == 1) edges.insert(edge);
-  }
-  return edges;
-}
-
 TEST(Cgal_meshes, ShellsWithHolesKeepTheirBorders) {
   const auto shark = reconstruct_mesh("mech-holes-shark.off", Method::robust);
   EXPECT_EQ(shark.own.boundary_loops, 4u);
@@ -131,8 +119,8 @@ TEST(Cgal_meshes, ShellsWithHolesKeepTheirBorders) {
   // The mesh's own border edges on ours...
   const io::Point_set mesh =
       io::read_points(std::string(SCULPT_TEST_DATA) + "/data/meshes/holes.off");
-  const auto own = border_edges({mesh.triangles.begin(), mesh.triangles.end()});
-  const auto ours = border_edges(holes.result.surface);
+  const auto own = testing::border_edges({mesh.triangles.begin(), mesh.triangles.end()});
+  const auto ours = testing::border_edges(holes.result.surface);
   std::size_t shared = 0;
   for (const auto& edge : own) shared += ours.count(edge);
   // ... measured: 187 of its 304 border edges are ours, the outer border's 136 among them.

@@ -56,6 +56,19 @@ inline std::set<std::array<int, 3>> unordered(const std::vector<Facet<3>>& trian
   return result;
 }
 
+// The edges on one triangle only: a surface's border.
+inline std::set<std::pair<int, int>> border_edges(const std::vector<Facet<3>>& triangles) {
+  std::map<std::pair<int, int>, int> count;
+  for (const auto& t : triangles) {
+    for (int j = 0; j < 3; ++j) ++count[std::minmax(t[j], t[(j + 1) % 3])];
+  }
+  std::set<std::pair<int, int>> edges;
+  for (const auto& [edge, times] : count) {
+    if (times == 1) edges.insert(edge);
+  }
+  return edges;
+}
+
 inline std::set<std::pair<int, int>> undirected(const std::vector<Facet<2>>& edges) {
   std::set<std::pair<int, int>> result;
   for (const auto& e : edges) result.insert(std::minmax(e[0], e[1]));

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cassert>
 #include <cmath>
 #include <numeric>
 #include <sculpt/sculpt.hpp>
@@ -67,9 +68,6 @@ class Point_tree {
     return any_within(x, r2, [](const Point<D>&) { return true; });
   }
 
-  // The squared distance from x to its k-th nearest point (k >= 1; a point at x itself counts),
-  // or infinity when there are fewer than k points. Nearer children are searched first, and a
-  // node no nearer than the k-th distance found so far is skipped.
   // For every point, in the order given, the squared distance to its k-th nearest point (itself
   // the first).
   std::vector<double> kth_nearest_distances2(int k) const {
@@ -80,6 +78,9 @@ class Point_tree {
     return result;
   }
 
+  // The squared distance from x to its k-th nearest point (1 <= k <= most_neighbours; a point
+  // at x itself counts), or infinity when there are fewer than k points. Nearer children are
+  // searched first, and a node no nearer than the k-th distance found so far is skipped.
   static constexpr int most_neighbours = 15;
   double kth_nearest_distance2(const Point<D>& x, int k) const {
     // The k smallest squared distances so far, as a max-heap (no allocation: k is small).
@@ -94,7 +95,8 @@ class Point_tree {
       }
       return gap2;
     };
-    if (nodes_.empty() || k < 1 || k > most_neighbours) return INFINITY;
+    assert(k >= 1 && k <= most_neighbours);
+    if (nodes_.empty()) return INFINITY;
     int stack[64];
     int top = 0;
     stack[top++] = 0;
