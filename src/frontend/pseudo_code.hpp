@@ -129,7 +129,7 @@ inline Pseudo_code robust_bordered_pseudo_code(Pseudo_code code) {
   const int candidates = code.lines_of_stage.at(Stage::surface).front();
   code.lines[candidates] = "cands <- facets of S with an outer apex";
   code.lines.insert(code.lines.end(), {
-                                          "# R: circumradius; h: 6th-neighbour distance",
+                                          "# R: circumradius, h: 6th-neighbour gap",
                                           "drop f: R(f) > 3 h, next to those > 2 h",
                                           "surface <- prune, walk the rest",
                                       });
