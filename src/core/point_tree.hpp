@@ -41,24 +41,14 @@ class Point_tree {
     stack[top++] = 0;
     while (top > 0) {
       const Node& node = nodes_[stack[--top]];
-      double gap2 = 0;
-      for (int k = 0; k < D; ++k) {
-        const double gap = std::max({node.lo[k] - x[k], 0.0, x[k] - node.hi[k]});
-        gap2 += gap * gap;
-      }
-      if (gap2 >= r2) continue;
+      if (gap2(node, x) >= r2) continue;
       if (node.left >= 0) {
         stack[top++] = node.right;
         stack[top++] = node.left;
         continue;
       }
       for (int i = node.begin; i < node.end; ++i) {
-        double d2 = 0;
-        for (int k = 0; k < D; ++k) {
-          const double d = x[k] - points_[i][k];
-          d2 += d * d;
-        }
-        if (d2 < r2 && accept(points_[i])) return true;
+        if (distance2(x, points_[i]) < r2 && accept(points_[i])) return true;
       }
     }
     return false;
@@ -69,59 +59,24 @@ class Point_tree {
   }
 
   // For every point, in the order given, the squared distance to its k-th nearest point (itself
-  // the first).
+  // the first; 1 <= k <= most_neighbours), or infinity when there are fewer than k points. A
+  // point's own leaf is searched first: its neighbours are mostly there, so the bound they give
+  // prunes the descent from the root, which then skips that leaf.
+  static constexpr int most_neighbours = 15;
   std::vector<double> kth_nearest_distances2(int k) const {
+    assert(k >= 1 && k <= most_neighbours);
     std::vector<double> result(points_.size());
-    for (std::size_t i = 0; i < points_.size(); ++i) {
-      result[input_index_[i]] = kth_nearest_distance2(points_[i], k);
+    for (int leaf = 0; leaf < static_cast<int>(nodes_.size()); ++leaf) {
+      const Node& node = nodes_[leaf];
+      if (node.left >= 0) continue;
+      for (int i = node.begin; i < node.end; ++i) {
+        Nearest nearest(k);
+        for (int j = node.begin; j < node.end; ++j) nearest.offer(distance2(points_[i], points_[j]));
+        search_nearest(points_[i], nearest, leaf);
+        result[input_index_[i]] = nearest.bound();
+      }
     }
     return result;
-  }
-
-  // The squared distance from x to its k-th nearest point (1 <= k <= most_neighbours; a point
-  // at x itself counts), or infinity when there are fewer than k points. Nearer children are
-  // searched first, and a node no nearer than the k-th distance found so far is skipped.
-  static constexpr int most_neighbours = 15;
-  double kth_nearest_distance2(const Point<D>& x, int k) const {
-    // The k smallest squared distances so far, as a max-heap (no allocation: k is small).
-    std::array<double, most_neighbours + 1> nearest;
-    int found = 0;
-    const auto bound = [&] { return found < k ? INFINITY : nearest[0]; };
-    const auto gap2_to = [&](const Node& node) {
-      double gap2 = 0;
-      for (int d = 0; d < D; ++d) {
-        const double gap = std::max({node.lo[d] - x[d], 0.0, x[d] - node.hi[d]});
-        gap2 += gap * gap;
-      }
-      return gap2;
-    };
-    assert(k >= 1 && k <= most_neighbours);
-    if (nodes_.empty()) return INFINITY;
-    int stack[64];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-      const Node& node = nodes_[stack[--top]];
-      if (gap2_to(node) >= bound()) continue;
-      if (node.left >= 0) {
-        const bool left_first = gap2_to(nodes_[node.left]) <= gap2_to(nodes_[node.right]);
-        stack[top++] = left_first ? node.right : node.left;
-        stack[top++] = left_first ? node.left : node.right;
-        continue;
-      }
-      for (int i = node.begin; i < node.end; ++i) {
-        double d2 = 0;
-        for (int d = 0; d < D; ++d) {
-          const double delta = x[d] - points_[i][d];
-          d2 += delta * delta;
-        }
-        if (d2 >= bound()) continue;
-        nearest[found++] = d2;
-        std::push_heap(nearest.begin(), nearest.begin() + found);
-        if (found > k) std::pop_heap(nearest.begin(), nearest.begin() + found--);
-      }
-    }
-    return bound();
   }
 
  private:
@@ -132,6 +87,66 @@ class Point_tree {
     int begin, end;
     int left = -1, right = -1;
   };
+
+  static double distance2(const Point<D>& a, const Point<D>& b) {
+    double d2 = 0;
+    for (int k = 0; k < D; ++k) d2 += (a[k] - b[k]) * (a[k] - b[k]);
+    return d2;
+  }
+
+  // The squared distance from x to the node's bounding box (0 inside it).
+  static double gap2(const Node& node, const Point<D>& x) {
+    double g2 = 0;
+    for (int k = 0; k < D; ++k) {
+      const double gap = std::max({node.lo[k] - x[k], 0.0, x[k] - node.hi[k]});
+      g2 += gap * gap;
+    }
+    return g2;
+  }
+
+  // The k smallest squared distances offered, as a max-heap (no allocation: k is small).
+  class Nearest {
+   public:
+    explicit Nearest(int k) : k_(k) {}
+    double bound() const { return found_ < k_ ? INFINITY : heap_[0]; }
+    void offer(double d2) {
+      if (d2 >= bound()) return;
+      heap_[found_++] = d2;
+      std::push_heap(heap_.begin(), heap_.begin() + found_);
+      if (found_ > k_) std::pop_heap(heap_.begin(), heap_.begin() + found_--);
+    }
+
+   private:
+    std::array<double, most_neighbours + 1> heap_;
+    int k_;
+    int found_ = 0;
+  };
+
+  // Offers the points of every leaf but `skip` that could be nearer to x than the bound: the
+  // nearer child first, a node no nearer than the bound skipped.
+  void search_nearest(const Point<D>& x, Nearest& nearest, int skip) const {
+    struct Visit {
+      int node;
+      double gap2;
+    };
+    Visit stack[64];
+    int top = 0;
+    stack[top++] = {0, gap2(nodes_[0], x)};
+    while (top > 0) {
+      const Visit visit = stack[--top];
+      if (visit.gap2 >= nearest.bound() || visit.node == skip) continue;
+      const Node& node = nodes_[visit.node];
+      if (node.left >= 0) {
+        const Visit left{node.left, gap2(nodes_[node.left], x)};
+        const Visit right{node.right, gap2(nodes_[node.right], x)};
+        const bool left_first = left.gap2 <= right.gap2;
+        stack[top++] = left_first ? right : left;
+        stack[top++] = left_first ? left : right;
+        continue;
+      }
+      for (int i = node.begin; i < node.end; ++i) nearest.offer(distance2(x, points_[i]));
+    }
+  }
 
   // Depth is at most log2(n / leaf_size) + 1 < 64: medians halve every range.
   int build(const Point<D>* points, std::vector<int>& order, int begin, int end) {

@@ -144,7 +144,7 @@ inline Pseudo_code robust_pseudo_code() {
   add_confidence_labelling_lines(code);
   const int carving = int(code.lines.size());
   code.lines.insert(code.lines.end(), {
-                                          "outer(c) <- OUP in ball(c) or power(c) outer",
+                                          "outer(c) <- power(c) outer or OUP in ball(c)",
                                           "carve outer c from outside, if manifold",
                                           "open cavities, handles; expose samples",
                                           "solid <- cells left",

@@ -9,6 +9,7 @@
 //     The candidates are the poles of the cell's vertices, the balls that touch the cell: on
 //     CGAL's knot1, fandisk, hand, femur, elephant, refined_elephant, bunny00 and armadillo this
 //     gave the same surfaces as the nearest-power query over all poles, at a tenth of the cost.
+// A cell both rules find is recorded as found by the power carve, the test asked first (below).
 // The cells themselves are not changed here; manifold_carving.hpp removes them.
 #pragma once
 
@@ -110,10 +111,13 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
     }
     if (!all_samples) continue;
     const Point<D> x = Traits::from_cgal(Traits::circumcenter(triangulation, cell));
-    if (outer_poles.holds_point(cell, x)) {
-      judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_pole_inside);
-    } else if (polar_balls.power_cell_label(x, samples) == Label::outer) {
+    // The power test first: it reads eight balls, where the circumball query searches a tree,
+    // and it finds nearly every outer cell (bunny00: 124,493 of 124,493; femur: 11,296 of
+    // 12,178). The query is left for the cells it calls inner, about half.
+    if (polar_balls.power_cell_label(x, samples) == Label::outer) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_power_cell);
+    } else if (outer_poles.holds_point(cell, x)) {
+      judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_pole_inside);
     }
   }
   return judgement;
