@@ -1,14 +1,14 @@
 // The k-d tree's answers against brute force: the k-th nearest distances that measure the
 // samples' spacing (spanning_openings.hpp) and the "any point within" query of the circumball
 // tests (circumball_query.hpp).
+#include "core/point_tree.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
-
-#include "core/point_tree.hpp"
 
 namespace sculpt {
 namespace {

@@ -71,7 +71,8 @@ class Point_tree {
       if (node.left >= 0) continue;
       for (int i = node.begin; i < node.end; ++i) {
         Nearest nearest(k);
-        for (int j = node.begin; j < node.end; ++j) nearest.offer(distance2(points_[i], points_[j]));
+        for (int j = node.begin; j < node.end; ++j)
+          nearest.offer(distance2(points_[i], points_[j]));
         search_nearest(points_[i], nearest, leaf);
         result[input_index_[i]] = nearest.bound();
       }
