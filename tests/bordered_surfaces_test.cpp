@@ -8,6 +8,7 @@
 #include <set>
 #include <string>
 
+#include "core/spanning_openings.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -123,6 +124,30 @@ TEST(Bordered_surface, TheCapOverAnOpeningIsWhatGoes) {
   for (const auto& t : surface) EXPECT_EQ(chosen.count(t), 1u);
   for (const auto& t : testing::unordered(robust.candidates.spanning)) {
     EXPECT_EQ(surface.count(t), 0u);
+  }
+}
+
+// count_spanning measures only the spacings that can matter; it counts what measuring them all
+// counts, on closed results with openings capped (many spanning facets) and without (none).
+template <int D>
+void expect_spanning_count_of_all_spacings(const std::vector<Point<D>>& samples) {
+  const auto closed = reconstruct(samples, of_kind(Surface_kind::closed));
+  const std::vector<Point<D>> sites(closed.sites.begin(),
+                                    closed.sites.begin() + closed.sample_count());
+  const std::vector<double> spacing = sample_spacings<D>(sites);
+  std::size_t expected = 0;
+  for (const auto& facet : closed.surface) expected += spans_opening<D>(sites, spacing, facet);
+  EXPECT_EQ(count_spanning<D>(sites, closed.surface), expected);
+}
+
+TEST(Automatic_kind, CountingSpanningFacetsSkipsOnlySpacingsThatCannotMatter) {
+  for (const char* name : {"hemisphere", "holey-sphere", "open-cylinder", "torus", "bumpy"}) {
+    SCOPED_TRACE(name);
+    expect_spanning_count_of_all_spacings<3>(shapes::example_points_3(name));
+  }
+  for (const char* name : {"arc", "spiral", "circle"}) {
+    SCOPED_TRACE(name);
+    expect_spanning_count_of_all_spacings<2>(shapes::example_points_2(name));
   }
 }
 

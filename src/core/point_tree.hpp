@@ -4,8 +4,9 @@
 // exact in-sphere predicate. The search stops at the first point accepted, and skips a node
 // whose bounding box lies at distance r or more. How far is each point from its k-th nearest?
 // The test for facets spanning an opening (spanning_openings.hpp) asks it of the samples, for
-// their spacing. Points are stored in the tree's order, so a leaf's points are contiguous in
-// memory, and neighbouring queries run one after the other.
+// their spacing, or only whether there are k points within a distance. Points are stored in the
+// tree's order, so a leaf's points are contiguous in memory, and neighbouring queries run one after
+// the other.
 #pragma once
 
 #include <algorithm>
@@ -56,6 +57,23 @@ class Point_tree {
 
   bool any_within(const Point<D>& x, double r2) const {
     return any_within(x, r2, [](const Point<D>&) { return true; });
+  }
+
+  // How many points lie at squared distance below r2 from x, counting up to `enough` (where the
+  // search stops).
+  int count_within(const Point<D>& x, double r2, int enough) const {
+    int count = 0;
+    any_within(x, r2, [&](const Point<D>&) { return ++count >= enough; });
+    return count;
+  }
+
+  // The squared distance from x to its k-th nearest point (a point at x counts; 1 <= k <=
+  // most_neighbours), or infinity when there are fewer than k points.
+  double kth_nearest_distance2(const Point<D>& x, int k) const {
+    assert(k >= 1 && k <= most_neighbours);
+    Nearest nearest(k);
+    if (!nodes_.empty()) search_nearest(x, nearest, -1);
+    return nearest.bound();
   }
 
   // For every point, in the order given, the squared distance to its k-th nearest point (itself

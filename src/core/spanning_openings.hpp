@@ -90,12 +90,30 @@ bool spans_opening(const std::vector<Point<D>>& samples, const std::vector<doubl
   return facet_circumradius<D>(samples, facet) > ratio * local;
 }
 
-// How many of the facets span an opening.
+// How many of the facets span an opening. Most samples' spacings need not be measured: a sample
+// whose spacing is at least 1/ρ of the widest facet around it makes none of its facets span one,
+// and telling that only needs to know whether spacing_neighbour samples lie closer (a search
+// that stops when it has found them, in a ball smaller than the spacing on a closed surface).
+// The others' spacings are measured, and their facets tested as spans_opening does.
 template <int D>
 std::size_t count_spanning(const std::vector<Point<D>>& samples,
                            const std::vector<Facet<D>>& facets) {
   if (facets.empty()) return 0;
-  const std::vector<double> spacing = sample_spacings<D>(samples);
+  std::vector<double> widest(samples.size(), 0.0);  // the largest facet circumradius at a sample
+  for (const auto& facet : facets) {
+    const double radius = facet_circumradius<D>(samples, facet);
+    for (int v : facet) widest[v] = std::max(widest[v], radius);
+  }
+  const Point_tree<D> tree(samples.data(), samples.data() + samples.size());
+  constexpr int counted = spacing_neighbour<D> + 1;       // a sample is its own nearest point
+  std::vector<double> spacing(samples.size(), INFINITY);  // infinite: not measured, not needed
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    // Widened by a relative 1e-9 so that rounding cannot skip a sample spans_opening counts.
+    const double reach = widest[s] / opening_ratio<D> * (1 + 1e-9);
+    if (widest[s] > 0 && tree.count_within(samples[s], reach * reach, counted) >= counted) {
+      spacing[s] = std::sqrt(tree.kth_nearest_distance2(samples[s], counted));
+    }
+  }
   return static_cast<std::size_t>(std::count_if(facets.begin(), facets.end(), [&](const auto& f) {
     return spans_opening<D>(samples, spacing, f);
   }));
