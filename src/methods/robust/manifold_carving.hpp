@@ -418,47 +418,60 @@ class Manifold_carving {
   }
 
   // Whether removing `group` (already set outside) cut a small piece off the solid: a collapse
-  // never disconnects, a group removal can. From each solid neighbour of the group a search
-  // through the solid either reaches every other solid neighbour (nothing was cut off), or grows
-  // past small_piece cells (whatever was cut off is large: a real part), or stops short: a
-  // bubble, refused.
+  // never disconnects, a group removal can. From a solid neighbour of the group a search through
+  // the solid either grows past small_piece cells (whatever it is in is large: a real part), or
+  // stops short, a piece of its own: a bubble when some other neighbour lies outside it (refused),
+  // else the only piece, which holds every neighbour (nothing was cut off). A neighbour inside a
+  // large piece found before is in that piece, and a search reaching one is as large.
   bool cuts_off_small_piece(const std::vector<Cell_handle>& group) {
     static constexpr std::size_t small_piece = 256;
+    enum : std::uint8_t { unreached = 0, in_this_search = 1, in_large_piece = 2 };
     std::vector<Cell_handle> neighbours;
     for (Cell_handle cell : group) {
       for (int i = 0; i <= D; ++i) {
         if (!is_outside(cell->neighbor(i))) neighbours.push_back(cell->neighbor(i));
       }
     }
-    if (reached_.size() != outside_.size()) reached_.assign(outside_.size(), 0);
-    const auto forget = [&] {  // the marks of the last search: only its cells carry them
-      for (Cell_handle cell : piece_) reached_[cell->info()] = 0;
-      piece_.clear();
-    };
-    for (Cell_handle from : neighbours) {
-      forget();
+    if (reached_.size() != outside_.size()) reached_.assign(outside_.size(), unreached);
+    large_pieces_.clear();
+    const auto search_small_piece = [&](Cell_handle from) {  // false: from is in a large piece
       piece_.assign(1, from);
-      reached_[from->info()] = 1;
-      bool large = false;
-      for (std::size_t next = 0; next < piece_.size() && !large; ++next) {
-        large = piece_.size() >= small_piece;
-        for (int i = 0; i <= D && !large; ++i) {
+      reached_[from->info()] = in_this_search;
+      for (std::size_t next = 0; next < piece_.size(); ++next) {
+        if (piece_.size() >= small_piece) return false;
+        for (int i = 0; i <= D; ++i) {
           const Cell_handle neighbour = piece_[next]->neighbor(i);
-          if (is_outside(neighbour) || reached_[neighbour->info()]) continue;
-          reached_[neighbour->info()] = 1;
+          if (is_outside(neighbour)) continue;
+          const std::uint8_t mark = reached_[neighbour->info()];
+          if (mark == in_large_piece) return false;
+          if (mark == in_this_search) continue;
+          reached_[neighbour->info()] = in_this_search;
           piece_.push_back(neighbour);
         }
       }
-      if (large) continue;
-      for (Cell_handle other : neighbours) {
-        if (!reached_[other->info()]) {
-          forget();
-          return true;  // `from` is in a small piece alone
-        }
+      return true;
+    };
+    bool cut = false, decided = false;
+    for (Cell_handle from : neighbours) {
+      if (reached_[from->info()] == in_large_piece) continue;
+      if (!search_small_piece(from)) {
+        for (Cell_handle cell : piece_) reached_[cell->info()] = in_large_piece;
+        large_pieces_.insert(large_pieces_.end(), piece_.begin(), piece_.end());
+        continue;
       }
+      cut = std::any_of(neighbours.begin(), neighbours.end(), [&](Cell_handle other) {
+        return reached_[other->info()] != in_this_search;
+      });
+      decided = true;
+      break;
     }
-    forget();
-    return false;
+    // Only the cells searched carry marks: unmark them.
+    if (decided) {
+      for (Cell_handle cell : piece_) reached_[cell->info()] = unreached;
+    }
+    for (Cell_handle cell : large_pieces_) reached_[cell->info()] = unreached;
+    piece_.clear();
+    return cut;
   }
 
   bool try_remove_group(const std::vector<Cell_handle>& group) {
@@ -541,8 +554,8 @@ class Manifold_carving {
   std::vector<int> solid_cells_at_;    // per sample: incident cells still in the solid
   std::vector<int> outside_cells_at_;  // per sample: incident cells outside
   std::priority_queue<Entry> queue_;
-  std::vector<Cell_handle> star_, piece_;
-  std::vector<std::uint8_t> reached_;  // per cell: reached by the search under way (piece_)
+  std::vector<Cell_handle> star_, piece_, large_pieces_;
+  std::vector<std::uint8_t> reached_;  // per cell: reached by a search of cuts_off_small_piece
   std::vector<std::array<int, 2>> link_;
   std::vector<std::pair<int, int>> link_ends_;
   std::vector<Cell_handle> outer_left_;  // judged outer and in the solid after the first carve
