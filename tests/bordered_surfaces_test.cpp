@@ -65,6 +65,17 @@ const std::vector<Bordered_shape>& bordered_shapes() {
   return shapes;
 }
 
+// The automatic kind keeps `kind` and gives exactly what that kind gives when asked for.
+template <int D>
+Reconstruction<D> expect_automatic_keeps(const std::vector<Point<D>>& samples, Surface_kind kind) {
+  const auto asked = reconstruct(samples, of_kind(kind));
+  auto automatic = reconstruct(samples);
+  EXPECT_EQ(automatic.stats.kind, kind);
+  EXPECT_TRUE(automatic.stats.kind_chosen_automatically);
+  EXPECT_EQ(automatic.surface, asked.surface);
+  return automatic;
+}
+
 class Bordered_surface : public ::testing::TestWithParam<Bordered_shape> {};
 
 TEST_P(Bordered_surface, EveryBorderIsFoundWhereTheSamplesEnd) {
@@ -87,14 +98,10 @@ TEST_P(Bordered_surface, EveryBorderIsFoundWhereTheSamplesEnd) {
 
 // The automatic kind finds the same border.
 TEST_P(Bordered_surface, TheAutomaticKindKeepsTheBorders) {
-  const auto samples = shapes::example_points_3(GetParam().example);
-  const auto bordered = reconstruct(samples, of_kind(Surface_kind::bordered));
-  const auto automatic = reconstruct(samples);
-  EXPECT_EQ(automatic.stats.kind, Surface_kind::bordered);
+  const auto automatic = expect_automatic_keeps<3>(shapes::example_points_3(GetParam().example),
+                                                   Surface_kind::bordered);
   EXPECT_EQ(automatic.options.kind, Surface_kind::bordered);
-  EXPECT_TRUE(automatic.stats.kind_chosen_automatically);
   EXPECT_GT(automatic.stats.closed_spanning_facets, 0u);
-  EXPECT_EQ(automatic.surface, bordered.surface);
   ASSERT_FALSE(automatic.stats.stages.empty());
   EXPECT_EQ(automatic.stats.stages.front().name, "closed attempt");
 }
@@ -155,13 +162,9 @@ TEST(Automatic_kind, CountingSpanningFacetsSkipsOnlySpacingsThatCannotMatter) {
 TEST(Automatic_kind, ClosedSurfacesStayClosed) {
   for (const char* name : {"sphere", "torus", "bumpy", "torso", "bumpy-nonuniform"}) {
     SCOPED_TRACE(name);
-    const auto samples = shapes::example_points_3(name);
-    const auto closed = reconstruct(samples, of_kind(Surface_kind::closed));
-    const auto automatic = reconstruct(samples);
-    EXPECT_EQ(automatic.stats.kind, Surface_kind::closed);
-    EXPECT_TRUE(automatic.stats.kind_chosen_automatically);
+    const auto automatic =
+        expect_automatic_keeps<3>(shapes::example_points_3(name), Surface_kind::closed);
     EXPECT_EQ(automatic.stats.closed_spanning_facets, 0u);
-    EXPECT_EQ(automatic.surface, closed.surface);
     EXPECT_EQ(automatic.stats.stages.back().name, "kind choice");
   }
 }
@@ -169,19 +172,12 @@ TEST(Automatic_kind, ClosedSurfacesStayClosed) {
 TEST(Automatic_kind, ClosedCurvesStayClosedAndOpenOnesOpen) {
   for (const char* name : {"circle", "star", "blob", "nested", "nonuniform"}) {
     SCOPED_TRACE(name);
-    const auto samples = shapes::example_points_2(name);
-    const auto closed = reconstruct(samples, of_kind(Surface_kind::closed));
-    const auto automatic = reconstruct(samples);
-    EXPECT_EQ(automatic.stats.kind, Surface_kind::closed);
-    EXPECT_EQ(automatic.surface, closed.surface);
+    expect_automatic_keeps<2>(shapes::example_points_2(name), Surface_kind::closed);
   }
   for (const char* name : {"arc", "wavy-arc", "spiral", "strokes"}) {
     SCOPED_TRACE(name);
-    const auto samples = shapes::example_points_2(name);
-    const auto bordered = reconstruct(samples, of_kind(Surface_kind::bordered));
-    const auto automatic = reconstruct(samples);
-    EXPECT_EQ(automatic.stats.kind, Surface_kind::bordered);
-    EXPECT_EQ(automatic.surface, bordered.surface);
+    const auto automatic =
+        expect_automatic_keeps<2>(shapes::example_points_2(name), Surface_kind::bordered);
     EXPECT_EQ(automatic.stats.non_manifold_ridges, 0u) << "no branch point";
     EXPECT_EQ(automatic.stats.unused_samples, 0u);
   }

@@ -16,6 +16,7 @@
 
 #include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
+#include "frontend/shot.hpp"
 #include "io/atomic_file.hpp"
 #include "io/writers.hpp"
 #include "render/headless.hpp"
@@ -224,15 +225,13 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
     Options options;
     if (!parse_method(job.method, options.method))
       throw Input_error("unknown method " + job.method);
-    options.kind = job.bordered ? Surface_kind::bordered
-                   : job.closed ? Surface_kind::closed
-                                : Options{}.kind;
+    options.kind = frontend::input_kind(shapes::find_example(job.example), job.bordered,
+                                        job.closed);  // an example is its own kind
     options.keep_triangulations = false;
     options.keep_solid = false;  // as `sculpt reconstruct` without --solid
     Run_description run;
     run.input = input.description;
     const auto result = reconstruct(points, options);
-    run.kind = to_string(result.stats.kind);
     run.rule = surface_rule_name(result.options, D);
     out = report_json(result.stats, run);
     if (result.interpolates()) add_reproduced(result.surface);  // else: vertices of its own
@@ -396,11 +395,9 @@ std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
     inputs.emplace_back(path.substr(path.find_last_of('/') + 1), source);
   }
   for (const auto& example : args.examples) {
-    const auto* known = shapes::find_example(example);
-    if (!known) throw frontend::Usage_error("unknown example '" + example + "'");
-    std::vector<std::string> source = {"--example", example};
-    source.push_back(known->bordered ? "--bordered" : "--closed");  // an example is its own kind
-    inputs.emplace_back(example, source);
+    if (!shapes::find_example(example))
+      throw frontend::Usage_error("unknown example '" + example + "'");
+    inputs.push_back({example, {"--example", example}});
   }
   if (args.torus_points > 0) {
     inputs.emplace_back(fmt::format("torus {}", args.torus_points),

@@ -104,12 +104,10 @@ void check_output_formats(const Reconstruct_arguments& args, int dimension) {
 
 template <int D>
 int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruct_arguments& args,
-                          Run_description run) {
+                          Surface_kind kind, Run_description run) {
   Options options;
   parse_method(args.method, options.method);
-  options.kind = args.bordered ? Surface_kind::bordered
-                 : args.closed ? Surface_kind::closed
-                               : Options{}.kind;
+  options.kind = kind;
   parse_rule(args.rule, options.rule);
   options.box_factor = args.box_factor;
   options.alpha = args.alpha;
@@ -121,7 +119,6 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   const Reconstruction<D> result = reconstruct(samples, options);
   clear_status();
   run.rule = surface_rule_name(result.options, D);
-  run.kind = to_string(result.stats.kind);
 
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();
@@ -155,14 +152,13 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
                                                     : frontend::exit_defective_result;
 }
 
-int run_reconstruct(Reconstruct_arguments args) {
+int run_reconstruct(const Reconstruct_arguments& args) {
   // An example is reconstructed as its own kind, as in the viewer, render and the benchmark; a
   // file as --closed or --bordered say, else of the kind chosen automatically.
-  const shapes::Example* example = shapes::find_example(args.example);
-  if (!args.automatic) {
-    args.bordered = !args.closed && (args.bordered || (example && example->bordered));
-    args.closed = args.closed || (example && !example->bordered);
-  }
+  const Surface_kind kind =
+      args.automatic
+          ? Surface_kind::automatic
+          : frontend::input_kind(shapes::find_example(args.example), args.bordered, args.closed);
   const frontend::Input input =
       frontend::load_input(args.input, args.example, args.dimension, args.merge_duplicates);
   check_output_formats(args, input.dimension());
@@ -174,7 +170,7 @@ int run_reconstruct(Reconstruct_arguments args) {
       [&](const auto& points) {
         constexpr int dimension =
             std::tuple_size_v<typename std::decay_t<decltype(points)>::value_type>;
-        return reconstruct_and_write<dimension>(points, args, run);
+        return reconstruct_and_write<dimension>(points, args, kind, run);
       },
       input.points);
 }

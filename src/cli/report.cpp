@@ -9,7 +9,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   const bool paper = stats.method == Method::paper;
   const bool inserted = inserts_poles(stats.method, stats.kind, stats.dimension);
   out << fmt::format("sculpt {} ({}D, {}, method {}, {}box factor {})\n", run.input,
-                     stats.dimension, run.kind, to_string(stats.method),
+                     stats.dimension, to_string(stats.kind), to_string(stats.method),
                      inserted || joins_neighbours(stats.method, stats.kind, stats.dimension)
                          ? "rule " + run.rule + ", "
                          : "",
@@ -45,7 +45,8 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   }
   row("cells of DT(S+BBV)", stats.delaunay_cells);
   if (inserted) {
-    row(run.kind == "closed" ? "inserted poles (m - 2^D)" : "inserted poles (l - 2^D)",
+    row(stats.kind == Surface_kind::closed ? "inserted poles (m - 2^D)"
+                                           : "inserted poles (l - 2^D)",
         stats.inserted_poles);
     if (stats.sculpted_cells > 0) {
       row("cells of DT(S+OUP)", stats.sculpted_cells);
@@ -89,7 +90,6 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
 nlohmann::json report_json(const Statistics& stats, const Run_description& run) {
   nlohmann::json json = frontend::statistics_json(stats);
   json["input"] = run.input;
-  json["kind"] = run.kind;
   json["rule"] = run.rule;
   json["box_factor"] = run.box_factor;
   json["read_seconds"] = run.read_seconds;

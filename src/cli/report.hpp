@@ -16,7 +16,6 @@ using frontend::surface_rule_name;
 struct Run_description {
   std::string input;
   std::string rule;
-  std::string kind;
   double box_factor = Options{}.box_factor;
   double read_seconds = 0;
   double write_seconds = 0;

@@ -68,22 +68,28 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
 
   report(0.0, 0.5);
   const auto choosing = std::chrono::steady_clock::now();
-  // Measured where the stages were computed, scaled by a power of two (exact): squared
-  // distances neither overflow nor underflow at any scale.
+  // Measured where the stages were computed (the statistics record that exact translation and
+  // scaling by a power of two): squared distances neither overflow nor underflow at any scale.
   const auto& sites = closed_result.sites;
-  std::vector<Point<D>> samples(sites.begin(), sites.begin() + closed_result.sample_count());
-  samples = normalised<D>(samples, normalisation_of<D>(samples));
+  Normalisation<D> stages_normalisation;
+  for (int k = 0; k < D; ++k) stages_normalisation.offset[k] = closed_result.stats.translation[k];
+  stages_normalisation.exponent = closed_result.stats.scale_exponent;
+  const std::vector<Point<D>> samples = normalised<D>(
+      {sites.begin(), sites.begin() + closed_result.sample_count()}, stages_normalisation);
   const std::size_t spanning = count_spanning<D>(samples, closed_result.surface);
   closed_result.stats.closed_spanning_facets = spanning;
   const auto now = std::chrono::steady_clock::now();
   const double choice_seconds = std::chrono::duration<double>(now - choosing).count();
   const double closed_seconds = std::chrono::duration<double>(now - started).count();
   report(1.0, spanning == 0 ? 1.0 : 0.5);
-  if (spanning == 0) {
+  const auto add_choice_stage = [&] {
     auto& stats = closed_result.stats;
     const double peak = stats.stages.empty() ? 0.0 : stats.stages.back().peak_memory_mib;
     stats.stages.push_back(Stage_measure{"kind choice", choice_seconds, peak});
     stats.total_seconds += choice_seconds;
+  };
+  if (spanning == 0) {
+    add_choice_stage();
     return closed_result;
   }
 
@@ -93,12 +99,11 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
     // Closed kept: the attempt's time shows as a stage of its own.
     const double attempt_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - bordered_started).count();
+    add_choice_stage();
     auto& stats = closed_result.stats;
-    stats.stages.push_back(
-        Stage_measure{"kind choice", choice_seconds, stats.stages.back().peak_memory_mib});
     stats.stages.push_back(Stage_measure{"bordered attempt", attempt_seconds,
                                          bordered_result.stats.stages.back().peak_memory_mib});
-    stats.total_seconds += choice_seconds + attempt_seconds;
+    stats.total_seconds += attempt_seconds;
     return closed_result;
   }
   bordered_result.stats.kind_chosen_automatically = true;

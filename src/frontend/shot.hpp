@@ -44,16 +44,19 @@ struct Shot {
   std::string output;
 };
 
-// The kind a shot's input is reconstructed as: bordered (open curves in 2D) if asked or if the
-// example is so, closed if asked or if the example is so, else (a file) the default, chosen
-// from the samples.
-inline Surface_kind kind_of(const Shot& shot) {
-  const shapes::Example* example = shapes::find_example(shot.example);
-  if (!shot.closed && (shot.bordered || (example && example->bordered))) {
-    return Surface_kind::bordered;
-  }
-  if (shot.closed || example) return Surface_kind::closed;
+// The kind an input is reconstructed as: closed or bordered if asked (closed wins: a lesson on
+// what the closed algorithm does to a sheet), else an example's own kind, else (a file) the
+// default, chosen from the samples. The command line, render, the viewer and the benchmark
+// agree through this.
+inline Surface_kind input_kind(const shapes::Example* example, bool bordered, bool closed) {
+  if (closed) return Surface_kind::closed;
+  if (bordered) return Surface_kind::bordered;
+  if (example) return example->bordered ? Surface_kind::bordered : Surface_kind::closed;
   return Options{}.kind;
+}
+
+inline Surface_kind kind_of(const Shot& shot) {
+  return input_kind(shapes::find_example(shot.example), shot.bordered, shot.closed);
 }
 
 }  // namespace sculpt::frontend

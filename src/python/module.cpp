@@ -510,7 +510,6 @@ PYBIND11_MODULE(_sculpt, m) {
           "stats",
           [](const Result& r) {
             auto json = frontend::statistics_json(statistics_of(r));
-            json["kind"] = to_string(r.options.kind);
             json["rule"] = frontend::surface_rule_name(r.options, r.dimension());
             json["box_factor"] = r.options.box_factor;
             return json_to_python(json);

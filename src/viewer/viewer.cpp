@@ -95,9 +95,8 @@ void Viewer::open_example(const std::string& name, Surface_kind kind) {
   Job_request request;
   request.example = name;
   if (const auto* example = shapes::find_example(name)) {
-    kind_ = kind != Surface_kind::automatic ? kind
-            : example->bordered             ? Surface_kind::bordered
-                                            : Surface_kind::closed;
+    kind_ =
+        frontend::input_kind(example, kind == Surface_kind::bordered, kind == Surface_kind::closed);
   }
   start_job(request);
 }
