@@ -1,6 +1,6 @@
-// The k-d tree's answers against brute force: the k-th nearest distances that measure the
-// samples' spacing (spanning_openings.hpp) and the "any point within" query of the circumball
-// tests (circumball_query.hpp).
+// The k-d tree's answers against brute force: the k-th nearest distances and neighbours that
+// measure the samples' spacing (spanning_openings.hpp) and the "any point within" query of the
+// circumball tests (circumball_query.hpp).
 #include "core/point_tree.hpp"
 
 #include <gtest/gtest.h>
@@ -69,6 +69,37 @@ TEST(PointTree, KthNearestDistancesAreThoseOfBruteForce3) {
 
 TEST(PointTree, KthNearestDistancesAreThoseOfBruteForce2) {
   expect_kth_nearest_match_brute_force<2>();
+}
+
+// k_nearest lists the points whose distances are the k smallest, nearest first (ties in any
+// order: compared by distance).
+template <int D>
+void expect_k_nearest_match_brute_force() {
+  const auto points = awkward_points<D>(5);
+  const Point_tree<D> tree(points.data(), points.data() + points.size());
+  for (int k : {1, 7, Point_tree<D>::most_neighbours}) {
+    const std::vector<int> found = tree.k_nearest(k);
+    ASSERT_EQ(found.size(), points.size() * k);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      for (int j = 0; j < k; ++j) {
+        const int neighbour = found[i * k + j];
+        ASSERT_GE(neighbour, 0);
+        double d2 = 0;
+        for (int c = 0; c < D; ++c)
+          d2 += (points[neighbour][c] - points[i][c]) * (points[neighbour][c] - points[i][c]);
+        ASSERT_EQ(d2, brute_kth_nearest2<D>(points, i, j + 1))
+            << "k " << k << ", point " << i << ", rank " << j;
+      }
+    }
+  }
+}
+
+TEST(PointTree, KNearestAreThoseOfBruteForce3) {
+  expect_k_nearest_match_brute_force<3>();
+}
+
+TEST(PointTree, KNearestAreThoseOfBruteForce2) {
+  expect_k_nearest_match_brute_force<2>();
 }
 
 TEST(PointTree, FewerPointsThanKGiveInfinity) {

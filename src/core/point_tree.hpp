@@ -82,19 +82,20 @@ class Point_tree {
   // prunes the descent from the root, which then skips that leaf.
   static constexpr int most_neighbours = 15;
   std::vector<double> kth_nearest_distances2(int k) const {
-    assert(k >= 1 && k <= most_neighbours);
     std::vector<double> result(points_.size());
-    for (int leaf = 0; leaf < static_cast<int>(nodes_.size()); ++leaf) {
-      const Node& node = nodes_[leaf];
-      if (node.left >= 0) continue;
-      for (int i = node.begin; i < node.end; ++i) {
-        Nearest nearest(k);
-        for (int j = node.begin; j < node.end; ++j)
-          nearest.offer(distance2(points_[i], points_[j]));
-        search_nearest(points_[i], nearest, leaf);
-        result[input_index_[i]] = nearest.bound();
-      }
-    }
+    for_each_k_nearest(k, [&](int point, Nearest& nearest) { result[point] = nearest.bound(); });
+    return result;
+  }
+
+  // For every point, in the order given, its k nearest points (itself among them), nearest
+  // first: their indices in the order given, k per point (-1 where there are fewer than k).
+  std::vector<int> k_nearest(int k) const {
+    std::vector<int> result(points_.size() * k, -1);
+    for_each_k_nearest(k, [&](int point, Nearest& nearest) {
+      const auto* entry = nearest.sorted();
+      for (int j = 0; j < nearest.found(); ++j)
+        result[std::size_t(point) * k + j] = input_index_[entry[j].second];
+    });
     return result;
   }
 
@@ -113,6 +114,23 @@ class Point_tree {
     return d2;
   }
 
+  // Calls use(point's index in the order given, its k nearest) for every point.
+  template <class Use>
+  void for_each_k_nearest(int k, Use&& use) const {
+    assert(k >= 1 && k <= most_neighbours);
+    for (int leaf = 0; leaf < static_cast<int>(nodes_.size()); ++leaf) {
+      const Node& node = nodes_[leaf];
+      if (node.left >= 0) continue;
+      for (int i = node.begin; i < node.end; ++i) {
+        Nearest nearest(k);
+        for (int j = node.begin; j < node.end; ++j)
+          nearest.offer(distance2(points_[i], points_[j]), j);
+        search_nearest(points_[i], nearest, leaf);
+        use(input_index_[i], nearest);
+      }
+    }
+  }
+
   // The squared distance from x to the node's bounding box (0 inside it).
   static double gap2(const Node& node, const Point<D>& x) {
     double g2 = 0;
@@ -123,20 +141,28 @@ class Point_tree {
     return g2;
   }
 
-  // The k smallest squared distances offered, as a max-heap (no allocation: k is small).
+  // The k nearest points offered (squared distance, position in the tree's order), as a
+  // max-heap (no allocation: k is small).
   class Nearest {
    public:
+    using Entry = std::pair<double, int>;
     explicit Nearest(int k) : k_(k) {}
-    double bound() const { return found_ < k_ ? INFINITY : heap_[0]; }
-    void offer(double d2) {
+    double bound() const { return found_ < k_ ? INFINITY : heap_[0].first; }
+    void offer(double d2, int position) {
       if (d2 >= bound()) return;
-      heap_[found_++] = d2;
+      heap_[found_++] = {d2, position};
       std::push_heap(heap_.begin(), heap_.begin() + found_);
       if (found_ > k_) std::pop_heap(heap_.begin(), heap_.begin() + found_--);
     }
+    // Nearest first.
+    const Entry* sorted() {
+      std::sort_heap(heap_.begin(), heap_.begin() + found_);
+      return heap_.data();
+    }
+    int found() const { return found_; }
 
    private:
-    std::array<double, most_neighbours + 1> heap_;
+    std::array<Entry, most_neighbours + 1> heap_;
     int k_;
     int found_ = 0;
   };
@@ -163,7 +189,7 @@ class Point_tree {
         stack[top++] = left_first ? left : right;
         continue;
       }
-      for (int i = node.begin; i < node.end; ++i) nearest.offer(distance2(x, points_[i]));
+      for (int i = node.begin; i < node.end; ++i) nearest.offer(distance2(x, points_[i]), i);
     }
   }
 

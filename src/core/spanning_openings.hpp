@@ -10,7 +10,9 @@
 //
 //   spacing(p) <- on a surface, the distance from p to its 6th nearest sample (about its first
 //                 ring of neighbours); on a curve, to its nearest (an end of a curve has
-//                 neighbours on one side only, which would double a farther one)
+//                 neighbours on one side only, which would double a farther one); once a
+//                 surface is known to have borders, the median of that over p and its 6 nearest
+//                 (neighbourhood_spacings: a rim sample's own reaches to one side only)
 //   a facet spans an opening when its circumradius > ρ · the largest spacing of its vertices,
 //   ρ = 3 on a surface, 2 on a curve
 //
@@ -49,6 +51,36 @@ std::vector<double> sample_spacings(const std::vector<Point<D>>& samples) {
   // A sample is its own nearest point, hence one more.
   std::vector<double> spacing = tree.kth_nearest_distances2(spacing_neighbour<D> + 1);
   for (double& s : spacing) s = std::sqrt(s);
+  return spacing;
+}
+
+// Per sample on a surface, the median of the spacings of the sample and its 6 nearest. A rim
+// sample's own spacing reaches to one side only, up to twice the sheet's beside it, which hides
+// the narrower openings it borders; most of its neighbours lie inside the sheet and give the
+// spacing there. Used where a surface is known to have borders (the bordered rule), not by the
+// kind choice: on closed surfaces the median lets more facets look wide (the largest ratio on the
+// closed test shapes, 1.84 with the own spacing, is 2.36 with the median).
+inline std::vector<double> neighbourhood_spacings(const std::vector<Point<3>>& samples) {
+  constexpr int k = spacing_neighbour<3> + 1;  // the sample and its 6 nearest
+  const Point_tree<3> tree(samples.data(), samples.data() + samples.size());
+  const std::vector<int> nearest = tree.k_nearest(k);
+  const auto at = [&](std::size_t s, int j) { return nearest[s * k + j]; };
+  std::vector<double> own(samples.size(), INFINITY);
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    if (at(s, k - 1) < 0) continue;  // fewer than k samples in all
+    const Point<3>& far = samples[at(s, k - 1)];
+    double d2 = 0;
+    for (int c = 0; c < 3; ++c) d2 += (far[c] - samples[s][c]) * (far[c] - samples[s][c]);
+    own[s] = std::sqrt(d2);
+  }
+  std::vector<double> spacing(samples.size());
+  for (std::size_t s = 0; s < samples.size(); ++s) {
+    std::array<double, k> around;
+    int found = 0;
+    for (int j = 0; j < k && at(s, j) >= 0; ++j) around[found++] = own[at(s, j)];
+    std::nth_element(around.begin(), around.begin() + found / 2, around.begin() + found);
+    spacing[s] = around[found / 2];
+  }
   return spacing;
 }
 

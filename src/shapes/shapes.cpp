@@ -282,8 +282,9 @@ std::vector<Point<3>> wavy_annulus(int samples) {
 
 std::vector<Point<3>> sphere_with_holes(int samples) {
   // Three round holes, of angular radius 0.35, 0.5 and 0.7, around the three axes. The
-  // smallest is about 3.5 spacings (sixth-neighbour distances) wide in radius: an opening the
-  // bordered rule tells from a gap in the sampling (core/spanning_openings.hpp).
+  // smallest is about 4.6 spacings (sixth-neighbour distances, 0.075) wide in radius: an opening
+  // both the bordered rule and the kind choice tell from a gap in the sampling
+  // (core/spanning_openings.hpp).
   const std::array<std::pair<int, double>, 3> holes = {{{0, 0.35}, {1, 0.5}, {2, 0.7}}};
   std::vector<Point<3>> points;
   for (const auto& p : sphere(samples)) {

@@ -7,7 +7,8 @@
 // (core/spanning_openings.hpp), so they go, and what is left is made a manifold:
 //
 //   candidates <- the paper's bordered surface, with the confidence labels
-//   spanning   <- the candidates wider than ρ = 3 times the samples' spacing there, and, grown
+//   spanning   <- the candidates wider than ρ = 3 times the samples' spacing there (the median
+//                 over each vertex's neighbourhood, so that rim samples count), and, grown
 //                 from them across edges, those wider than 2 times
 //   surface    <- manifold extraction of candidates - spanning (prune sharp edges, walk the
 //                 outer boundary: methods/extraction/manifold_extraction.hpp)
@@ -34,7 +35,7 @@ inline constexpr double opening_growth_ratio = 2.0;
 inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>& result,
                          Stage_clock& clock) {
   clock.start("openings");
-  const std::vector<double> spacing = sample_spacings<3>(samples);
+  const std::vector<double> spacing = neighbourhood_spacings(samples);
   auto& candidates = result.candidates;
   candidates.chosen.clear();
   candidates.spanning.clear();
