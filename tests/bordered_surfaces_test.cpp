@@ -180,6 +180,39 @@ TEST(Bordered_surface, NeighbourhoodSpacingIsTheMedianAroundASample) {
   }
 }
 
+// A wide circle is an opening only where its middle is empty: on a flat sheet of samples 0.1
+// apart, three nearly collinear samples of a row (a sliver, circumradius 1.25) have samples
+// around their circle's middle; an ear of three rim samples of a round hole of radius 0.5 cut
+// out of the same sheet has the hole's centre as its middle.
+TEST(Bordered_surface, AWideCircleWhoseMiddleIsOnTheSheetBridgesNoOpening) {
+  std::vector<Point<3>> sheet;
+  for (int i = -15; i <= 15; ++i) {
+    for (int j = -15; j <= 15; ++j) sheet.push_back({0.1 * i, 0.1 * j, 0});
+  }
+  sheet[sheet.size() / 2][1] = 0.004;  // the middle sample of row j = 0, just off the row
+  const std::size_t middle = sheet.size() / 2, left = middle - 31, right = middle + 31;
+  ASSERT_EQ(sheet[left][0], -0.1);
+  ASSERT_EQ(sheet[right][0], 0.1);
+  const Point_tree<3> sheet_tree(sheet.data(), sheet.data() + sheet.size());
+  const Facet<3> sliver = {int(left), int(middle), int(right)};
+  EXPECT_GT(facet_circumradius<3>(sheet, sliver), 1.0);
+  EXPECT_TRUE(circle_middle_on_the_sheet(sheet, sheet_tree, sliver));
+
+  std::vector<Point<3>> holed;
+  for (const auto& p : sheet) {
+    if (std::hypot(p[0], p[1]) > 0.55) holed.push_back(p);
+  }
+  const int rim = static_cast<int>(holed.size());
+  for (int k = 0; k < 3; ++k) {
+    const double angle = 0.2 * k;
+    holed.push_back({0.5 * std::cos(angle), 0.5 * std::sin(angle), 0});
+  }
+  const Point_tree<3> holed_tree(holed.data(), holed.data() + holed.size());
+  const Facet<3> ear = {rim, rim + 1, rim + 2};
+  EXPECT_NEAR(facet_circumradius<3>(holed, ear), 0.5, 1e-12);
+  EXPECT_FALSE(circle_middle_on_the_sheet(holed, holed_tree, ear));
+}
+
 // count_spanning measures only the spacings that can matter; it counts what measuring them all
 // counts, on closed results with openings capped (many spanning facets) and without (none).
 template <int D>
@@ -188,8 +221,13 @@ void expect_spanning_count_of_all_spacings(const std::vector<Point<D>>& samples)
   const std::vector<Point<D>> sites(closed.sites.begin(),
                                     closed.sites.begin() + closed.sample_count());
   const std::vector<double> spacing = sample_spacings<D>(sites);
+  const Point_tree<D> tree(sites.data(), sites.data() + sites.size());
   std::size_t expected = 0;
-  for (const auto& facet : closed.surface) expected += spans_opening<D>(sites, spacing, facet);
+  for (const auto& facet : closed.surface) {
+    bool spans = spans_opening<D>(sites, spacing, facet);
+    if constexpr (D == 3) spans = spans && !circle_middle_on_the_sheet(sites, tree, facet);
+    expected += spans;
+  }
   EXPECT_EQ(count_spanning<D>(sites, closed.surface), expected);
 }
 

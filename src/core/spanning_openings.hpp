@@ -14,7 +14,8 @@
 //                 surface is known to have borders, the median of that over p and its 6 nearest
 //                 (neighbourhood_spacings: a rim sample's own reaches to one side only)
 //   a facet spans an opening when its circumradius > ρ · the largest spacing of its vertices,
-//   ρ = 3 on a surface, 2 on a curve
+//   ρ = 3 on a surface, 2 on a curve, and (on a surface) no sample lies within half its
+//   circumradius of its circle's centre (circle_middle_on_the_sheet)
 //
 // The largest spacing of the vertices keeps facets where a dense region meets a sparse one. An
 // opening narrower than about ρ spacings is not told from a gap in the sampling.
@@ -113,6 +114,25 @@ double facet_circumradius(const std::vector<Point<D>>& points, const Facet<D>& f
   }
 }
 
+// The centre of a triangle's circumscribed circle (in its plane).
+inline Point<3> facet_circumcentre(const std::vector<Point<3>>& points, const Facet<3>& facet) {
+  const Point<3>& a = points[facet[0]];
+  std::array<double, 3> u, v;
+  for (int k = 0; k < 3; ++k) u[k] = points[facet[1]][k] - a[k], v[k] = points[facet[2]][k] - a[k];
+  const auto cross = [](const std::array<double, 3>& p, const std::array<double, 3>& q) {
+    return std::array<double, 3>{p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2],
+                                 p[0] * q[1] - p[1] * q[0]};
+  };
+  const auto n = cross(u, v);
+  const double uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+  const double vv = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+  const auto nu = cross(n, u), vn = cross(v, n);
+  Point<3> c;
+  for (int k = 0; k < 3; ++k) c[k] = a[k] + (vv * nu[k] + uu * vn[k]) / (2 * nn);
+  return c;
+}
+
 // Whether the facet's circumradius is over `ratio` times the largest spacing of its vertices.
 template <int D>
 bool spans_opening(const std::vector<Point<D>>& samples, const std::vector<double>& spacing,
@@ -120,6 +140,19 @@ bool spans_opening(const std::vector<Point<D>>& samples, const std::vector<doubl
   double local = 0;
   for (int v : facet) local = std::max(local, spacing[v]);
   return facet_circumradius<D>(samples, facet) > ratio * local;
+}
+
+// Whether a sample lies within half the circumradius of a triangle's circumcentre. Over an
+// opening the middle of the circle is empty (an ear of a round hole: its centre is the hole's);
+// a flat sliver along a row of samples (three nearly collinear samples of a cylinder's ruling)
+// has as wide a circle, but lying on the sheet, with samples around its middle: it bridges no
+// opening, and taking it out would leave a hole of no width. On CGAL's
+// cylinder_locally_refined, 6 such slivers amid the sheet; no opening of the test shapes or
+// of CGAL's meshes with borders is lost for it, with any fraction from 0.5 to 0.85.
+inline bool circle_middle_on_the_sheet(const std::vector<Point<3>>& samples,
+                                       const Point_tree<3>& tree, const Facet<3>& facet) {
+  const double reach = facet_circumradius<3>(samples, facet) / 2;
+  return std::isfinite(reach) && tree.any_within(facet_circumcentre(samples, facet), reach * reach);
 }
 
 // How many of the facets span an opening. Most samples' spacings need not be measured: a sample
@@ -147,7 +180,9 @@ std::size_t count_spanning(const std::vector<Point<D>>& samples,
     }
   }
   return static_cast<std::size_t>(std::count_if(facets.begin(), facets.end(), [&](const auto& f) {
-    return spans_opening<D>(samples, spacing, f);
+    if (!spans_opening<D>(samples, spacing, f)) return false;
+    if constexpr (D == 3) return !circle_middle_on_the_sheet(samples, tree, f);
+    return true;
   }));
 }
 

@@ -8,8 +8,8 @@
 //
 //   candidates <- the paper's bordered surface, with the confidence labels
 //   spanning   <- the candidates wider than ρ = 3 times the samples' spacing there (the median
-//                 over each vertex's neighbourhood, so that rim samples count), and, grown
-//                 from them across edges, those wider than 2 times
+//                 over each vertex's neighbourhood, so that rim samples count) whose circle's
+//                 middle is empty, and, grown from them across edges, those wider than 2 times
 //   surface    <- manifold extraction of candidates - spanning (prune sharp edges, walk the
 //                 outer boundary: methods/extraction/manifold_extraction.hpp)
 #pragma once
@@ -36,6 +36,11 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
                          Stage_clock& clock) {
   clock.start("openings");
   const std::vector<double> spacing = neighbourhood_spacings(samples);
+  const Point_tree<3> tree(samples.data(), samples.data() + samples.size());
+  const auto over_opening = [&](const Facet<3>& facet, double ratio) {
+    return spans_opening<3>(samples, spacing, facet, ratio) &&
+           !circle_middle_on_the_sheet(samples, tree, facet);
+  };
   auto& candidates = result.candidates;
   candidates.chosen.clear();
   candidates.spanning.clear();
@@ -44,7 +49,7 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   std::vector<char> removed(triangles.size(), 0);
   std::vector<int> queue;
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
-    if (spans_opening<3>(samples, spacing, triangles[t])) {
+    if (over_opening(triangles[t], opening_ratio<3>)) {
       removed[t] = 1;
       queue.push_back(t);
     }
@@ -55,7 +60,7 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
     for (int j = 0; j < 3; ++j) {
       for (int u : edges.on(triangles[t][j], triangles[t][(j + 1) % 3])) {
         if (removed[u]) continue;
-        if (spans_opening<3>(samples, spacing, triangles[u], opening_growth_ratio)) {
+        if (over_opening(triangles[u], opening_growth_ratio)) {
           removed[u] = 1;
           queue.push_back(u);
         }
