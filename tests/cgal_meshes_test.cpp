@@ -99,9 +99,9 @@ TEST(Cgal_meshes, UndersampledFemurHasFiveTimesFewerDefects) {
 
 // Shells with holes, reconstructed without saying so: the automatic kind keeps them bordered.
 // mech-holes-shark (a part with 4 border loops) comes out with its 4 (20 samples of a narrow
-// slot left off); holes.off (a shell with 7) with its outer border exactly and two of its six
-// holes: the four others span 2 to 2.7 spacings, under the rule's 3 (spanning_openings.hpp),
-// and stay closed.
+// slot left off); holes.off (a shell with 7) with its outer border exactly and five of its six
+// holes: the sixth, 16 rim samples, is under what the rule tells from a gap in the sampling
+// (spanning_openings.hpp) and stays closed.
 TEST(Cgal_meshes, ShellsWithHolesKeepTheirBorders) {
   const auto shark = reconstruct_mesh("mech-holes-shark.off", Method::robust);
   EXPECT_EQ(shark.own.boundary_loops, 4u);
@@ -113,7 +113,7 @@ TEST(Cgal_meshes, ShellsWithHolesKeepTheirBorders) {
   const auto holes = reconstruct_mesh("holes.off", Method::robust);
   EXPECT_EQ(holes.own.boundary_loops, 7u);
   EXPECT_EQ(holes.result.stats.kind, Surface_kind::bordered);
-  EXPECT_GE(holes.result.stats.boundary_loops, 3u);
+  EXPECT_GE(holes.result.stats.boundary_loops, 6u);
   EXPECT_EQ(holes.result.stats.non_manifold_ridges, 0u);
   EXPECT_EQ(holes.result.stats.unused_samples, 0u);
   // The mesh's own border edges on ours...
@@ -123,8 +123,23 @@ TEST(Cgal_meshes, ShellsWithHolesKeepTheirBorders) {
   const auto ours = testing::border_edges(holes.result.surface);
   std::size_t shared = 0;
   for (const auto& edge : own) shared += ours.count(edge);
-  // ... measured: 187 of its 304 border edges are ours, the outer border's 136 among them.
-  EXPECT_GE(shared, 180u);
+  // ... measured: 256 of its 304 border edges are ours, the outer border's 136 among them.
+  EXPECT_GE(shared, 250u);
+}
+
+// A half cylinder sampled in rows along its rulings, 20 times denser in places, with one border
+// loop. Three nearly collinear samples of a row make wide slivers amid the sheet: not openings,
+// their circle's middle is on the sheet (were 9 loops); where the candidates fold, the extraction
+// leaves small loops, filled as gaps (were 6). Measured: 3 loops, 4 non-manifold vertices where
+// the rows fold, 8 samples at the corners left off.
+TEST(Cgal_meshes, ALocallyRefinedHalfCylinderKeepsItsSheet) {
+  const auto cylinder = reconstruct_mesh("cylinder_locally_refined.off", Method::robust);
+  EXPECT_EQ(cylinder.own.boundary_loops, 1u);
+  EXPECT_EQ(cylinder.result.stats.kind, Surface_kind::bordered);
+  EXPECT_LE(cylinder.result.stats.boundary_loops, 3u);
+  EXPECT_GT(cylinder.result.stats.filled_gaps, 0u);
+  EXPECT_EQ(cylinder.result.stats.non_manifold_ridges, 0u);
+  EXPECT_LE(cylinder.result.stats.unused_samples, 8u);
 }
 
 // The same points give the same surface, whatever ran before in the process. CGAL reports a

@@ -123,18 +123,21 @@ inline Pseudo_code bordered_surface_pseudo_code(Pseudo_code code, int first_seed
 }
 
 // The robust method's bordered surfaces (src/methods/robust/bordered_surface.hpp): the paper's
-// bordered surface is the candidates, less the triangles spanning an opening.
+// bordered surface is the candidates, less the triangles spanning an opening; loops that are gaps
+// are filled.
 inline Pseudo_code robust_bordered_pseudo_code(Pseudo_code code) {
   using scene::Stage;
   const int candidates = code.lines_of_stage.at(Stage::surface).front();
   code.lines[candidates] = "cands <- facets of S with an outer apex";
   code.lines.insert(code.lines.end(), {
-                                          "# R: circumradius, h: 6th-neighbour gap",
-                                          "drop f: R(f) > 3 h, next to those > 2 h",
+                                          "# R: circumradius, h: median 6th-neighbour gap",
+                                          "drop f: R(f) > 3 h, no sample near its centre;",
+                                          "  next to those, > 2 h",
                                           "surface <- prune, walk the rest",
+                                          "fill loops with no f to drop (gaps)",
                                       });
-  code.lines_of_stage[Stage::surface] = {candidates + 2, candidates, candidates + 1,
-                                         candidates + 3};
+  code.lines_of_stage[Stage::surface] = {candidates + 2, candidates,     candidates + 1,
+                                         candidates + 3, candidates + 4, candidates + 5};
   return code;
 }
 

@@ -47,6 +47,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"candidate_facets", stats.candidate_facets},
       {"pruned_facets", stats.pruned_facets},
       {"spanning_facets", stats.spanning_facets},
+      {"filled_gaps", stats.filled_gaps},
       {"rims_kept", stats.rims_kept},
       {"undersampled_samples", stats.undersampled_samples},
       {"samples_without_umbrella", stats.samples_without_umbrella},

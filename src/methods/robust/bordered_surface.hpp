@@ -11,7 +11,8 @@
 //                 over each vertex's neighbourhood, so that rim samples count) whose circle's
 //                 middle is empty, and, grown from them across edges, those wider than 2 times
 //   surface    <- manifold extraction of candidates - spanning (prune sharp edges, walk the
-//                 outer boundary: methods/extraction/manifold_extraction.hpp)
+//                 outer boundary: methods/extraction/manifold_extraction.hpp), its small border
+//                 loops that are gaps, not openings, filled (gap_filling.hpp)
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -20,6 +21,7 @@
 #include "../../core/spanning_openings.hpp"
 #include "../../core/stage_clock.hpp"
 #include "../extraction/manifold_extraction.hpp"
+#include "gap_filling.hpp"
 
 namespace sculpt {
 
@@ -73,6 +75,10 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   result.stats.spanning_facets = candidates.spanning.size();
   // Borders are expected: the rims are kept from the start (pruning them would eat the sheet).
   extract_manifold(samples, result, clock, Rims::kept);
+  clock.start("gaps");
+  result.stats.filled_gaps = fill_gaps(samples, result.surface, [&](const Facet<3>& facet) {
+    return over_opening(facet, opening_growth_ratio);
+  });
 }
 
 }  // namespace sculpt

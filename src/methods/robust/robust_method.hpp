@@ -11,6 +11,7 @@
 // go, and the rest is made a manifold (bordered_surface.hpp):
 //   6d. openings    the triangles wider than the samples' spacing there removed
 //   6e. pruning, walk  the manifold extraction of the candidates left
+//   6f. gaps        the small border loops that are no openings filled (gap_filling.hpp)
 #pragma once
 
 #include <sculpt/sculpt.hpp>

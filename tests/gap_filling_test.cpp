@@ -1,0 +1,119 @@
+// Gaps in the sampling filled after the bordered rule (methods/robust/gap_filling.hpp): the loops
+// found, the fills made, and the fills refused.
+#include "methods/robust/gap_filling.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "test_support.hpp"
+
+namespace sculpt {
+namespace {
+
+// An octahedron, its faces oriented outwards.
+std::vector<Point<3>> octahedron_points() {
+  return {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+}
+
+std::vector<Facet<3>> octahedron_faces() {
+  return {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+}
+
+// Every directed edge once and its reverse once: a closed, consistently oriented surface.
+void expect_closed_and_oriented(const std::vector<Facet<3>>& triangles) {
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& t : triangles) {
+    for (int j = 0; j < 3; ++j) ++directed[{t[j], t[(j + 1) % 3]}];
+  }
+  for (const auto& [edge, times] : directed) {
+    EXPECT_EQ(times, 1) << edge.first << "-" << edge.second;
+    EXPECT_EQ(directed.count({edge.second, edge.first}), 1u) << edge.first << "-" << edge.second;
+  }
+}
+
+const auto never_over_an_opening = [](const Facet<3>&) { return false; };
+
+TEST(Gap_filling, ALoopIsFollowedInTheTrianglesDirection) {
+  auto faces = octahedron_faces();
+  faces.erase(faces.begin());  // (0, 2, 4) goes: the loop 0 -> 4 -> 2 in the others' direction
+  const auto loops = simple_border_loops(faces);
+  ASSERT_EQ(loops.size(), 1u);
+  ASSERT_EQ(loops[0].size(), 3u);
+  std::vector<int> loop = loops[0];
+  std::rotate(loop.begin(), std::find(loop.begin(), loop.end(), 0), loop.end());
+  EXPECT_EQ(loop, (std::vector<int>{0, 4, 2}));
+}
+
+TEST(Gap_filling, TwoLoopsThroughOneVertexAreNotSimple) {
+  // Two triangles meeting at vertex 0 only (a bowtie): its border passes 0 twice.
+  const std::vector<Facet<3>> bowtie = {{0, 1, 2}, {0, 3, 4}};
+  EXPECT_TRUE(simple_border_loops(bowtie).empty());
+  EXPECT_EQ(simple_border_loops({{0, 1, 2}}).size(), 1u);
+}
+
+TEST(Gap_filling, AMissingTriangleOrTwoAreFilledFacingTheRest) {
+  const auto points = octahedron_points();
+  for (int missing : {1, 2}) {
+    SCOPED_TRACE(missing);
+    auto faces = octahedron_faces();
+    // One face, or two faces sharing the edge 2-4 (a loop of 4: 0, 4, 1, 2 in some order).
+    faces.erase(faces.begin(), faces.begin() + missing);
+    auto surface = faces;
+    EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening), 1u);
+    EXPECT_EQ(surface.size(), 8u);
+    expect_closed_and_oriented(surface);
+  }
+}
+
+TEST(Gap_filling, AFillOverAnOpeningOrOnAnEdgeAlreadyThereIsRefused) {
+  const auto points = octahedron_points();
+  auto faces = octahedron_faces();
+  faces.erase(faces.begin());
+  auto surface = faces;
+  EXPECT_EQ(fill_gaps(points, surface, [](const Facet<3>&) { return true; }), 0u);
+  EXPECT_EQ(surface, faces);
+
+  // The loop 0 -> 4 -> 1 -> 2 left by removing (0, 2, 4) and (2, 1, 4). Its diagonals 0-1 and 2-4
+  // are made edges elsewhere, each by a closed tetrahedron on two new apexes (no border added):
+  // with one of them taken, the fill uses the other; with both, it is refused.
+  const auto tetrahedron = [](int a, int b, int c, int d) {
+    return std::vector<Facet<3>>{{a, b, c}, {a, c, d}, {a, d, b}, {b, d, c}};
+  };
+  std::vector<Point<3>> with_apexes = points;
+  for (double z : {3.0, 4.0, 5.0, 6.0}) with_apexes.push_back({0.1 * z, 0.2, z});
+  std::vector<Facet<3>> holed(faces.begin() + 1, faces.end());
+  for (const auto& t : tetrahedron(0, 1, 6, 7)) holed.push_back(t);
+  auto one_taken = holed;
+  EXPECT_EQ(fill_gaps(with_apexes, one_taken, never_over_an_opening), 1u);
+  expect_closed_and_oriented(one_taken);
+  for (const auto& t : tetrahedron(2, 4, 8, 9)) holed.push_back(t);
+  auto both_taken = holed;
+  EXPECT_EQ(fill_gaps(with_apexes, both_taken, never_over_an_opening), 0u);
+  EXPECT_EQ(both_taken, holed);
+}
+
+TEST(Gap_filling, LoopsLongerThanTheLimitAreLeft) {
+  // A fan around a centre with a rim of longest_gap_filled + 1 samples: its rim is one loop.
+  const int rim = longest_gap_filled + 1;
+  std::vector<Point<3>> points = {{0, 0, 0}};
+  std::vector<Facet<3>> fan;
+  for (int i = 0; i < rim; ++i) {
+    const double angle = 2 * M_PI * i / rim;
+    points.push_back({std::cos(angle), std::sin(angle), 0});
+    fan.push_back({0, 1 + i, 1 + (i + 1) % rim});
+  }
+  auto surface = fan;
+  EXPECT_EQ(simple_border_loops(surface).size(), 1u);
+  EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening), 0u);
+  // One sample fewer on the rim, and it is filled.
+  fan.pop_back();
+  fan.back() = {0, rim - 1, 1};
+  points.pop_back();
+  surface = fan;
+  EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening), 1u);
+}
+
+}  // namespace
+}  // namespace sculpt
