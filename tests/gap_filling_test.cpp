@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -40,10 +42,14 @@ TEST(Gap_filling, ALoopIsFollowedInTheTrianglesDirection) {
   faces.erase(faces.begin());  // (0, 2, 4) goes: the loop 0 -> 4 -> 2 in the others' direction
   const auto loops = simple_border_loops(faces);
   ASSERT_EQ(loops.size(), 1u);
-  ASSERT_EQ(loops[0].size(), 3u);
-  std::vector<int> loop = loops[0];
-  std::rotate(loop.begin(), std::find(loop.begin(), loop.end(), 0), loop.end());
+  ASSERT_EQ(loops[0].vertices.size(), 3u);
+  std::vector<int> loop = loops[0].vertices, apexes = loops[0].apexes;
+  const auto at = std::find(loop.begin(), loop.end(), 0) - loop.begin();
+  std::rotate(loop.begin(), loop.begin() + at, loop.end());
+  std::rotate(apexes.begin(), apexes.begin() + at, apexes.end());
   EXPECT_EQ(loop, (std::vector<int>{0, 4, 2}));
+  // The triangles on 0 -> 4, 4 -> 2 and 2 -> 0: (3, 0, 4), (2, 1, 4) and (2, 0, 5).
+  EXPECT_EQ(apexes, (std::vector<int>{3, 1, 5}));
 }
 
 TEST(Gap_filling, TwoLoopsThroughOneVertexAreNotSimple) {
@@ -51,6 +57,9 @@ TEST(Gap_filling, TwoLoopsThroughOneVertexAreNotSimple) {
   const std::vector<Facet<3>> bowtie = {{0, 1, 2}, {0, 3, 4}};
   EXPECT_TRUE(simple_border_loops(bowtie).empty());
   EXPECT_EQ(simple_border_loops({{0, 1, 2}}).size(), 1u);
+  // Two triangles facing opposite ways on the edge 1-2: two border edges arrive at 1 (from 0
+  // and 3) and two leave 2 (to 0 and 3).
+  EXPECT_TRUE(simple_border_loops({{0, 1, 2}, {1, 2, 3}}).empty());
 }
 
 TEST(Gap_filling, AMissingTriangleOrTwoAreFilledFacingTheRest) {
@@ -94,25 +103,56 @@ TEST(Gap_filling, AFillOverAnOpeningOrOnAnEdgeAlreadyThereIsRefused) {
   EXPECT_EQ(both_taken, holed);
 }
 
-TEST(Gap_filling, LoopsLongerThanTheLimitAreLeft) {
-  // A fan around a centre with a rim of longest_gap_filled + 1 samples: its rim is one loop.
-  const int rim = longest_gap_filled + 1;
-  std::vector<Point<3>> points = {{0, 0, 0}};
-  std::vector<Facet<3>> fan;
-  for (int i = 0; i < rim; ++i) {
-    const double angle = 2 * M_PI * i / rim;
-    points.push_back({std::cos(angle), std::sin(angle), 0});
-    fan.push_back({0, 1 + i, 1 + (i + 1) % rim});
+// A flat strip around a round hole: `rim` samples at radius 1 and as many at radius 1.5, as
+// triangles facing up. Its inner loop is the hole; its outer loop is the strip's own border.
+struct Ring {
+  std::vector<Point<3>> points;
+  std::vector<Facet<3>> triangles;
+};
+
+Ring ring_around_a_hole(int rim) {
+  Ring ring;
+  for (double radius : {1.0, 1.5}) {
+    for (int i = 0; i < rim; ++i) {
+      const double angle = 2 * M_PI * i / rim;
+      ring.points.push_back({radius * std::cos(angle), radius * std::sin(angle), 0});
+    }
   }
-  auto surface = fan;
-  EXPECT_EQ(simple_border_loops(surface).size(), 1u);
-  EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening), 0u);
-  // One sample fewer on the rim, and it is filled.
-  fan.pop_back();
-  fan.back() = {0, rim - 1, 1};
-  points.pop_back();
-  surface = fan;
-  EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening), 1u);
+  for (int i = 0; i < rim; ++i) {
+    const int inner = i, next_inner = (i + 1) % rim, outer = rim + i, next_outer = rim + next_inner;
+    ring.triangles.push_back({inner, outer, next_outer});
+    ring.triangles.push_back({inner, next_outer, next_inner});
+  }
+  return ring;
+}
+
+TEST(Gap_filling, TheHoleIsFilledNotTheOuterBorder) {
+  const Ring ring = ring_around_a_hole(12);
+  EXPECT_EQ(simple_border_loops(ring.triangles).size(), 2u);
+  auto surface = ring.triangles;
+  EXPECT_EQ(fill_gaps(ring.points, surface, never_over_an_opening), 1u);
+  // 10 triangles fill the hole of 12, all facing up as the ring does; the outer border stays.
+  ASSERT_EQ(surface.size(), ring.triangles.size() + 10);
+  for (std::size_t t = ring.triangles.size(); t < surface.size(); ++t) {
+    for (int v : surface[t]) EXPECT_LT(v, 12);
+    const auto& p = ring.points;
+    const auto& f = surface[t];
+    const double up = (p[f[1]][0] - p[f[0]][0]) * (p[f[2]][1] - p[f[0]][1]) -
+                      (p[f[1]][1] - p[f[0]][1]) * (p[f[2]][0] - p[f[0]][0]);
+    EXPECT_GT(up, 0);
+  }
+  // The outer border of a sheet alone is never filled: each ear lies back over the sheet.
+  std::vector<Point<3>> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0}};
+  std::vector<Facet<3>> fan = {{4, 0, 1}, {4, 1, 2}, {4, 2, 3}, {4, 3, 0}};
+  EXPECT_EQ(fill_gaps(square, fan, never_over_an_opening), 0u);
+  EXPECT_EQ(fan.size(), 4u);
+}
+
+TEST(Gap_filling, LoopsLongerThanTheLimitAreLeft) {
+  Ring ring = ring_around_a_hole(longest_gap_filled + 1);
+  EXPECT_EQ(fill_gaps(ring.points, ring.triangles, never_over_an_opening), 0u);
+  ring = ring_around_a_hole(longest_gap_filled);
+  EXPECT_EQ(fill_gaps(ring.points, ring.triangles, never_over_an_opening), 1u);
 }
 
 }  // namespace

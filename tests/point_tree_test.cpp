@@ -102,6 +102,16 @@ TEST(PointTree, KNearestAreThoseOfBruteForce2) {
   expect_k_nearest_match_brute_force<2>();
 }
 
+TEST(PointTree, FewerPointsThanKLeaveTheRestUnfilled) {
+  const std::vector<Point<3>> points = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}};
+  const Point_tree<3> tree(points.data(), points.data() + points.size());
+  const std::vector<int> found = tree.k_nearest(4);
+  ASSERT_EQ(found.size(), 12u);
+  EXPECT_EQ(std::vector<int>(found.begin(), found.begin() + 4), (std::vector<int>{0, 1, 2, -1}));
+  EXPECT_EQ(std::vector<int>(found.begin() + 8, found.end()), (std::vector<int>{2, 0, 1, -1}));
+  EXPECT_EQ(tree.k_nearest_to({0.9, 0, 0}, 4), (std::vector<int>{1, 0, 2}));
+}
+
 TEST(PointTree, FewerPointsThanKGiveInfinity) {
   const std::vector<Point<3>> points = {{0, 0, 0}, {1, 0, 0}, {0, 2, 0}};
   const Point_tree<3> tree(points.data(), points.data() + points.size());

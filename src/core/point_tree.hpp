@@ -87,7 +87,20 @@ class Point_tree {
     return result;
   }
 
-  // For every point, in the order given, its k nearest points (itself among them), nearest
+  // The k nearest points to x (fewer when there are fewer), nearest first: their indices in the
+  // order given.
+  std::vector<int> k_nearest_to(const Point<D>& x, int k) const {
+    assert(k >= 1 && k <= most_neighbours);
+    Nearest nearest(k);
+    if (!nodes_.empty()) search_nearest(x, nearest, -1);
+    const auto* entry = nearest.sorted();
+    std::vector<int> result(nearest.found());
+    for (int j = 0; j < nearest.found(); ++j) result[j] = input_index_[entry[j].second];
+    return result;
+  }
+
+  // For every point, in the order given, its k nearest points (itself among them, unless k or
+  // more others coincide with it), nearest
   // first: their indices in the order given, k per point (-1 where there are fewer than k).
   std::vector<int> k_nearest(int k) const {
     std::vector<int> result(points_.size() * k, -1);

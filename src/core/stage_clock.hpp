@@ -29,7 +29,7 @@ inline double usual_weight(const char* stage) {
       {"labelling", 0.3},  {"propagation", 0.3},  {"queries", 0.3},   {"insertion", 0.5},
       {"carving", 0.5},    {"solid", 0.05},       {"surface", 0.05},  {"topology", 0.05},
       {"voronoi", 0.3},    {"crust", 2.0},        {"filtering", 0.3}, {"pruning", 0.5},
-      {"walk", 0.5},       {"gaps", 0.02},        {"cocone", 1.0},    {"undersampling", 0.2},
+      {"walk", 0.5},       {"mending", 0.05},     {"cocone", 1.0},    {"undersampling", 0.2},
       {"peeling", 0.5},    {"power-crust", 10.0}, {"sculpting", 1.0}, {"advancing-front", 5.0},
       {"alpha-shape", 5.0}};
   for (const auto& w : weights) {

@@ -37,7 +37,7 @@ inline std::vector<const char*> planned_stages(const Options& options, int dimen
         add({"surface"});
       } else if (inserts_poles(Method::robust, options.kind, dimension)) {
         sculpt_with_poles();
-        add({"openings", "pruning", "walk", "gaps"});  // robust/bordered_surface.hpp
+        add({"openings", "pruning", "walk", "mending"});  // robust/bordered_surface.hpp
       } else {
         add({"carving", "solid", "surface"});
       }

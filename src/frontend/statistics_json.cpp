@@ -48,6 +48,8 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"pruned_facets", stats.pruned_facets},
       {"spanning_facets", stats.spanning_facets},
       {"filled_gaps", stats.filled_gaps},
+      {"attached_samples", stats.attached_samples},
+      {"closed_notches", stats.closed_notches},
       {"rims_kept", stats.rims_kept},
       {"undersampled_samples", stats.undersampled_samples},
       {"samples_without_umbrella", stats.samples_without_umbrella},

@@ -11,8 +11,10 @@
 //                 over each vertex's neighbourhood, so that rim samples count) whose circle's
 //                 middle is empty, and, grown from them across edges, those wider than 2 times
 //   surface    <- manifold extraction of candidates - spanning (prune sharp edges, walk the
-//                 outer boundary: methods/extraction/manifold_extraction.hpp), its small border
-//                 loops that are gaps, not openings, filled (gap_filling.hpp)
+//                 outer boundary: methods/extraction/manifold_extraction.hpp)
+//   mending    <- samples left off attached to the border, its sharp notches closed
+//                 (left_off_samples.hpp), and small border loops that are gaps, not openings,
+//                 filled (gap_filling.hpp)
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -22,6 +24,7 @@
 #include "../../core/stage_clock.hpp"
 #include "../extraction/manifold_extraction.hpp"
 #include "gap_filling.hpp"
+#include "left_off_samples.hpp"
 
 namespace sculpt {
 
@@ -75,10 +78,18 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   result.stats.spanning_facets = candidates.spanning.size();
   // Borders are expected: the rims are kept from the start (pruning them would eat the sheet).
   extract_manifold(samples, result, clock, Rims::kept);
-  clock.start("gaps");
-  result.stats.filled_gaps = fill_gaps(samples, result.surface, [&](const Facet<3>& facet) {
+  // Mending the border: a triangle may be added where it is not over an opening by the growth
+  // ratio, and only where the spacing is known (not with fewer samples than it counts).
+  clock.start("mending");
+  const auto not_to_add = [&](const Facet<3>& facet) {
+    for (int v : facet) {
+      if (!std::isfinite(spacing[v])) return true;
+    }
     return over_opening(facet, opening_growth_ratio);
-  });
+  };
+  result.stats.attached_samples = attach_left_off_samples(samples, result.surface, not_to_add);
+  result.stats.closed_notches = close_border_notches(samples, result.surface, not_to_add);
+  result.stats.filled_gaps = fill_gaps(samples, result.surface, not_to_add);
 }
 
 }  // namespace sculpt

@@ -8,9 +8,9 @@
 // opening by that rule: it is filled with that triangulation, and the surface still interpolates.
 //
 //   for each border loop of at most 64 samples that is a simple cycle:
-//     fill <- ear clipping, each time the ear with the smallest circumradius
-//     add fill if none of its triangles is over an opening and none of its diagonals is an
-//     edge of the surface already
+//     fill <- ear clipping, each time the ear with the smallest circumradius among those that
+//             continue the surface (no fold back over it, no edge it has already)
+//     add fill if every ear could be clipped and none is over an opening
 //
 // An opening narrower than that test can tell was never found; filling its loop keeps the rule's
 // word (CGAL's ChineseDragon: its two true holes are single missing triangles, closed either way).
@@ -33,55 +33,83 @@ namespace sculpt {
 // loop so long whose triangles all stay narrow is a slit along the sheet, not a gap.
 inline constexpr int longest_gap_filled = 64;
 
-// Border loops of an oriented surface, each as its vertices in the order of the triangles' own
-// edges (a -> b for a triangle (a, b, c) with (a, b) on the border). Loops through a vertex with
-// more than one border edge leaving it are not simple cycles and are left out.
-inline std::vector<std::vector<int>> simple_border_loops(const std::vector<Facet<3>>& triangles) {
+// A border loop of an oriented surface: its vertices in the direction of the triangles' own
+// edges (a -> b for a triangle (a, b, c) with (a, b) on the border), and for each edge
+// vertices[i] -> vertices[i + 1] the third vertex of its triangle.
+struct Border_loop {
+  std::vector<int> vertices, apexes;
+};
+
+// The border loops that are simple cycles: a loop through a vertex where more or fewer than one
+// border edge arrives or leaves is left out.
+inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles) {
   using extraction_detail::edge_key;
   std::unordered_map<std::uint64_t, int> uses;
   for (const auto& t : triangles) {
     for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
   }
-  std::unordered_map<int, int> next;  // along the border, in the triangles' direction
+  std::unordered_map<int, std::pair<int, int>> next;  // vertex -> (next vertex, apex)
+  std::unordered_map<int, int> arriving;
   std::unordered_set<int> branching;
   for (const auto& t : triangles) {
     for (int j = 0; j < 3; ++j) {
       const int a = t[j], b = t[(j + 1) % 3];
       if (uses[edge_key(a, b)] != 1) continue;
-      if (!next.emplace(a, b).second) branching.insert(a);
+      if (!next.emplace(a, std::make_pair(b, t[(j + 2) % 3])).second) branching.insert(a);
+      if (++arriving[b] > 1) branching.insert(b);
     }
   }
-  std::vector<std::vector<int>> loops;
+  std::vector<int> starts;
+  for (const auto& [v, unused] : next) starts.push_back(v);
+  std::sort(starts.begin(), starts.end());  // the same loops in the same order, run to run
+  std::vector<Border_loop> loops;
   std::unordered_set<int> seen;
-  for (const auto& [start, unused] : next) {
+  for (int start : starts) {
     if (seen.count(start)) continue;
-    std::vector<int> loop;
+    Border_loop loop;
     bool simple = true;
     int v = start;
     do {
       seen.insert(v);
-      loop.push_back(v);
-      simple = simple && !branching.count(v);
+      simple = simple && !branching.count(v) && arriving.count(v);
       const auto found = next.find(v);
       if (found == next.end()) {
         simple = false;
         break;
       }
-      v = found->second;
+      loop.vertices.push_back(v);
+      loop.apexes.push_back(found->second.second);
+      v = found->second.first;
     } while (v != start && !seen.count(v));
     if (simple && v == start) loops.push_back(std::move(loop));
   }
   return loops;
 }
 
-// A triangulation of the loop by ear clipping, each time the ear with the smallest circumradius,
-// its triangles facing against the loop's own (so that they continue the surface); empty when an
-// ear is over an opening or a diagonal is in `edges` already.
+// A triangulation of the loop by ear clipping, each time the ear with the smallest circumradius
+// among those that continue the surface: facing against the loop's edges, turned less than 90
+// degrees from the triangles on the two edges they cover (an ear at a reflex corner, or across
+// the outer border of a sheet, lies back over the surface and fails this), and whose new edge is
+// not an edge of the surface already. Empty when no ear is left or the one taken is over an
+// opening.
 inline std::vector<Facet<3>> fill_of_loop(
-    const std::vector<Point<3>>& samples, std::vector<int> loop,
+    const std::vector<Point<3>>& samples, const Border_loop& border,
     const std::unordered_set<std::uint64_t>& edges,
     const std::function<bool(const Facet<3>&)>& over_opening) {
+  using extraction_detail::cross;
+  using extraction_detail::dot;
   using extraction_detail::edge_key;
+  using extraction_detail::minus;
+  using extraction_detail::Vector;
+  const auto normal_of = [&](int a, int b, int c) {
+    return cross(minus(samples[b], samples[a]), minus(samples[c], samples[a]));
+  };
+  std::vector<int> loop = border.vertices;
+  // normals[i]: of the triangle on the loop's edge loop[i] -> loop[i + 1].
+  std::vector<Vector> normals;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    normals.push_back(normal_of(loop[i], loop[(i + 1) % loop.size()], border.apexes[i]));
+  }
   std::vector<Facet<3>> fill;
   while (loop.size() >= 3) {
     const int k = static_cast<int>(loop.size());
@@ -90,6 +118,8 @@ inline std::vector<Facet<3>> fill_of_loop(
     for (int i = 0; i < k; ++i) {
       const int before = loop[(i + k - 1) % k], after = loop[(i + 1) % k];
       if (k > 3 && edges.count(edge_key(before, after))) continue;
+      const Vector normal = normal_of(after, loop[i], before);
+      if (dot(normal, normals[i]) <= 0 || dot(normal, normals[(i + k - 1) % k]) <= 0) continue;
       const double radius = facet_circumradius<3>(samples, {after, loop[i], before});
       if (best < 0 || radius < best_radius) best = i, best_radius = radius;
     }
@@ -97,6 +127,9 @@ inline std::vector<Facet<3>> fill_of_loop(
     const Facet<3> ear = {loop[(best + 1) % k], loop[best], loop[(best + k - 1) % k]};
     if (over_opening(ear)) return {};
     fill.push_back(ear);
+    // The ear's edge before -> after is the loop's edge now.
+    normals[(best + k - 1) % k] = normal_of(ear[0], ear[1], ear[2]);
+    normals.erase(normals.begin() + best);
     loop.erase(loop.begin() + best);
   }
   return fill;
@@ -112,7 +145,7 @@ inline std::size_t fill_gaps(const std::vector<Point<3>>& samples, std::vector<F
   }
   std::size_t filled = 0;
   for (const auto& loop : simple_border_loops(surface)) {
-    if (static_cast<int>(loop.size()) > longest_gap_filled) continue;
+    if (static_cast<int>(loop.vertices.size()) > longest_gap_filled) continue;
     const std::vector<Facet<3>> fill = fill_of_loop(samples, loop, edges, over_opening);
     if (fill.empty()) continue;
     for (const auto& t : fill) {

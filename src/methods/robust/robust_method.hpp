@@ -11,7 +11,8 @@
 // go, and the rest is made a manifold (bordered_surface.hpp):
 //   6d. openings    the triangles wider than the samples' spacing there removed
 //   6e. pruning, walk  the manifold extraction of the candidates left
-//   6f. gaps        the small border loops that are no openings filled (gap_filling.hpp)
+//   6f. mending     samples left off attached, sharp notches closed, small loops that are gaps
+//                   filled (left_off_samples.hpp, gap_filling.hpp)
 #pragma once
 
 #include <sculpt/sculpt.hpp>

@@ -1,0 +1,204 @@
+// Samples left off a bordered surface, attached to its border, and the border's sharp notches
+// closed. Where the paper's candidates fold along a border (the corners of a sheet, a patch of
+// a flat face at its edge), the extraction can keep border edges that pass by samples belonging
+// beyond them, and those samples are left off: the surface no longer interpolates them. A front
+// advances from the border over them, as an advancing front does, one layer a round:
+//
+//   repeat while some sample was attached:
+//     for each sample s on no triangle, the narrowest triangle (b, a, s) on a border edge
+//       (a, b) at s's nearest border vertices that may be added (not over an opening, by the
+//       test that took the openings out: core/spanning_openings.hpp; turned less than 90
+//       degrees from the triangle on (a, b))
+//     add (b, a, s) where s and (a, b) choose each other (s is the narrowest for the edge too:
+//       near samples go first, far ones do not reach over them)
+//   then, where the border runs u -> v -> w at an angle under 60 degrees at v (the spikes the
+//   front leaves), add (w, v, u) when it may be added and u-w is no edge yet
+//
+// The border loop a -> b becomes a -> s -> b, and u -> v -> w becomes u -> w: the surface
+// stays a manifold with the same loops.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <sculpt/sculpt.hpp>
+#include <unordered_map>
+#include <vector>
+
+#include "../../core/point_tree.hpp"
+#include "../../core/spanning_openings.hpp"
+#include "../extraction/manifold_extraction.hpp"
+
+namespace sculpt {
+
+// How many of the nearest border vertices offer their border edges to a left-off sample.
+inline constexpr int border_vertices_asked = 8;
+
+// Attaches the samples on no triangle of `surface` to its border where they fit; returns how many.
+inline std::size_t attach_left_off_samples(
+    const std::vector<Point<3>>& samples, std::vector<Facet<3>>& surface,
+    const std::function<bool(const Facet<3>&)>& over_opening) {
+  using extraction_detail::cross;
+  using extraction_detail::dot;
+  using extraction_detail::edge_key;
+  using extraction_detail::minus;
+  std::vector<char> on_surface(samples.size(), 0);
+  for (const auto& t : surface) {
+    for (int v : t) on_surface[v] = 1;
+  }
+  std::size_t attached = 0;
+  for (bool progress = true; progress;) {
+    progress = false;
+    std::vector<int> left_off;
+    for (int s = 0; s < static_cast<int>(samples.size()); ++s) {
+      if (!on_surface[s]) left_off.push_back(s);
+    }
+    if (left_off.empty()) break;
+    // The border: each directed edge a -> b of a triangle (a, b, c) whose edge is on no other,
+    // with its c.
+    std::unordered_map<std::uint64_t, int> uses;
+    for (const auto& t : surface) {
+      for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
+    }
+    std::unordered_map<std::uint64_t, int> apex_of;  // directed (a << 32 | b) -> c
+    std::vector<std::uint64_t> edge_list;            // the directed keys, sorted
+    for (const auto& t : surface) {
+      for (int j = 0; j < 3; ++j) {
+        const int a = t[j], b = t[(j + 1) % 3];
+        if (uses[edge_key(a, b)] != 1) continue;
+        const std::uint64_t key =
+            (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+            static_cast<std::uint32_t>(b);
+        apex_of[key] = t[(j + 2) % 3];
+        edge_list.push_back(key);
+      }
+    }
+    if (edge_list.empty()) break;
+    std::sort(edge_list.begin(), edge_list.end());
+    std::unordered_map<int, std::vector<int>> border_edges_at;  // vertex -> its edges' indices
+    std::vector<int> border_vertices;
+    std::vector<Point<3>> border_points;
+    for (int index = 0; index < static_cast<int>(edge_list.size()); ++index) {
+      for (int v : {static_cast<int>(edge_list[index] >> 32),
+                    static_cast<int>(edge_list[index] & 0xffffffffu)}) {
+        auto& at = border_edges_at[v];
+        if (at.empty()) {
+          border_vertices.push_back(v);
+          border_points.push_back(samples[v]);
+        }
+        at.push_back(index);
+      }
+    }
+    const Point_tree<3> tree(border_points.data(), border_points.data() + border_points.size());
+    // Each left-off sample's narrowest fitting triangle on a border edge; each border edge's
+    // narrowest over all the samples it fits. A sample goes on its edge when they choose each
+    // other: the front then advances by one layer a round, nearest samples first, instead of
+    // far samples reaching over near ones.
+    std::vector<int> chosen_edge(left_off.size(), -1);
+    std::vector<double> chosen_radius(left_off.size(), INFINITY);
+    std::vector<double> narrowest_at_edge(edge_list.size(), INFINITY);
+    for (std::size_t i = 0; i < left_off.size(); ++i) {
+      const int s = left_off[i];
+      for (int near : tree.k_nearest_to(samples[s], border_vertices_asked)) {
+        for (int e : border_edges_at[border_vertices[near]]) {
+          const std::uint64_t key = edge_list[e];
+          const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+          const int c = apex_of[key];
+          const Facet<3> added = {b, a, s};
+          const double radius = facet_circumradius<3>(samples, added);
+          if (!(radius < chosen_radius[i]) && !(radius < narrowest_at_edge[e])) continue;
+          // The triangle leaned on, (a, b, c), and the one added, (b, a, s), face the same side
+          // of the surface when the fold between them is under 90 degrees.
+          const auto leaned = cross(minus(samples[b], samples[a]), minus(samples[c], samples[a]));
+          const auto added_normal =
+              cross(minus(samples[a], samples[b]), minus(samples[s], samples[b]));
+          if (dot(leaned, added_normal) <= 0 || over_opening(added)) continue;
+          narrowest_at_edge[e] = std::min(narrowest_at_edge[e], radius);
+          if (radius < chosen_radius[i]) chosen_edge[i] = e, chosen_radius[i] = radius;
+        }
+      }
+    }
+    for (std::size_t i = 0; i < left_off.size(); ++i) {
+      const int e = chosen_edge[i];
+      if (e < 0 || chosen_radius[i] > narrowest_at_edge[e]) continue;
+      narrowest_at_edge[e] = -1;  // taken: a second sample with the same radius waits
+      const std::uint64_t key = edge_list[e];
+      surface.push_back(
+          {static_cast<int>(key & 0xffffffffu), static_cast<int>(key >> 32), left_off[i]});
+      on_surface[left_off[i]] = 1;
+      ++attached;
+      progress = true;
+    }
+  }
+  return attached;
+}
+
+// The largest angle at a border vertex, between its two border edges, that is a notch to close.
+inline constexpr double sharpest_notch_kept = 60.0 * M_PI / 180;
+
+// Closes the sharp notches of the border: where the border runs u -> v -> w with an angle at v
+// under 60 degrees, the triangle (w, v, u) is added when it is not over an opening, turns less
+// than 90 degrees from both triangles it leans on and u-w is no edge yet; repeated until none is
+// left. Returns how many were closed.
+inline std::size_t close_border_notches(const std::vector<Point<3>>& samples,
+                                        std::vector<Facet<3>>& surface,
+                                        const std::function<bool(const Facet<3>&)>& over_opening) {
+  using extraction_detail::cross;
+  using extraction_detail::dot;
+  using extraction_detail::edge_key;
+  using extraction_detail::minus;
+  std::size_t closed = 0;
+  for (bool progress = true; progress;) {
+    progress = false;
+    std::unordered_map<std::uint64_t, int> uses;
+    for (const auto& t : surface) {
+      for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
+    }
+    // Per border vertex: the border edge arriving and the one leaving, with their triangles'
+    // third vertices; -1 where there is none, -2 where there are several.
+    struct Ends {
+      int from = -1, from_apex = -1, to = -1, to_apex = -1;
+    };
+    std::unordered_map<int, Ends> ends;
+    for (const auto& t : surface) {
+      for (int j = 0; j < 3; ++j) {
+        const int a = t[j], b = t[(j + 1) % 3], c = t[(j + 2) % 3];
+        if (uses[edge_key(a, b)] != 1) continue;
+        Ends& at_a = ends[a];
+        at_a.to = at_a.to == -1 ? b : -2;
+        at_a.to_apex = c;
+        Ends& at_b = ends[b];
+        at_b.from = at_b.from == -1 ? a : -2;
+        at_b.from_apex = c;
+      }
+    }
+    std::vector<int> border(ends.size());
+    std::transform(ends.begin(), ends.end(), border.begin(), [](const auto& e) { return e.first; });
+    std::sort(border.begin(), border.end());
+    std::vector<char> touched(samples.size(), 0);
+    for (int v : border) {
+      const Ends& e = ends[v];
+      const int u = e.from, w = e.to;
+      if (u < 0 || w < 0 || u == w || touched[u] || touched[v] || touched[w]) continue;
+      const auto to_u = minus(samples[u], samples[v]), to_w = minus(samples[w], samples[v]);
+      const double lengths = std::sqrt(dot(to_u, to_u) * dot(to_w, to_w));
+      if (lengths == 0 || dot(to_u, to_w) <= std::cos(sharpest_notch_kept) * lengths) continue;
+      if (uses.count(edge_key(u, w))) continue;
+      const Facet<3> added = {w, v, u};
+      const auto normal = cross(minus(samples[v], samples[w]), minus(samples[u], samples[w]));
+      const auto leaned_u =
+          cross(minus(samples[v], samples[u]), minus(samples[e.from_apex], samples[u]));
+      const auto leaned_w =
+          cross(minus(samples[w], samples[v]), minus(samples[e.to_apex], samples[v]));
+      if (dot(normal, leaned_u) <= 0 || dot(normal, leaned_w) <= 0 || over_opening(added)) continue;
+      surface.push_back(added);
+      touched[u] = touched[v] = touched[w] = 1;
+      ++closed;
+      progress = true;
+    }
+  }
+  return closed;
+}
+
+}  // namespace sculpt
