@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/spanning_openings.hpp"
+#include "methods/robust/bordered_surface.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -177,6 +178,33 @@ TEST(Bordered_surface, NeighbourhoodSpacingIsTheMedianAroundASample) {
     for (int j = 0; j < 7; ++j) spacings.push_back(own[by_distance[j].second]);
     std::sort(spacings.begin(), spacings.end());
     EXPECT_DOUBLE_EQ(around[s], spacings[3]) << "sample " << s;
+  }
+}
+
+// A row of samples running out from a sheet's border, far beyond its spacing: mending attaches
+// none of them by a triangle wider than the openings' growth ratio allows (before, a triangle
+// whose circle's middle held other samples could reach 45 spacings out), and the surface stays
+// a manifold.
+TEST(Bordered_surface, SamplesFarOffTheSheetAreNotReachedFor) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<double> jitter(-0.1, 0.1);
+  std::vector<Point<3>> samples;
+  for (int i = 0; i < 30; ++i) {
+    for (int j = 0; j < 30; ++j) {
+      samples.push_back({i + jitter(random), j + jitter(random), 0.1 * jitter(random)});
+    }
+  }
+  const int row = static_cast<int>(samples.size());
+  for (int k = 1; k <= 30; ++k) {
+    samples.push_back({15.3, -1.0 * k + jitter(random) / 2, 0.1 * jitter(random)});
+  }
+  const auto result = reconstruct(samples, of_kind(Surface_kind::bordered));
+  EXPECT_EQ(result.stats.non_manifold_ridges, 0u);
+  const std::vector<double> spacing = neighbourhood_spacings(samples);
+  for (const auto& t : result.surface) {
+    if (std::max({t[0], t[1], t[2]}) < row) continue;
+    EXPECT_FALSE(spans_opening<3>(samples, spacing, t, opening_growth_ratio))
+        << "a wide triangle to the row: " << t[0] << " " << t[1] << " " << t[2];
   }
 }
 

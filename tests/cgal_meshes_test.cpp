@@ -99,9 +99,9 @@ TEST(Cgal_meshes, UndersampledFemurHasFiveTimesFewerDefects) {
 
 // Shells with holes, reconstructed without saying so: the automatic kind keeps them bordered.
 // mech-holes-shark (a part with 4 border loops) comes out with its 4 (of the 20 samples of a
-// flat patch at its edge the extraction leaves off, 19 are attached again); holes.off (a shell with 7) with its outer border exactly and five of its six
-// holes: the sixth, 16 rim samples, is under what the rule tells from a gap in the sampling
-// (spanning_openings.hpp) and stays closed.
+// flat patch at its edge the extraction leaves off, 19 are attached again); holes.off (a shell with
+// 7) with its outer border exactly and five of its six holes: the sixth, 16 rim samples, is under
+// what the rule tells from a gap in the sampling (spanning_openings.hpp) and stays closed.
 TEST(Cgal_meshes, ShellsWithHolesKeepTheirBorders) {
   const auto shark = reconstruct_mesh("mech-holes-shark.off", Method::robust);
   EXPECT_EQ(shark.own.boundary_loops, 4u);

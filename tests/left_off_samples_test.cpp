@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 namespace sculpt {
 namespace {
@@ -73,6 +74,17 @@ TEST(Left_off_samples, ARowOfSamplesIsAttachedNearestFirst) {
   for (std::size_t t = first; t < sheet.triangles.size(); ++t) {
     EXPECT_GT(facing_up(sheet.points, sheet.triangles[t]), 0);
   }
+}
+
+TEST(Left_off_samples, OneTriangleARoundAtABorderVertex) {
+  // Below the border edges (0, 0) - (1, 0) and (1, 0) - (2, 0), one sample each: both fit, but
+  // their triangles share the vertex (1, 0) and could overlap, so they go on in two rounds.
+  Sheet sheet = grid_sheet();
+  sheet.points.push_back({0.5, -0.4, 0});  // 16
+  sheet.points.push_back({1.5, -0.4, 0});  // 17
+  EXPECT_EQ(attach_left_off_samples(sheet.points, sheet.triangles, anything_may_be_added), 2u);
+  const std::set<Facet<3>> added(sheet.triangles.end() - 2, sheet.triangles.end());
+  EXPECT_EQ(added, (std::set<Facet<3>>{{1, 0, 16}, {2, 1, 17}}));
 }
 
 TEST(Left_off_samples, ASharpNotchBetweenTwoSpikesIsClosed) {

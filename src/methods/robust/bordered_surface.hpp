@@ -78,18 +78,26 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   result.stats.spanning_facets = candidates.spanning.size();
   // Borders are expected: the rims are kept from the start (pruning them would eat the sheet).
   extract_manifold(samples, result, clock, Rims::kept);
-  // Mending the border: a triangle may be added where it is not over an opening by the growth
-  // ratio, and only where the spacing is known (not with fewer samples than it counts).
+  // Mending the border, only where the spacing is known (not with fewer samples than it counts).
+  // A triangle reaching out to a left-off sample or across a notch may not be wider than the
+  // growth ratio allows, however full the middle of its circle: that waiver, for slivers amid
+  // the sheet, would let a triangle reach far out to samples off it. Inside a small loop a
+  // sliver with its circle's middle on the sheet is what the loop needs, as in the removal.
   clock.start("mending");
-  const auto not_to_add = [&](const Facet<3>& facet) {
-    for (int v : facet) {
-      if (!std::isfinite(spacing[v])) return true;
-    }
-    return over_opening(facet, opening_growth_ratio);
+  const auto spacing_unknown = [&](const Facet<3>& facet) {
+    return !std::isfinite(spacing[facet[0]]) || !std::isfinite(spacing[facet[1]]) ||
+           !std::isfinite(spacing[facet[2]]);
   };
-  result.stats.attached_samples = attach_left_off_samples(samples, result.surface, not_to_add);
-  result.stats.closed_notches = close_border_notches(samples, result.surface, not_to_add);
-  result.stats.filled_gaps = fill_gaps(samples, result.surface, not_to_add);
+  const auto too_wide = [&](const Facet<3>& facet) {
+    return spacing_unknown(facet) ||
+           spans_opening<3>(samples, spacing, facet, opening_growth_ratio);
+  };
+  const auto over_an_opening = [&](const Facet<3>& facet) {
+    return spacing_unknown(facet) || over_opening(facet, opening_growth_ratio);
+  };
+  result.stats.attached_samples = attach_left_off_samples(samples, result.surface, too_wide);
+  result.stats.closed_notches = close_border_notches(samples, result.surface, too_wide);
+  result.stats.filled_gaps = fill_gaps(samples, result.surface, over_an_opening);
 }
 
 }  // namespace sculpt

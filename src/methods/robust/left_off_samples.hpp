@@ -6,11 +6,11 @@
 //
 //   repeat while some sample was attached:
 //     for each sample s on no triangle, the narrowest triangle (b, a, s) on a border edge
-//       (a, b) at s's nearest border vertices that may be added (not over an opening, by the
-//       test that took the openings out: core/spanning_openings.hpp; turned less than 90
-//       degrees from the triangle on (a, b))
+//       (a, b) at s's nearest border vertices that may be added (not wider than 2 spacings:
+//       core/spanning_openings.hpp; turned less than 60 degrees from the triangle on (a, b))
 //     add (b, a, s) where s and (a, b) choose each other (s is the narrowest for the edge too:
-//       near samples go first, far ones do not reach over them)
+//       near samples go first, far ones do not reach over them), one at a border vertex
+//       a round (two on neighbouring edges could overlap)
 //   then, where the border runs u -> v -> w at an angle under 60 degrees at v (the spikes the
 //   front leaves), add (w, v, u) when it may be added and u-w is no edge yet
 //
@@ -34,46 +34,56 @@ namespace sculpt {
 
 // How many of the nearest border vertices offer their border edges to a left-off sample.
 inline constexpr int border_vertices_asked = 8;
+// A triangle attached turns at most this much from the one it leans on (a flap standing up from
+// the sheet puts an outlier on the surface, not a sample of it).
+inline constexpr double steepest_attachment = 60.0 * M_PI / 180;
+
+namespace mending_detail {
+
+inline std::uint64_t directed_key(int a, int b) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+         static_cast<std::uint32_t>(b);
+}
+
+}  // namespace mending_detail
 
 // Attaches the samples on no triangle of `surface` to its border where they fit; returns how many.
-inline std::size_t attach_left_off_samples(
-    const std::vector<Point<3>>& samples, std::vector<Facet<3>>& surface,
-    const std::function<bool(const Facet<3>&)>& over_opening) {
+inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
+                                           std::vector<Facet<3>>& surface,
+                                           const std::function<bool(const Facet<3>&)>& not_to_add) {
   using extraction_detail::cross;
   using extraction_detail::dot;
   using extraction_detail::edge_key;
   using extraction_detail::minus;
+  using mending_detail::directed_key;
   std::vector<char> on_surface(samples.size(), 0);
   for (const auto& t : surface) {
     for (int v : t) on_surface[v] = 1;
   }
+  std::vector<int> left_off;
+  for (int s = 0; s < static_cast<int>(samples.size()); ++s) {
+    if (!on_surface[s]) left_off.push_back(s);
+  }
+  if (left_off.empty()) return 0;
+  // The border, kept up to date as triangles are added: each directed edge a -> b of a triangle
+  // (a, b, c) whose edge is on no other, with its c.
+  std::unordered_map<std::uint64_t, int> uses;
+  for (const auto& t : surface) {
+    for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
+  }
+  std::unordered_map<std::uint64_t, int> apex_of;  // directed (a << 32 | b) -> c
+  for (const auto& t : surface) {
+    for (int j = 0; j < 3; ++j) {
+      const int a = t[j], b = t[(j + 1) % 3];
+      if (uses[edge_key(a, b)] == 1) apex_of[directed_key(a, b)] = t[(j + 2) % 3];
+    }
+  }
+  const double cos_steepest = std::cos(steepest_attachment);
   std::size_t attached = 0;
-  for (bool progress = true; progress;) {
+  for (bool progress = true; progress && !left_off.empty();) {
     progress = false;
-    std::vector<int> left_off;
-    for (int s = 0; s < static_cast<int>(samples.size()); ++s) {
-      if (!on_surface[s]) left_off.push_back(s);
-    }
-    if (left_off.empty()) break;
-    // The border: each directed edge a -> b of a triangle (a, b, c) whose edge is on no other,
-    // with its c.
-    std::unordered_map<std::uint64_t, int> uses;
-    for (const auto& t : surface) {
-      for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
-    }
-    std::unordered_map<std::uint64_t, int> apex_of;  // directed (a << 32 | b) -> c
-    std::vector<std::uint64_t> edge_list;            // the directed keys, sorted
-    for (const auto& t : surface) {
-      for (int j = 0; j < 3; ++j) {
-        const int a = t[j], b = t[(j + 1) % 3];
-        if (uses[edge_key(a, b)] != 1) continue;
-        const std::uint64_t key =
-            (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-            static_cast<std::uint32_t>(b);
-        apex_of[key] = t[(j + 2) % 3];
-        edge_list.push_back(key);
-      }
-    }
+    std::vector<std::uint64_t> edge_list;  // the border's directed keys, sorted
+    for (const auto& [key, apex] : apex_of) edge_list.push_back(key);
     if (edge_list.empty()) break;
     std::sort(edge_list.begin(), edge_list.end());
     std::unordered_map<int, std::vector<int>> border_edges_at;  // vertex -> its edges' indices
@@ -108,28 +118,39 @@ inline std::size_t attach_left_off_samples(
           const Facet<3> added = {b, a, s};
           const double radius = facet_circumradius<3>(samples, added);
           if (!(radius < chosen_radius[i]) && !(radius < narrowest_at_edge[e])) continue;
-          // The triangle leaned on, (a, b, c), and the one added, (b, a, s), face the same side
-          // of the surface when the fold between them is under 90 degrees.
+          // The triangle leaned on, (a, b, c), and the one added, (b, a, s): the turn between
+          // their normals.
           const auto leaned = cross(minus(samples[b], samples[a]), minus(samples[c], samples[a]));
-          const auto added_normal =
-              cross(minus(samples[a], samples[b]), minus(samples[s], samples[b]));
-          if (dot(leaned, added_normal) <= 0 || over_opening(added)) continue;
+          const auto normal = cross(minus(samples[a], samples[b]), minus(samples[s], samples[b]));
+          const double lengths = std::sqrt(dot(leaned, leaned) * dot(normal, normal));
+          if (!(dot(leaned, normal) > cos_steepest * lengths) || not_to_add(added)) continue;
           narrowest_at_edge[e] = std::min(narrowest_at_edge[e], radius);
           if (radius < chosen_radius[i]) chosen_edge[i] = e, chosen_radius[i] = radius;
         }
       }
     }
+    // One triangle a round at a border vertex: two added on neighbouring edges could overlap.
+    std::vector<char> touched(samples.size(), 0);
+    std::vector<int> still_left_off;
     for (std::size_t i = 0; i < left_off.size(); ++i) {
-      const int e = chosen_edge[i];
-      if (e < 0 || chosen_radius[i] > narrowest_at_edge[e]) continue;
-      narrowest_at_edge[e] = -1;  // taken: a second sample with the same radius waits
-      const std::uint64_t key = edge_list[e];
-      surface.push_back(
-          {static_cast<int>(key & 0xffffffffu), static_cast<int>(key >> 32), left_off[i]});
-      on_surface[left_off[i]] = 1;
+      const int e = chosen_edge[i], s = left_off[i];
+      const std::uint64_t key = e < 0 ? 0 : edge_list[e];
+      const int a = static_cast<int>(key >> 32), b = static_cast<int>(key & 0xffffffffu);
+      if (e < 0 || chosen_radius[i] > narrowest_at_edge[e] || touched[a] || touched[b]) {
+        still_left_off.push_back(s);
+        continue;
+      }
+      touched[a] = touched[b] = 1;
+      surface.push_back({b, a, s});
+      apex_of.erase(key);
+      ++uses[edge_key(a, b)];
+      apex_of[directed_key(a, s)] = b;
+      apex_of[directed_key(s, b)] = a;
+      uses[edge_key(a, s)] = uses[edge_key(s, b)] = 1;
       ++attached;
       progress = true;
     }
+    left_off = std::move(still_left_off);
   }
   return attached;
 }
@@ -138,12 +159,12 @@ inline std::size_t attach_left_off_samples(
 inline constexpr double sharpest_notch_kept = 60.0 * M_PI / 180;
 
 // Closes the sharp notches of the border: where the border runs u -> v -> w with an angle at v
-// under 60 degrees, the triangle (w, v, u) is added when it is not over an opening, turns less
-// than 90 degrees from both triangles it leans on and u-w is no edge yet; repeated until none is
-// left. Returns how many were closed.
+// under 60 degrees, the triangle (w, v, u) is added when it may be added (not_to_add), turns
+// less than 90 degrees from both triangles it leans on and u-w is no edge yet; repeated until
+// none is left. Returns how many were closed.
 inline std::size_t close_border_notches(const std::vector<Point<3>>& samples,
                                         std::vector<Facet<3>>& surface,
-                                        const std::function<bool(const Facet<3>&)>& over_opening) {
+                                        const std::function<bool(const Facet<3>&)>& not_to_add) {
   using extraction_detail::cross;
   using extraction_detail::dot;
   using extraction_detail::edge_key;
@@ -191,7 +212,7 @@ inline std::size_t close_border_notches(const std::vector<Point<3>>& samples,
           cross(minus(samples[v], samples[u]), minus(samples[e.from_apex], samples[u]));
       const auto leaned_w =
           cross(minus(samples[w], samples[v]), minus(samples[e.to_apex], samples[v]));
-      if (dot(normal, leaned_u) <= 0 || dot(normal, leaned_w) <= 0 || over_opening(added)) continue;
+      if (dot(normal, leaned_u) <= 0 || dot(normal, leaned_w) <= 0 || not_to_add(added)) continue;
       surface.push_back(added);
       touched[u] = touched[v] = touched[w] = 1;
       ++closed;
