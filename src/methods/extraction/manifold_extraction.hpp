@@ -25,12 +25,14 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <sculpt/sculpt.hpp>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
 #include "../../core/stage_clock.hpp"
+#include "ray_crossings.hpp"
 
 namespace sculpt {
 
@@ -225,36 +227,6 @@ inline std::vector<Facet<3>> prune_candidates(const std::vector<Point<3>>& point
   return pruned;
 }
 
-// A direction for the inside test's rays, in no plane of the coordinate axes, so that a ray from
-// a sample rarely passes exactly through another sample or along an edge (which a ray towards
-// +x does at once on inputs sampled on a grid).
-inline constexpr std::array<double, 3> ray_direction{1.0, 0.3183098861837907, 0.2236067977499790};
-
-// Whether p lies inside the closed surface made of these triangles: the ray from p crosses it
-// an odd number of times.
-inline bool encloses(const std::vector<Point<3>>& points, const std::vector<Facet<3>>& surface,
-                     std::size_t first, std::size_t last, const Point<3>& p) {
-  using namespace extraction_detail;
-  const Vector& d = ray_direction;
-  bool inside = false;
-  for (std::size_t i = first; i < last; ++i) {
-    const Facet<3>& t = surface[i];
-    const Point<3>& a = points[t[0]];
-    const Vector e1 = minus(points[t[1]], a), e2 = minus(points[t[2]], a);
-    const Vector h = cross(d, e2);
-    const double det = dot(e1, h);
-    if (det == 0) continue;  // the ray runs parallel to the triangle
-    const Vector from_a = minus(p, a);
-    const double u = dot(from_a, h) / det;
-    if (u < 0 || u > 1) continue;
-    const Vector q = cross(from_a, e1);
-    const double v = dot(d, q) / det;
-    if (v < 0 || u + v > 1) continue;
-    if (dot(e2, q) / det > 0) inside = !inside;
-  }
-  return inside;
-}
-
 // The outer boundary of the triangles' union, oriented outward: one walk per piece, each started
 // at the triangle of the piece's extreme sample (largest x) whose normal points most along x.
 inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& points,
@@ -279,6 +251,7 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
   struct Piece {
     std::size_t first, last;  // its triangles in `surface`
     Point<3> lower, upper;
+    std::unique_ptr<Ray_crossings> crossings;       // made when first asked
     bool holds_ray_from(const Point<3>& p) const {  // the ray meets the box (slab test)
       double enter = 0, leave = HUGE_VAL;
       for (int k = 0; k < 3; ++k) {
@@ -317,10 +290,12 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
     // The seed: at a piece's extreme sample the outside of that piece lies towards +x; the
     // solid's outside too, unless the piece lies inside the surface walked so far (a cavity).
     bool inside = false;
-    for (const Piece& piece : pieces) {
-      if (piece.holds_ray_from(points[start])) {
-        inside ^= encloses(points, surface, piece.first, piece.last, points[start]);
+    for (Piece& piece : pieces) {
+      if (!piece.holds_ray_from(points[start])) continue;
+      if (!piece.crossings) {
+        piece.crossings = std::make_unique<Ray_crossings>(points, surface, piece.first, piece.last);
       }
+      inside ^= piece.crossings->odd_from(points[start]);
     }
     int seed = -1;
     double best = -1;
@@ -373,7 +348,7 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
         front.push_back(next_oriented);
       }
     }
-    Piece piece{first_of_piece, surface.size(), points[start], points[start]};
+    Piece piece{first_of_piece, surface.size(), points[start], points[start], nullptr};
     for (std::size_t t = first_of_piece; t < surface.size(); ++t) {
       for (int v : surface[t]) {
         on_surface[v] = 1;
@@ -383,7 +358,7 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
         }
       }
     }
-    pieces.push_back(piece);
+    pieces.push_back(std::move(piece));
   }
   return surface;
 }
