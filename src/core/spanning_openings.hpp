@@ -61,9 +61,10 @@ std::vector<double> sample_spacings(const std::vector<Point<D>>& samples) {
 // spacing there. Used where a surface is known to have borders (the bordered rule), not by the
 // kind choice: on closed surfaces the median lets more facets look wide (the largest ratio on the
 // closed test shapes, 1.84 with the own spacing, is 2.36 with the median).
-inline std::vector<double> neighbourhood_spacings(const std::vector<Point<3>>& samples) {
+// `tree` holds the samples.
+inline std::vector<double> neighbourhood_spacings(const std::vector<Point<3>>& samples,
+                                                  const Point_tree<3>& tree) {
   constexpr int k = spacing_neighbour<3> + 1;  // the sample and its 6 nearest
-  const Point_tree<3> tree(samples.data(), samples.data() + samples.size());
   const std::vector<int> nearest = tree.k_nearest(k);
   const auto at = [&](std::size_t s, int j) { return nearest[s * k + j]; };
   std::vector<double> own(samples.size(), INFINITY);
@@ -83,6 +84,11 @@ inline std::vector<double> neighbourhood_spacings(const std::vector<Point<3>>& s
     spacing[s] = around[found / 2];
   }
   return spacing;
+}
+
+inline std::vector<double> neighbourhood_spacings(const std::vector<Point<3>>& samples) {
+  return neighbourhood_spacings(samples,
+                                Point_tree<3>(samples.data(), samples.data() + samples.size()));
 }
 
 // The radius of the smallest circle through a facet's vertices: half an edge's length, or a

@@ -33,22 +33,11 @@
 
 #include "../../core/stage_clock.hpp"
 #include "ray_crossings.hpp"
+#include "vector3.hpp"
 
 namespace sculpt {
 
 namespace extraction_detail {
-
-using Vector = std::array<double, 3>;
-
-inline Vector minus(const Point<3>& a, const Point<3>& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-inline double dot(const Vector& a, const Vector& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-inline Vector cross(const Vector& a, const Vector& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 
 inline std::uint64_t edge_key(int a, int b) {
   if (a > b) std::swap(a, b);

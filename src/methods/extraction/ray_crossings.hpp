@@ -16,6 +16,8 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "vector3.hpp"
+
 namespace sculpt {
 
 // A direction for the rays, in no plane of the coordinate axes, so that a ray from a sample
@@ -25,16 +27,9 @@ inline constexpr std::array<double, 3> ray_direction{1.0, 0.3183098861837907, 0.
 
 // Whether the ray from p along ray_direction crosses the triangle (Möller & Trumbore).
 inline bool ray_crosses(const std::vector<Point<3>>& points, const Facet<3>& t, const Point<3>& p) {
-  const auto minus = [](const Point<3>& a, const Point<3>& b) {
-    return std::array<double, 3>{a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-  };
-  const auto cross = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return std::array<double, 3>{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
-                                 a[0] * b[1] - a[1] * b[0]};
-  };
-  const auto dot = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  };
+  using extraction_detail::cross;
+  using extraction_detail::dot;
+  using extraction_detail::minus;
   const auto& d = ray_direction;
   const Point<3>& a = points[t[0]];
   const auto e1 = minus(points[t[1]], a), e2 = minus(points[t[2]], a);
@@ -114,12 +109,10 @@ class Ray_crossings {
   static std::array<double, 2> shadow(const Point<3>& p) {
     const auto& d = ray_direction;
     // across = d x (0, 0, 1), up = d x across (not normalised: only their directions matter).
-    const std::array<double, 3> across = {d[1], -d[0], 0};
-    const std::array<double, 3> up = {d[1] * across[2] - d[2] * across[1],
-                                      d[2] * across[0] - d[0] * across[2],
-                                      d[0] * across[1] - d[1] * across[0]};
-    return {p[0] * across[0] + p[1] * across[1] + p[2] * across[2],
-            p[0] * up[0] + p[1] * up[1] + p[2] * up[2]};
+    const extraction_detail::Vector across = {d[1], -d[0], 0};
+    const extraction_detail::Vector up = extraction_detail::cross(d, across);
+    const extraction_detail::Vector at = {p[0], p[1], p[2]};
+    return {extraction_detail::dot(at, across), extraction_detail::dot(at, up)};
   }
 
   int cell(double x, int axis) const {

@@ -40,8 +40,8 @@ inline constexpr double opening_growth_ratio = 2.0;
 inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>& result,
                          Stage_clock& clock) {
   clock.start("openings");
-  const std::vector<double> spacing = neighbourhood_spacings(samples);
   const Point_tree<3> tree(samples.data(), samples.data() + samples.size());
+  const std::vector<double> spacing = neighbourhood_spacings(samples, tree);
   const auto over_opening = [&](const Facet<3>& facet, double ratio) {
     return spans_opening<3>(samples, spacing, facet, ratio) &&
            !circle_middle_on_the_sheet(samples, tree, facet);

@@ -26,6 +26,7 @@
 
 #include "../../core/spanning_openings.hpp"
 #include "../extraction/manifold_extraction.hpp"
+#include "border_edges.hpp"
 
 namespace sculpt {
 
@@ -42,22 +43,14 @@ struct Border_loop {
 
 // The border loops that are simple cycles: a loop through a vertex where more or fewer than one
 // border edge arrives or leaves is left out.
-inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles) {
-  using extraction_detail::edge_key;
-  std::unordered_map<std::uint64_t, int> uses;
-  for (const auto& t : triangles) {
-    for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
-  }
+inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles,
+                                                    const Edge_uses& uses) {
   std::unordered_map<int, std::pair<int, int>> next;  // vertex -> (next vertex, apex)
   std::unordered_map<int, int> arriving;
   std::unordered_set<int> branching;
-  for (const auto& t : triangles) {
-    for (int j = 0; j < 3; ++j) {
-      const int a = t[j], b = t[(j + 1) % 3];
-      if (uses[edge_key(a, b)] != 1) continue;
-      if (!next.emplace(a, std::make_pair(b, t[(j + 2) % 3])).second) branching.insert(a);
-      if (++arriving[b] > 1) branching.insert(b);
-    }
+  for (const auto& [a, b, apex] : border_edges(triangles, uses)) {
+    if (!next.emplace(a, std::make_pair(b, apex)).second) branching.insert(a);
+    if (++arriving[b] > 1) branching.insert(b);
   }
   std::vector<int> starts;
   for (const auto& [v, unused] : next) starts.push_back(v);
@@ -86,14 +79,17 @@ inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>&
   return loops;
 }
 
+inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles) {
+  return simple_border_loops(triangles, edge_uses(triangles));
+}
+
 // A triangulation of the loop by ear clipping, each time the ear with the smallest circumradius
 // among those that continue the surface: facing against the loop's edges, turned less than 90
 // degrees from the triangles on the edges they cover (an ear at a reflex corner, or across the
 // outer border of a sheet, lies back over the surface and fails this), and whose new edge is not
 // an edge of the surface already. Empty when no ear is left or the one taken may not be added.
 inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
-                                          const Border_loop& border,
-                                          const std::unordered_set<std::uint64_t>& edges,
+                                          const Border_loop& border, const Edge_uses& edges,
                                           const std::function<bool(const Facet<3>&)>& not_to_add) {
   using extraction_detail::cross;
   using extraction_detail::dot;
@@ -140,18 +136,15 @@ inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
 inline std::size_t fill_gaps(const std::vector<Point<3>>& samples, std::vector<Facet<3>>& surface,
                              const std::function<bool(const Facet<3>&)>& not_to_add) {
   using extraction_detail::edge_key;
-  std::unordered_set<std::uint64_t> edges;
-  for (const auto& t : surface) {
-    for (int j = 0; j < 3; ++j) edges.insert(edge_key(t[j], t[(j + 1) % 3]));
-  }
+  Edge_uses edges = edge_uses(surface);
   std::size_t filled = 0;
-  for (const auto& loop : simple_border_loops(surface)) {
+  for (const auto& loop : simple_border_loops(surface, edges)) {
     if (static_cast<int>(loop.vertices.size()) > longest_gap_filled) continue;
     const std::vector<Facet<3>> fill = fill_of_loop(samples, loop, edges, not_to_add);
     if (fill.empty()) continue;
     for (const auto& t : fill) {
       surface.push_back(t);
-      for (int j = 0; j < 3; ++j) edges.insert(edge_key(t[j], t[(j + 1) % 3]));
+      for (int j = 0; j < 3; ++j) ++edges[edge_key(t[j], t[(j + 1) % 3])];
     }
     ++filled;
   }

@@ -29,6 +29,7 @@
 #include "../../core/point_tree.hpp"
 #include "../../core/spanning_openings.hpp"
 #include "../extraction/manifold_extraction.hpp"
+#include "border_edges.hpp"
 
 namespace sculpt {
 
@@ -53,7 +54,6 @@ inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
                                            const std::function<bool(const Facet<3>&)>& not_to_add) {
   using extraction_detail::cross;
   using extraction_detail::dot;
-  using extraction_detail::edge_key;
   using extraction_detail::minus;
   using mending_detail::directed_key;
   std::vector<char> on_surface(samples.size(), 0);
@@ -67,16 +67,9 @@ inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
   if (left_off.empty()) return 0;
   // The border, kept up to date as triangles are added: each directed edge a -> b of a triangle
   // (a, b, c) whose edge is on no other, with its c.
-  std::unordered_map<std::uint64_t, int> uses;
-  for (const auto& t : surface) {
-    for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
-  }
   std::unordered_map<std::uint64_t, int> apex_of;  // directed (a << 32 | b) -> c
-  for (const auto& t : surface) {
-    for (int j = 0; j < 3; ++j) {
-      const int a = t[j], b = t[(j + 1) % 3];
-      if (uses[edge_key(a, b)] == 1) apex_of[directed_key(a, b)] = t[(j + 2) % 3];
-    }
+  for (const auto& [a, b, c] : border_edges(surface, edge_uses(surface))) {
+    apex_of[directed_key(a, b)] = c;
   }
   const double cos_steepest = std::cos(steepest_attachment);
   std::size_t attached = 0;
@@ -143,10 +136,8 @@ inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
       touched[a] = touched[b] = 1;
       surface.push_back({b, a, s});
       apex_of.erase(key);
-      ++uses[edge_key(a, b)];
       apex_of[directed_key(a, s)] = b;
       apex_of[directed_key(s, b)] = a;
-      uses[edge_key(a, s)] = uses[edge_key(s, b)] = 1;
       ++attached;
       progress = true;
     }
@@ -172,27 +163,20 @@ inline std::size_t close_border_notches(const std::vector<Point<3>>& samples,
   std::size_t closed = 0;
   for (bool progress = true; progress;) {
     progress = false;
-    std::unordered_map<std::uint64_t, int> uses;
-    for (const auto& t : surface) {
-      for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
-    }
+    const Edge_uses uses = edge_uses(surface);
     // Per border vertex: the border edge arriving and the one leaving, with their triangles'
     // third vertices; -1 where there is none, -2 where there are several.
     struct Ends {
       int from = -1, from_apex = -1, to = -1, to_apex = -1;
     };
     std::unordered_map<int, Ends> ends;
-    for (const auto& t : surface) {
-      for (int j = 0; j < 3; ++j) {
-        const int a = t[j], b = t[(j + 1) % 3], c = t[(j + 2) % 3];
-        if (uses[edge_key(a, b)] != 1) continue;
-        Ends& at_a = ends[a];
-        at_a.to = at_a.to == -1 ? b : -2;
-        at_a.to_apex = c;
-        Ends& at_b = ends[b];
-        at_b.from = at_b.from == -1 ? a : -2;
-        at_b.from_apex = c;
-      }
+    for (const auto& [a, b, c] : border_edges(surface, uses)) {
+      Ends& at_a = ends[a];
+      at_a.to = at_a.to == -1 ? b : -2;
+      at_a.to_apex = c;
+      Ends& at_b = ends[b];
+      at_b.from = at_b.from == -1 ? a : -2;
+      at_b.from_apex = c;
     }
     std::vector<int> border(ends.size());
     std::transform(ends.begin(), ends.end(), border.begin(), [](const auto& e) { return e.first; });

@@ -1,0 +1,44 @@
+// The border of an oriented set of triangles: the edges on one triangle only, each directed as
+// its triangle has it, with the triangle's third vertex. Mending a bordered surface starts from
+// it: the front over the left-off samples, the notches, the gaps (left_off_samples.hpp,
+// gap_filling.hpp).
+#pragma once
+
+#include <cstdint>
+#include <sculpt/sculpt.hpp>
+#include <unordered_map>
+#include <vector>
+
+#include "../extraction/manifold_extraction.hpp"
+
+namespace sculpt {
+
+// How many triangles each edge is on, by extraction_detail::edge_key.
+using Edge_uses = std::unordered_map<std::uint64_t, int>;
+
+inline Edge_uses edge_uses(const std::vector<Facet<3>>& triangles) {
+  Edge_uses uses;
+  for (const auto& t : triangles) {
+    for (int j = 0; j < 3; ++j) ++uses[extraction_detail::edge_key(t[j], t[(j + 1) % 3])];
+  }
+  return uses;
+}
+
+struct Border_edge {
+  int from, to, apex;  // the triangle (from, to, apex)
+};
+
+// The edges on one triangle only, in the order of the triangles.
+inline std::vector<Border_edge> border_edges(const std::vector<Facet<3>>& triangles,
+                                             const Edge_uses& uses) {
+  std::vector<Border_edge> border;
+  for (const auto& t : triangles) {
+    for (int j = 0; j < 3; ++j) {
+      const int a = t[j], b = t[(j + 1) % 3];
+      if (uses.at(extraction_detail::edge_key(a, b)) == 1) border.push_back({a, b, t[(j + 2) % 3]});
+    }
+  }
+  return border;
+}
+
+}  // namespace sculpt
