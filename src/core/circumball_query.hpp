@@ -54,15 +54,24 @@ class Circumball_query {
   // Whether a point lies in the circumball of `cell`, whose circumcentre Traits::circumcenter
   // gave as `center`.
   bool holds_point(Cell_handle cell, const Point<D>& center) const {
+    return holds_point(cell, center, [](int) { return true; });
+  }
+
+  // Whether a point i with counts(i) true lies in the circumball of `cell` (i: its index among
+  // the points given).
+  template <class Counts>
+  bool holds_point(Cell_handle cell, const Point<D>& center, Counts&& counts) const {
     if (empty_) return false;
     const Point<D> search_center = well_conditioned(cell) ? center : exact_center(cell);
     double size = 0;
     for (int k = 0; k < D; ++k) size = std::max(size, std::abs(search_center[k]));
     const double r = std::sqrt(squared_circumradius<Traits>(cell, search_center));
     const double widened = r + 1e-6 * r + 1e-14 * size;
-    return tree_.any_within(search_center, widened * widened, [&](const Point<D>& p) {
-      return Traits::in_circumball(triangulation_, cell, Traits::to_cgal(p), perturbed_);
-    });
+    return tree_.any_within_indexed(
+        search_center, widened * widened, [&](const Point<D>& p, int i) {
+          return counts(i) &&
+                 Traits::in_circumball(triangulation_, cell, Traits::to_cgal(p), perturbed_);
+        });
   }
 
  private:

@@ -55,6 +55,14 @@ class Point_tree {
     return false;
   }
 
+  // The same, with accept(p, i) told the index i of p among the points given.
+  template <class Accept>
+  bool any_within_indexed(const Point<D>& x, double r2, Accept&& accept) const {
+    return any_within(x, r2, [&](const Point<D>& p) {
+      return accept(p, input_index_[static_cast<std::size_t>(&p - points_.data())]);
+    });
+  }
+
   bool any_within(const Point<D>& x, double r2) const {
     return any_within(x, r2, [](const Point<D>&) { return true; });
   }

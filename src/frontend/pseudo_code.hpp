@@ -146,13 +146,14 @@ inline Pseudo_code robust_pseudo_code() {
   Pseudo_code code;
   add_confidence_labelling_lines(code);
   const int carving = int(code.lines.size());
-  code.lines.insert(code.lines.end(), {
-                                          "outer(c) <- power(c) outer or OUP in ball(c)",
-                                          "carve outer c from outside, if manifold",
-                                          "open cavities, handles; expose samples",
-                                          "solid <- cells left",
-                                          "surface <- facets solid | outside",
-                                      });
+  code.lines.insert(code.lines.end(),
+                    {
+                        "outer(c) <- power(c) outer or OUP p in ball(c), r_p >= 0.3 r_c",
+                        "carve outer c from outside, if manifold",
+                        "open cavities, handles; expose samples",
+                        "solid <- cells left",
+                        "surface <- facets solid | outside",
+                    });
   code.lines_of_stage.insert({{Stage::outer_concave, {carving}},
                               {Stage::sculpted_delaunay, {carving + 1, carving + 2}},
                               {Stage::solid, {carving + 3}},

@@ -202,6 +202,25 @@ std::vector<Point<3>> torus(int samples, double major, double minor, unsigned se
   return points;
 }
 
+std::vector<Point<3>> noisy_sphere(int samples, double noise, unsigned seed) {
+  // Directions uniform on the sphere (normalised Gaussians), radii 1 + N(0, noise * spacing),
+  // where the spacing is that of `samples` points spread evenly over the area 4 pi.
+  std::mt19937_64 random(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const double spacing = std::sqrt(4 * pi / samples);
+  std::vector<Point<3>> points;
+  points.reserve(samples);
+  while (static_cast<int>(points.size()) < samples) {
+    Point<3> p{normal(random), normal(random), normal(random)};
+    const double length = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    if (length < 1e-9) continue;
+    const double radius = 1.0 + noise * spacing * normal(random);
+    for (double& x : p) x *= radius / length;
+    points.push_back(p);
+  }
+  return points;
+}
+
 std::vector<Point<3>> bumpy_sphere(int samples) {
   std::vector<Point<3>> points = sphere(samples);
   for (auto& p : points) {

@@ -45,7 +45,10 @@ std::vector<Point<2>> resample_polyline(const std::vector<Point<2>>& polyline, d
 // Surfaces: samples only.
 std::vector<Point<3>> sphere(int samples);
 std::vector<Point<3>> torus(int samples, double major = 1.0, double minor = 0.4, unsigned seed = 1);
-std::vector<Point<3>> bumpy_sphere(int samples);     // a sphere with six dents and bumps
+std::vector<Point<3>> bumpy_sphere(int samples);  // a sphere with six dents and bumps
+// The unit sphere as a scanner sees it: random samples, each moved off the sphere by Gaussian
+// noise of standard deviation `noise` times the samples' mean spacing.
+std::vector<Point<3>> noisy_sphere(int samples, double noise, unsigned seed = 1);
 std::vector<Point<3>> saddle(int samples_per_side);  // z = x^2 - y^2 over [-1, 1]^2, jittered
 std::vector<Point<3>> monkey_saddle(int samples_per_side);  // z = 0.35 (x^3 - 3 x y^2), jittered
 std::vector<Point<3>> hemisphere(int samples);     // the upper half of a sphere: one border
