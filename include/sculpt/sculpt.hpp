@@ -322,6 +322,8 @@ struct Statistics {
   std::size_t candidate_facets = 0;      // crust, co-cone (3D): triangles the filter chose
   std::size_t spanning_facets = 0;       // robust bordered (3D): removed as spanning an opening
   std::size_t filled_gaps = 0;           // robust bordered (3D): border loops filled as gaps
+  std::size_t set_in_samples = 0;        // robust bordered (3D): left-off samples set into a
+                                         // triangle over them
   std::size_t attached_samples = 0;      // robust bordered (3D): left-off samples put back
   std::size_t closed_notches = 0;        // robust bordered (3D): sharp border notches closed
   std::size_t pruned_facets = 0;         // of those, removed at a sharp edge

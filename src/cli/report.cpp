@@ -60,6 +60,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);
   if (stats.method == Method::alpha_shape) row("alpha (radius)", fmt::format("{:g}", stats.alpha));
   if (stats.spanning_facets > 0) row("triangles spanning openings", stats.spanning_facets);
+  if (stats.set_in_samples > 0) row("left-off samples set in", stats.set_in_samples);
   if (stats.attached_samples > 0) row("left-off samples attached", stats.attached_samples);
   if (stats.closed_notches > 0) row("sharp border notches closed", stats.closed_notches);
   if (stats.filled_gaps > 0) row("gaps in the sampling filled", stats.filled_gaps);

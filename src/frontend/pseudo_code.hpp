@@ -134,7 +134,7 @@ inline Pseudo_code robust_bordered_pseudo_code(Pseudo_code code) {
                                           "drop f: R(f) > 3 h, no sample near its centre;",
                                           "  next to those, > 2 h",
                                           "surface <- prune, walk the rest",
-                                          "attach left-off samples; fill gaps",
+                                          "set in, attach left-off samples; fill gaps",
                                       });
   code.lines_of_stage[Stage::surface] = {candidates + 2, candidates,     candidates + 1,
                                          candidates + 3, candidates + 4, candidates + 5};

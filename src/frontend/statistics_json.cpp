@@ -48,6 +48,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"pruned_facets", stats.pruned_facets},
       {"spanning_facets", stats.spanning_facets},
       {"filled_gaps", stats.filled_gaps},
+      {"set_in_samples", stats.set_in_samples},
       {"attached_samples", stats.attached_samples},
       {"closed_notches", stats.closed_notches},
       {"rims_kept", stats.rims_kept},

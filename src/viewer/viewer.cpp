@@ -1376,6 +1376,7 @@ void Viewer::draw_statistics() {
   }
   if (s.method == Method::alpha_shape) ImGui::Text("alpha %g", s.alpha);
   if (s.spanning_facets > 0) ImGui::Text("triangles spanning openings %zu", s.spanning_facets);
+  if (s.set_in_samples > 0) ImGui::Text("left-off samples set in %zu", s.set_in_samples);
   if (s.attached_samples > 0) ImGui::Text("left-off samples attached %zu", s.attached_samples);
   if (s.closed_notches > 0) ImGui::Text("sharp border notches closed %zu", s.closed_notches);
   if (s.filled_gaps > 0) ImGui::Text("gaps in the sampling filled %zu", s.filled_gaps);

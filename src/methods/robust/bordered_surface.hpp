@@ -12,7 +12,8 @@
 //                 middle is empty, and, grown from them across edges, those wider than 2 times
 //   surface    <- manifold extraction of candidates - spanning (prune sharp edges, walk the
 //                 outer boundary: methods/extraction/manifold_extraction.hpp)
-//   mending    <- samples left off attached to the border, its sharp notches closed
+//   mending    <- samples left off beneath a triangle set into it (samples_under_triangles.hpp),
+//                 the others attached to the border, its sharp notches closed
 //                 (left_off_samples.hpp), and small border loops that are gaps, not openings,
 //                 filled (gap_filling.hpp)
 #pragma once
@@ -25,6 +26,7 @@
 #include "../extraction/manifold_extraction.hpp"
 #include "gap_filling.hpp"
 #include "left_off_samples.hpp"
+#include "samples_under_triangles.hpp"
 
 namespace sculpt {
 
@@ -95,6 +97,7 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   const auto over_an_opening = [&](const Facet<3>& facet) {
     return spacing_unknown(facet) || over_opening(facet, opening_growth_ratio);
   };
+  result.stats.set_in_samples = set_in_left_off_samples(samples, result.surface);
   result.stats.attached_samples = attach_left_off_samples(samples, result.surface, too_wide);
   result.stats.closed_notches = close_border_notches(samples, result.surface, too_wide);
   result.stats.filled_gaps = fill_gaps(samples, result.surface, over_an_opening);

@@ -1,0 +1,170 @@
+// Samples left off a bordered surface in the middle of it, set into the triangle over them.
+//
+// With noise, a sheet of samples is a thin slab: DT(S ∪ UP) has tetrahedra across it, and the
+// all-sample facets with an outer apex are its two faces. A sample inside the slab, a little
+// below its neighbours, is on neither face and is left off, though the surface passes right
+// over it. Such a sample is set into the surface where it lies under it:
+//
+//   for each sample s on no triangle, among the triangles at s's 8 nearest surface vertices:
+//     a triangle (a, b, c) that s projects into, no farther from its plane than half its
+//       longest edge: it is replaced by (a, b, s), (b, c, s), (c, a, s);
+//     an edge (a, b) of two triangles (a, b, c), (b, a, d) that s projects onto, no farther
+//       from it than half its length (s under a fold projects into neither triangle): they are
+//       replaced by (a, s, c), (s, b, c), (b, s, d), (s, a, d);
+//     the nearest of these, when no new triangle faces against the one it replaces.
+//
+// The new triangles cover what the old ones covered, so the surface keeps its borders and stays
+// a manifold; it now interpolates s. Measured on 20,000 samples of a wavy sheet with noise of 2%
+// of the spacing: 9 samples left off before, none after; ChineseDragon --bordered 1 -> 0 and the
+// shared distcap scan 2 -> 0 samples left off, with fewer border loops (53 -> 52, 23 -> 21).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <sculpt/sculpt.hpp>
+#include <vector>
+
+#include "../../core/point_tree.hpp"
+#include "../extraction/vector3.hpp"
+
+namespace sculpt {
+
+// How many of the nearest surface vertices offer their triangles to a left-off sample.
+inline constexpr int surface_vertices_asked = 8;
+// How far, against its longest edge, a sample may lie off a triangle's plane and be set into it.
+inline constexpr double farthest_set_in = 0.5;
+
+// Splits a triangle of `surface` over each sample on no triangle, where there is one; returns how
+// many samples were set in.
+inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
+                                           std::vector<Facet<3>>& surface) {
+  using extraction_detail::cross;
+  using extraction_detail::dot;
+  using extraction_detail::minus;
+  const int n = static_cast<int>(samples.size());
+  std::vector<std::vector<int>> triangles_at(n);
+  for (int t = 0; t < static_cast<int>(surface.size()); ++t) {
+    for (int v : surface[t]) triangles_at[v].push_back(t);
+  }
+  std::vector<int> left_off, on_surface;
+  for (int s = 0; s < n; ++s) (triangles_at[s].empty() ? left_off : on_surface).push_back(s);
+  if (left_off.empty() || on_surface.empty()) return 0;
+  std::vector<Point<3>> surface_points;
+  for (int s : on_surface) surface_points.push_back(samples[s]);
+  const Point_tree<3> tree(surface_points.data(), surface_points.data() + surface_points.size());
+
+  // The triangles (at most two) on edge (a, b), from the triangles at a.
+  const auto triangles_on = [&](int a, int b) {
+    std::vector<int> on;
+    for (int t : triangles_at[a]) {
+      const auto& f = surface[t];
+      if (f[0] == b || f[1] == b || f[2] == b) on.push_back(t);
+    }
+    return on;
+  };
+  const auto unit_normal = [&](const Facet<3>& f) {
+    auto normal = cross(minus(samples[f[1]], samples[f[0]]), minus(samples[f[2]], samples[f[0]]));
+    const double length = std::sqrt(dot(normal, normal));
+    for (double& x : normal) x /= length;
+    return normal;
+  };
+  // Whether no new triangle faces against the one it replaces.
+  const auto keeps_facing = [&](const Facet<3>& old, std::initializer_list<Facet<3>> replacing) {
+    const auto before = unit_normal(old);
+    for (const auto& f : replacing) {
+      const auto after = unit_normal(f);
+      if (!(dot(before, after) > 0)) return false;
+    }
+    return true;
+  };
+
+  std::size_t set_in = 0;
+  std::vector<int> asked;
+  for (int s : left_off) {
+    const Point<3>& x = samples[s];
+    asked.clear();
+    for (int near : tree.k_nearest_to(x, surface_vertices_asked)) {
+      const auto& ts = triangles_at[on_surface[near]];
+      asked.insert(asked.end(), ts.begin(), ts.end());
+    }
+    std::sort(asked.begin(), asked.end());
+    asked.erase(std::unique(asked.begin(), asked.end()), asked.end());
+    // The best split: a triangle (edge -1) or an edge j of a triangle with its neighbour.
+    int best = -1, best_edge = -1, best_other = -1;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (int t : asked) {
+      const Facet<3> f = surface[t];
+      const Point<3>&a = samples[f[0]], &b = samples[f[1]], &c = samples[f[2]];
+      const auto normal = cross(minus(b, a), minus(c, a));
+      const double area2 = dot(normal, normal);
+      if (!(area2 > 0)) continue;
+      double longest2 = 0;
+      for (int j = 0; j < 3; ++j) {
+        const auto edge = minus(samples[f[j]], samples[f[(j + 1) % 3]]);
+        longest2 = std::max(longest2, dot(edge, edge));
+      }
+      const double reach = farthest_set_in * std::sqrt(longest2);
+      const double height = std::abs(dot(minus(x, a), normal)) / std::sqrt(area2);
+      if (height < best_distance && height <= reach &&
+          keeps_facing(f, {{f[0], f[1], s}, {f[1], f[2], s}, {f[2], f[0], s}})) {
+        best = t, best_edge = -1, best_distance = height;
+      }
+      // Into an edge: where two triangles fold over s, it projects into neither.
+      for (int j = 0; j < 3; ++j) {
+        const int p = f[j], q = f[(j + 1) % 3], r = f[(j + 2) % 3];
+        const auto along = minus(samples[q], samples[p]);
+        const double length2 = dot(along, along);
+        const double at = dot(minus(x, samples[p]), along) / length2;
+        if (!(at > 0 && at < 1)) continue;
+        Point<3> foot;
+        for (int k = 0; k < 3; ++k) foot[k] = samples[p][k] + at * along[k];
+        const auto off = minus(x, foot);
+        const double distance = std::sqrt(dot(off, off));
+        if (distance >= best_distance || distance > farthest_set_in * std::sqrt(length2)) continue;
+        const auto on = triangles_on(p, q);
+        if (on.size() != 2) continue;
+        const int other = on[0] == t ? on[1] : on[0];
+        const Facet<3> g = surface[other];
+        int apex = -1;
+        for (int v : g) apex = v != p && v != q ? v : apex;
+        if (!keeps_facing(f, {{p, s, r}, {s, q, r}}) ||
+            !keeps_facing(g, {{q, s, apex}, {s, p, apex}}))
+          continue;
+        best = t, best_edge = j, best_other = other, best_distance = distance;
+      }
+    }
+    if (best < 0) continue;
+    const auto replace = [&](int t, const Facet<3>& with) {
+      for (int v : surface[t]) {
+        auto& at = triangles_at[v];
+        at.erase(std::find(at.begin(), at.end(), t));
+      }
+      surface[t] = with;
+      for (int v : with) triangles_at[v].push_back(t);
+    };
+    const auto add = [&](const Facet<3>& f) {
+      surface.push_back(f);
+      for (int v : f) triangles_at[v].push_back(static_cast<int>(surface.size()) - 1);
+    };
+    const Facet<3> f = surface[best];
+    if (best_edge < 0) {
+      replace(best, {f[0], f[1], s});
+      add({f[1], f[2], s});
+      add({f[2], f[0], s});
+    } else {
+      const int p = f[best_edge], q = f[(best_edge + 1) % 3], r = f[(best_edge + 2) % 3];
+      int apex = -1;
+      for (int v : surface[best_other]) apex = v != p && v != q ? v : apex;
+      replace(best, {p, s, r});
+      add({s, q, r});
+      replace(best_other, {q, s, apex});
+      add({s, p, apex});
+    }
+    ++set_in;
+  }
+  return set_in;
+}
+
+}  // namespace sculpt
