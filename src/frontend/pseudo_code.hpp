@@ -129,13 +129,14 @@ inline Pseudo_code robust_bordered_pseudo_code(Pseudo_code code) {
   using scene::Stage;
   const int candidates = code.lines_of_stage.at(Stage::surface).front();
   code.lines[candidates] = "cands <- facets of S with an outer apex";
-  code.lines.insert(code.lines.end(), {
-                                          "# R: circumradius, h: median 6th-neighbour gap",
-                                          "drop f: R(f) > 3 h, no sample near its centre;",
-                                          "  next to those, > 2 h",
-                                          "surface <- prune, walk the rest",
-                                          "set in, attach left-off samples; fill gaps",
-                                      });
+  code.lines.insert(code.lines.end(),
+                    {
+                        "# R: circumradius, h: median 6th-neighbour gap",
+                        "drop f: R(f) > 3 h, no sample near its centre;",
+                        "  next to those, > 2 h",
+                        "surface <- prune, walk the rest",
+                        "set in, attach left-off samples; join pinches; fill gaps",
+                    });
   code.lines_of_stage[Stage::surface] = {candidates + 2, candidates,     candidates + 1,
                                          candidates + 3, candidates + 4, candidates + 5};
   return code;

@@ -24,6 +24,12 @@ inline Edge_uses edge_uses(const std::vector<Facet<3>>& triangles) {
   return uses;
 }
 
+// A key of the directed edge a -> b (edge_key is the undirected one).
+inline std::uint64_t directed_key(int a, int b) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
+         static_cast<std::uint32_t>(b);
+}
+
 struct Border_edge {
   int from, to, apex;  // the triangle (from, to, apex)
 };

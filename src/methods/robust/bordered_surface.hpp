@@ -14,8 +14,8 @@
 //                 outer boundary: methods/extraction/manifold_extraction.hpp)
 //   mending    <- samples left off beneath a triangle set into it (samples_under_triangles.hpp),
 //                 the others attached to the border, its sharp notches closed
-//                 (left_off_samples.hpp), and small border loops that are gaps, not openings,
-//                 filled (gap_filling.hpp)
+//                 (left_off_samples.hpp), fans pinched at a vertex joined (pinched_vertices.hpp),
+//                 and small border loops that are gaps, not openings, filled (gap_filling.hpp)
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -26,6 +26,7 @@
 #include "../extraction/manifold_extraction.hpp"
 #include "gap_filling.hpp"
 #include "left_off_samples.hpp"
+#include "pinched_vertices.hpp"
 #include "samples_under_triangles.hpp"
 
 namespace sculpt {
@@ -100,6 +101,7 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   result.stats.set_in_samples = set_in_left_off_samples(samples, result.surface);
   result.stats.attached_samples = attach_left_off_samples(samples, result.surface, too_wide);
   result.stats.closed_notches = close_border_notches(samples, result.surface, too_wide);
+  result.stats.joined_pinches = join_pinched_vertices(samples, result.surface, too_wide);
   result.stats.filled_gaps = fill_gaps(samples, result.surface, over_an_opening);
 }
 

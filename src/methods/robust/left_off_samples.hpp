@@ -39,14 +39,6 @@ inline constexpr int border_vertices_asked = 8;
 // the sheet puts an outlier on the surface, not a sample of it).
 inline constexpr double steepest_attachment = 60.0 * M_PI / 180;
 
-namespace mending_detail {
-
-inline std::uint64_t directed_key(int a, int b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
-}  // namespace mending_detail
 
 // Attaches the samples on no triangle of `surface` to its border where they fit; returns how many.
 inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
@@ -55,7 +47,6 @@ inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
   using extraction_detail::cross;
   using extraction_detail::dot;
   using extraction_detail::minus;
-  using mending_detail::directed_key;
   std::vector<char> on_surface(samples.size(), 0);
   for (const auto& t : surface) {
     for (int v : t) on_surface[v] = 1;
