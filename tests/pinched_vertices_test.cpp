@@ -73,10 +73,78 @@ TEST(Pinched_vertices, NoJoinWhereNoTriangleMayBeAdded) {
 }
 
 TEST(Pinched_vertices, AFanIsNotClosedOnItself) {
-  // One fan of eleven spokes with a single gap: a notch, no pinch; nothing to join.
+  // A fan of eleven spokes (a 30-degree notch) and a second fan standing up from the centre,
+  // which no triangle may reach: the narrowest pair at the centre is the notch's, which would
+  // close the first fan on itself and leave the pinch; nothing is added.
+  std::vector<Point<3>> points = wheel();
+  const int up = static_cast<int>(points.size());
+  points.push_back({0.3, 0.3, 2});
+  points.push_back({-0.3, 0.3, 2});
   std::vector<Facet<3>> triangles;
   for (int i = 0; i < 11; ++i) triangles.push_back(spoke(i));
-  EXPECT_EQ(join_pinched_vertices(wheel(), triangles, anything_may_be_added), 0u);
+  triangles.push_back({0, up, up + 1});
+  const auto reaches_up = [&](const Facet<3>& f) { return f[0] >= up || f[1] >= up || f[2] >= up; };
+  ASSERT_FALSE(manifold_at(triangles, 0));
+  EXPECT_EQ(join_pinched_vertices(points, triangles, reaches_up), 0u);
+}
+
+TEST(Pinched_vertices, NoJoinReachesOverAThirdFan) {
+  // Fans at 0-60, 120-150 and 180-210 degrees; the gaps next to the middle fan may not be
+  // closed, so a triangle from 60 to 180 degrees would lie over it.
+  std::vector<Facet<3>> triangles = {spoke(0), spoke(1), spoke(4), spoke(6)};
+  const auto next_to_middle = [](const Facet<3>& f) {
+    for (int v : f) {
+      if (v == 1 + 4 || v == 1 + 5) return true;
+    }
+    return false;
+  };
+  const auto before = triangles;
+  join_pinched_vertices(wheel(), triangles, next_to_middle);
+  for (std::size_t t = before.size(); t < triangles.size(); ++t) {
+    Facet<3> added = triangles[t];
+    while (added[0] != 0) std::rotate(added.begin(), added.begin() + 1, added.end());
+    EXPECT_NE(added, (Facet<3>{0, 1 + 2, 1 + 6})) << "over the fan at 120-150 degrees";
+  }
+}
+
+TEST(Pinched_vertices, AFanStillPinchedIsDroppedWhenNoSampleIsLost) {
+  // A sheet of 8 x 8 cells and a flap from its middle vertex to an edge of its border: at the
+  // middle vertex the flap is a fan of its own, and all its samples are on the sheet too.
+  const int side = 9;
+  std::vector<Facet<3>> sheet;
+  const auto at = [&](int i, int j) { return side * j + i; };
+  for (int j = 0; j + 1 < side; ++j) {
+    for (int i = 0; i + 1 < side; ++i) {
+      sheet.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      sheet.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  std::vector<Facet<3>> triangles = sheet;
+  triangles.push_back({at(4, 4), at(1, 0), at(0, 0)});  // on the border edge (0,0) -> (1,0)
+  ASSERT_FALSE(manifold_at(triangles, at(4, 4)));
+  EXPECT_EQ(drop_pinched_fans(triangles, side * side), 1u);
+  EXPECT_EQ(triangles, sheet);
+}
+
+TEST(Pinched_vertices, AFanWhoseDropWouldCutOffASmallPieceStays) {
+  // Two fans at the centre that nothing joins: five spokes, and one spoke whose samples are
+  // also on a strip of four triangles beyond the rim, reached through it only.
+  std::vector<Point<3>> points = wheel();
+  std::vector<Facet<3>> triangles = {spoke(0), spoke(1), spoke(2), spoke(3), spoke(4), spoke(7)};
+  // Beyond the rim at 210 and 240 degrees, a strip of triangles holding samples 8 and 9.
+  const int outer = static_cast<int>(points.size());
+  for (int i = 0; i < 4; ++i) {
+    const double angle = (200 + 15 * i) * pi / 180;
+    points.push_back({2 * std::cos(angle), 2 * std::sin(angle), 0});
+  }
+  triangles.push_back({1 + 7, outer + 1, outer + 2});
+  triangles.push_back({1 + 7, outer + 2, 1 + 8});
+  triangles.push_back({1 + 8, outer + 2, outer + 3});
+  triangles.push_back({1 + 7, outer, outer + 1});
+  ASSERT_FALSE(manifold_at(triangles, 0));
+  auto kept = triangles;
+  EXPECT_EQ(drop_pinched_fans(kept, points.size()), 0u);
+  EXPECT_EQ(kept, triangles);
 }
 
 TEST(Pinched_vertices, FansFoldedAgainstEachOtherAreLeftAlone) {

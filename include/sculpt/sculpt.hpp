@@ -327,6 +327,7 @@ struct Statistics {
   std::size_t attached_samples = 0;      // robust bordered (3D): left-off samples put back
   std::size_t closed_notches = 0;        // robust bordered (3D): sharp border notches closed
   std::size_t joined_pinches = 0;        // robust bordered (3D): triangles joining pinched fans
+  std::size_t dropped_fans = 0;          // robust bordered (3D): smaller pinched fans removed
   std::size_t pruned_facets = 0;         // of those, removed at a sharp edge
   bool rims_kept = false;                // the pruning kept the rims of holes (Candidates_stage)
   std::size_t undersampled_samples = 0;  // co-cones: samples judged undersampled

@@ -63,6 +63,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   if (stats.set_in_samples > 0) row("left-off samples set in", stats.set_in_samples);
   if (stats.attached_samples > 0) row("left-off samples attached", stats.attached_samples);
   if (stats.joined_pinches > 0) row("pinched fans joined", stats.joined_pinches);
+  if (stats.dropped_fans > 0) row("pinched fans dropped", stats.dropped_fans);
   if (stats.closed_notches > 0) row("sharp border notches closed", stats.closed_notches);
   if (stats.filled_gaps > 0) row("gaps in the sampling filled", stats.filled_gaps);
   if (stats.candidate_facets > 0) {

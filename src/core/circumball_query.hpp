@@ -54,11 +54,11 @@ class Circumball_query {
   // Whether a point lies in the circumball of `cell`, whose circumcentre Traits::circumcenter
   // gave as `center`.
   bool holds_point(Cell_handle cell, const Point<D>& center) const {
-    return holds_point(cell, center, [](int) { return true; });
+    return holds_point(cell, center, [](int, double) { return true; });
   }
 
-  // Whether a point i with counts(i) true lies in the circumball of `cell` (i: its index among
-  // the points given).
+  // Whether a point i with counts(i, r) true lies in the circumball of `cell` (i: its index
+  // among the points given; r: the circumradius, measured from the centre searched with).
   template <class Counts>
   bool holds_point(Cell_handle cell, const Point<D>& center, Counts&& counts) const {
     if (empty_) return false;
@@ -69,7 +69,7 @@ class Circumball_query {
     const double widened = r + 1e-6 * r + 1e-14 * size;
     return tree_.any_within_indexed(
         search_center, widened * widened, [&](const Point<D>& p, int i) {
-          return counts(i) &&
+          return counts(i, r) &&
                  Traits::in_circumball(triangulation_, cell, Traits::to_cgal(p), perturbed_);
         });
   }

@@ -136,9 +136,11 @@ inline Pseudo_code robust_bordered_pseudo_code(Pseudo_code code) {
                         "  next to those, > 2 h",
                         "surface <- prune, walk the rest",
                         "set in, attach left-off samples; join pinches; fill gaps",
+                        "drop fans still pinched; fill gaps",
                     });
   code.lines_of_stage[Stage::surface] = {candidates + 2, candidates,     candidates + 1,
-                                         candidates + 3, candidates + 4, candidates + 5};
+                                         candidates + 3, candidates + 4, candidates + 5,
+                                         candidates + 6};
   return code;
 }
 

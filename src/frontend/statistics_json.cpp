@@ -51,6 +51,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"set_in_samples", stats.set_in_samples},
       {"attached_samples", stats.attached_samples},
       {"joined_pinches", stats.joined_pinches},
+      {"dropped_fans", stats.dropped_fans},
       {"closed_notches", stats.closed_notches},
       {"rims_kept", stats.rims_kept},
       {"undersampled_samples", stats.undersampled_samples},

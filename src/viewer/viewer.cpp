@@ -1379,6 +1379,7 @@ void Viewer::draw_statistics() {
   if (s.set_in_samples > 0) ImGui::Text("left-off samples set in %zu", s.set_in_samples);
   if (s.attached_samples > 0) ImGui::Text("left-off samples attached %zu", s.attached_samples);
   if (s.joined_pinches > 0) ImGui::Text("pinched fans joined %zu", s.joined_pinches);
+  if (s.dropped_fans > 0) ImGui::Text("pinched fans dropped %zu", s.dropped_fans);
   if (s.closed_notches > 0) ImGui::Text("sharp border notches closed %zu", s.closed_notches);
   if (s.filled_gaps > 0) ImGui::Text("gaps in the sampling filled %zu", s.filled_gaps);
   if (s.candidate_facets > 0) {

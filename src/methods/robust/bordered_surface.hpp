@@ -14,8 +14,9 @@
 //                 outer boundary: methods/extraction/manifold_extraction.hpp)
 //   mending    <- samples left off beneath a triangle set into it (samples_under_triangles.hpp),
 //                 the others attached to the border, its sharp notches closed
-//                 (left_off_samples.hpp), fans pinched at a vertex joined (pinched_vertices.hpp),
-//                 and small border loops that are gaps, not openings, filled (gap_filling.hpp)
+//                 (left_off_samples.hpp), fans pinched at a vertex joined, small border loops
+//                 that are gaps, not openings, filled (gap_filling.hpp), then the smaller fans
+//                 still pinched dropped and the loops that leaves filled where they are gaps
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -103,6 +104,10 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   result.stats.closed_notches = close_border_notches(samples, result.surface, too_wide);
   result.stats.joined_pinches = join_pinched_vertices(samples, result.surface, too_wide);
   result.stats.filled_gaps = fill_gaps(samples, result.surface, over_an_opening);
+  // Fans no triangle could join: the smaller ones go, and the loops that leaves may be gaps.
+  result.stats.dropped_fans = drop_pinched_fans(result.surface, samples.size());
+  if (result.stats.dropped_fans > 0)
+    result.stats.filled_gaps += fill_gaps(samples, result.surface, over_an_opening);
 }
 
 }  // namespace sculpt

@@ -24,7 +24,6 @@
 #pragma once
 
 #include <array>
-#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <sculpt/sculpt.hpp>
@@ -134,10 +133,9 @@ Cell_judgement judge_cells(const typename Traits::Triangulation& triangulation,
     // 12,178). The query is left for the cells it calls inner, about half.
     if (polar_balls.power_cell_label(x, samples) == Label::outer) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_power_cell);
-    } else if (const double least_radius =
-                   noise_pole_ratio * std::sqrt(squared_circumradius<Traits>(cell, x));
-               outer_poles.holds_point(
-                   cell, x, [&](int pole) { return outer.radii[pole] >= least_radius; })) {
+    } else if (outer_poles.holds_point(cell, x, [&](int pole, double radius) {
+                 return outer.radii[pole] >= noise_pole_ratio * radius;
+               })) {
       judgement.outer[cell->info()] = 1 + static_cast<int>(Carve_reason::outer_pole_inside);
     }
   }

@@ -39,7 +39,6 @@ inline constexpr int border_vertices_asked = 8;
 // the sheet puts an outlier on the surface, not a sample of it).
 inline constexpr double steepest_attachment = 60.0 * M_PI / 180;
 
-
 // Attaches the samples on no triangle of `surface` to its border where they fit; returns how many.
 inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
                                            std::vector<Facet<3>>& surface,

@@ -1,9 +1,9 @@
-// Samples left off a bordered surface in the middle of it, set into the triangle over them.
+// Samples left off a bordered surface in the middle of it, set into the triangle beside them.
 //
 // With noise, a sheet of samples is a thin slab: DT(S ∪ UP) has tetrahedra across it, and the
 // all-sample facets with an outer apex are its two faces. A sample inside the slab, a little
-// below its neighbours, is on neither face and is left off, though the surface passes right
-// over it. Such a sample is set into the surface where it lies under it:
+// off its neighbours, is on neither face and is left off, though the surface passes right by
+// it. Such a sample is set into the surface where it lies just above or below it:
 //
 //   for each sample s on no triangle, among the triangles at s's 8 nearest surface vertices:
 //     a triangle (a, b, c) that s projects into, no farther from its plane than half its
@@ -70,7 +70,10 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
     for (double& x : normal) x /= length;
     return normal;
   };
-  // Whether no new triangle faces against the one it replaces.
+  // Whether no new triangle faces against the one it replaces. No steeper bound: noise makes
+  // the three parts of a triangle steep where the sample lies off it (at most 75 degrees: a
+  // wavy 20k sheet with noise of 5% of the spacing kept 39 loops instead of 24; 60 degrees,
+  // 49); the height's bound keeps them from reaching far.
   const auto keeps_facing = [&](const Facet<3>& old, std::initializer_list<Facet<3>> replacing) {
     const auto before = unit_normal(old);
     for (const auto& f : replacing) {
@@ -129,6 +132,10 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
         const Facet<3> g = surface[other];
         int apex = -1;
         for (int v : g) apex = v != p && v != q ? v : apex;
+        // g must run q -> p, as the surface's orientation has it, for its halves to.
+        const bool runs_back =
+            (g[0] == q && g[1] == p) || (g[1] == q && g[2] == p) || (g[2] == q && g[0] == p);
+        if (!runs_back) continue;
         if (!keeps_facing(f, {{p, s, r}, {s, q, r}}) ||
             !keeps_facing(g, {{q, s, apex}, {s, p, apex}}))
           continue;
