@@ -148,30 +148,6 @@ TEST(Gap_filling, TheHoleIsFilledNotTheOuterBorder) {
   EXPECT_EQ(fan.size(), 4u);
 }
 
-TEST(Gap_filling, ASmallGapIsFilledThoughNoiseTiltsTrianglesBesideIt) {
-  // A square hole; the triangles on two opposite edges of it lean over it, facing down, as noise
-  // can tilt triangles beside a small gap. Every ear covers one of them and faces against it,
-  // but not against the loop's triangles on the whole.
-  Ring ring = ring_around_a_hole(4);
-  ring.points[5] = {0, 0.6, 1.0};   // the apex of (0, 5, 1), on the edge 0-1
-  ring.points[7] = {0, -0.6, 1.0};  // the apex of (2, 7, 3), on the edge 2-3
-  const auto& p = ring.points;
-  const auto normal_z = [&](const Facet<3>& f) {
-    return (p[f[1]][0] - p[f[0]][0]) * (p[f[2]][1] - p[f[0]][1]) -
-           (p[f[1]][1] - p[f[0]][1]) * (p[f[2]][0] - p[f[0]][0]);
-  };
-  ASSERT_LT(normal_z({0, 5, 1}), 0);
-  ASSERT_LT(normal_z({2, 7, 3}), 0);
-  ASSERT_LE(4, longest_loop_facing_as_a_whole);
-  auto surface = ring.triangles;
-  EXPECT_EQ(fill_gaps(ring.points, surface, never_over_an_opening), 1u);
-  ASSERT_EQ(surface.size(), ring.triangles.size() + 2);
-  for (std::size_t t = ring.triangles.size(); t < surface.size(); ++t) {
-    for (int v : surface[t]) EXPECT_LT(v, 4);
-    EXPECT_GT(normal_z(surface[t]), 0);
-  }
-}
-
 TEST(Gap_filling, LoopsLongerThanTheLimitAreLeft) {
   Ring ring = ring_around_a_hole(longest_gap_filled + 1);
   EXPECT_EQ(fill_gaps(ring.points, ring.triangles, never_over_an_opening), 0u);

@@ -17,7 +17,6 @@
 #pragma once
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <sculpt/sculpt.hpp>
@@ -34,13 +33,6 @@ namespace sculpt {
 // Loops longer than this are left as they are: ear clipping costs the square of the length, and a
 // loop so long whose triangles all stay narrow is a slit along the sheet, not a gap.
 inline constexpr int longest_gap_filled = 64;
-// In a loop this short, when no ear faces as the two triangles it covers do, an ear may face as
-// the loop's triangles do on the whole (the sum of their normals): noise tilts single triangles
-// beside a small gap past 90 degrees (a 20k cap with noise of 5% of the spacing: 24 -> 18 loops;
-// ChineseDragon --bordered 19 -> 14; distcap 20 -> 19). Only as a fallback: around a gap on a
-// sharply curved part (two missing faces of an octahedron) the whole faces elsewhere. A reversed
-// cap over a loop faces against the whole and is still refused.
-inline constexpr int longest_loop_facing_as_a_whole = 8;
 
 // A border loop of an oriented surface: its vertices in the direction of the triangles' own
 // edges (a -> b for a triangle (a, b, c) with (a, b) on the border), and for each edge
@@ -94,10 +86,8 @@ inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>&
 // A triangulation of the loop by ear clipping, each time the ear with the smallest circumradius
 // among those that continue the surface: facing against the loop's edges, turned less than 90
 // degrees from the triangles on the edges they cover (an ear at a reflex corner, or across the
-// outer border of a sheet, lies back over the surface and fails this; failing that, in a loop of
-// at most longest_loop_facing_as_a_whole samples, from the loop's triangles on the whole), and
-// whose new edge is not an edge of the surface already. Empty when no ear is left or the one taken may not be
-// added.
+// outer border of a sheet, lies back over the surface and fails this), and whose new edge is not
+// an edge of the surface already. Empty when no ear is left or the one taken may not be added.
 inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
                                           const Border_loop& border, const Edge_uses& edges,
                                           const std::function<bool(const Facet<3>&)>& not_to_add) {
@@ -115,36 +105,20 @@ inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
   for (std::size_t i = 0; i < loop.size(); ++i) {
     normals.push_back(normal_of(loop[i], loop[(i + 1) % loop.size()], border.apexes[i]));
   }
-  // The loop's own facing: the sum of the unit normals of the triangles on its edges.
-  Vector facing{0, 0, 0};
-  for (const auto& n : normals) {
-    const double length = std::sqrt(dot(n, n));
-    if (length > 0)
-      for (int k = 0; k < 3; ++k) facing[k] += n[k] / length;
-  }
-  const bool small = static_cast<int>(loop.size()) <= longest_loop_facing_as_a_whole;
   std::vector<Facet<3>> fill;
   while (loop.size() >= 3) {
     const int k = static_cast<int>(loop.size());
     int best = -1;
     double best_radius = INFINITY;
-    // Each ear against the two triangles it covers; failing that, in a small loop, against the
-    // loop's triangles on the whole.
-    for (const bool as_a_whole : {false, true}) {
-      if (best >= 0 || (as_a_whole && !small)) break;
-      for (int i = 0; i < k; ++i) {
-        const int before = loop[(i + k - 1) % k], after = loop[(i + 1) % k];
-        if (k > 3 && edges.count(edge_key(before, after))) continue;
-        const Vector normal = normal_of(after, loop[i], before);
-        // The last ear (k = 3) covers a third edge, not looked at: a missing triangle where a
-        // thin part folds sharply is still filled (checking it refused 42 of ChineseDragon's).
-        if (as_a_whole
-                ? dot(normal, facing) <= 0
-                : (dot(normal, normals[i]) <= 0 || dot(normal, normals[(i + k - 1) % k]) <= 0))
-          continue;
-        const double radius = facet_circumradius<3>(samples, {after, loop[i], before});
-        if (best < 0 || radius < best_radius) best = i, best_radius = radius;
-      }
+    for (int i = 0; i < k; ++i) {
+      const int before = loop[(i + k - 1) % k], after = loop[(i + 1) % k];
+      if (k > 3 && edges.count(edge_key(before, after))) continue;
+      const Vector normal = normal_of(after, loop[i], before);
+      // The last ear (k = 3) covers a third edge, not looked at: a missing triangle where a thin
+      // part folds sharply is still filled (checking it refused 42 of ChineseDragon's fills).
+      if (dot(normal, normals[i]) <= 0 || dot(normal, normals[(i + k - 1) % k]) <= 0) continue;
+      const double radius = facet_circumradius<3>(samples, {after, loop[i], before});
+      if (best < 0 || radius < best_radius) best = i, best_radius = radius;
     }
     if (best < 0) return {};
     const Facet<3> ear = {loop[(best + 1) % k], loop[best], loop[(best + k - 1) % k]};
