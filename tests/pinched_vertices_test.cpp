@@ -65,6 +65,22 @@ TEST(Pinched_vertices, TwoFansMeetingAtAVertexAreJoinedAcrossTheNarrowerGap) {
   EXPECT_TRUE(manifold_at(triangles, 0));
 }
 
+TEST(Pinched_vertices, AFanAsThinAsASliverIsJoinedToo) {
+  // A fan from 0 to 120 degrees and one triangle 4 degrees wide at 130: the 10-degree gap
+  // between them is closed (the sliver's far edge, just beyond the gap, is not inside it).
+  std::vector<Point<3>> points = {{0, 0, 0}};
+  for (double degrees : {0.0, 60.0, 120.0, 130.0, 134.0}) {
+    points.push_back({std::cos(degrees * pi / 180), std::sin(degrees * pi / 180), 0});
+  }
+  std::vector<Facet<3>> triangles = {{0, 1, 2}, {0, 2, 3}, {0, 4, 5}};
+  EXPECT_EQ(join_pinched_vertices(points, triangles, anything_may_be_added), 1u);
+  ASSERT_EQ(triangles.size(), 4u);
+  Facet<3> added = triangles.back();
+  while (added[0] != 0) std::rotate(added.begin(), added.begin() + 1, added.end());
+  EXPECT_EQ(added, (Facet<3>{0, 3, 4}));
+  EXPECT_TRUE(manifold_at(triangles, 0));
+}
+
 TEST(Pinched_vertices, NoJoinWhereNoTriangleMayBeAdded) {
   std::vector<Facet<3>> triangles = {spoke(0), spoke(1), spoke(3), spoke(4), spoke(5)};
   const auto before = triangles;
@@ -124,6 +140,27 @@ TEST(Pinched_vertices, AFanStillPinchedIsDroppedWhenNoSampleIsLost) {
   ASSERT_FALSE(manifold_at(triangles, at(4, 4)));
   EXPECT_EQ(drop_pinched_fans(triangles, side * side), 1u);
   EXPECT_EQ(triangles, sheet);
+}
+
+TEST(Pinched_vertices, TheFanKeptIsTheOneOnTheLargerPiece) {
+  // A sheet of 8 x 8 cells with a flap of three triangles hung from its corner: the flap has more
+  // triangles at the corner than the sheet's two, but the sheet is the larger piece. Its corner
+  // stays; the flap, whose samples are on it alone, stays too.
+  const int side = 9;
+  std::vector<Facet<3>> triangles;
+  const auto at = [&](int i, int j) { return side * j + i; };
+  for (int j = 0; j + 1 < side; ++j) {
+    for (int i = 0; i + 1 < side; ++i) {
+      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  const int flap = side * side;
+  for (int k = 0; k < 3; ++k) triangles.push_back({at(0, 0), flap + k, flap + k + 1});
+  ASSERT_FALSE(manifold_at(triangles, at(0, 0)));
+  const auto before = triangles;
+  EXPECT_EQ(drop_pinched_fans(triangles, flap + 4), 0u);
+  EXPECT_EQ(triangles, before);
 }
 
 TEST(Pinched_vertices, AFanWhoseDropWouldCutOffASmallPieceStays) {

@@ -7,8 +7,8 @@
 //   R_closed <- the closed reconstruction
 //   if no facet of R_closed spans an opening: keep R_closed
 //   R_bordered <- the bordered reconstruction
-//   keep R_bordered if it has a border and defects(R_bordered) < defects(R_closed) + facets
-//   of R_closed spanning an opening; else R_closed
+//   keep R_bordered if it has a border, no more border loops than R_closed has facets spanning
+//   an opening, and defects(R_bordered) < defects(R_closed) + those facets; else R_closed
 //
 // defects = non-manifold ridges + non-manifold vertices + samples left off. A facet spanning an
 // opening counts as a defect of the closed result: a surface made up across missing data. A
@@ -95,8 +95,11 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
 
   const auto bordered_started = std::chrono::steady_clock::now();
   Reconstruction<D> bordered_result = run(run_options(Surface_kind::bordered, 0.5, 1.0));
-  // A bordered result without a border found no opening: the closed one is the shape.
+  // A bordered result without a border found no opening: the closed one is the shape. Nor is a
+  // border loop an opening unless the closed result capped one there: with fewer facets over
+  // openings than loops, the loops are holes the bordered rule made (noise tears small ones).
   if (bordered_result.stats.boundary_loops == 0 ||
+      bordered_result.stats.boundary_loops > spanning ||
       defects(bordered_result.stats) >= defects(closed_result.stats) + spanning) {
     // Closed kept: the attempt's time shows as a stage of its own.
     const double attempt_seconds =

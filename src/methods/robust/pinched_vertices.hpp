@@ -101,8 +101,11 @@ inline std::size_t join_pinched_vertices(const std::vector<Point<3>>& samples,
     const auto to_a = minus(samples[a], samples[v]), to_b = minus(samples[b], samples[v]);
     return std::atan2(std::sqrt(dot(cross(to_a, to_b), cross(to_a, to_b))), dot(to_a, to_b));
   };
+  // (Both its angles with u and w below theirs: the far edge of a sliver fan just outside the
+  // gap is not between.)
   const auto between = [&](int v, int u, int x, int w) {
-    return angle(v, u, x) + angle(v, x, w) < angle(v, u, w) + 0.2;
+    const double across = angle(v, u, w), to_u = angle(v, u, x), to_w = angle(v, x, w);
+    return to_u < across && to_w < across && to_u + to_w < across + 0.2;
   };
   for (bool progress = true; progress;) {
     progress = false;
@@ -162,9 +165,10 @@ inline std::size_t join_pinched_vertices(const std::vector<Point<3>>& samples,
 }
 
 // Where fans stay pinched (folded against each other, or their gap's third edge inside the
-// surface already), the smaller fans at the vertex go, largest first kept, when every sample on
-// them stays on some other triangle and no small piece of the surface is cut off by it (a search
-// from each triangle left at the fan's other vertices, across edges, reaches far enough).
+// surface already), the fan on the largest piece of the surface is kept and the others go, each
+// when every sample on it stays on some other triangle and no small piece of the surface is cut
+// off by it (a search from each triangle left at the fan's other vertices, across edges,
+// reaches far enough).
 inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t sample_count) {
   using extraction_detail::edge_key;
   constexpr std::size_t small_piece = 64;  // triangles: fewer cut off is a piece of its own
@@ -187,11 +191,11 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
     for (const auto& t : surface) {
       for (int v : t) ++uses[v];
     }
-    // Whether the triangles reached from `from` across edges, the gone ones left out, are fewer
-    // than small_piece.
+    // How many triangles are reached from `from` across edges, the gone ones left out, counting
+    // up to `enough`.
     std::vector<int> seen_mark(surface.size(), -1), stack;
     int search = 0;
-    const auto small_piece_from = [&](int from) {
+    const auto piece_from = [&](int from, std::size_t enough) {
       ++search;
       std::size_t reached = 0;
       stack.assign(1, from);
@@ -199,7 +203,7 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
       while (!stack.empty()) {
         const int t = stack.back();
         stack.pop_back();
-        if (++reached >= small_piece) return false;
+        if (++reached >= enough) return reached;
         for (int j = 0; j < 3; ++j) {
           const std::uint64_t key = edge_key(surface[t][j], surface[t][(j + 1) % 3]);
           for (auto it = std::lower_bound(on_edge.begin(), on_edge.end(), std::make_pair(key, -1));
@@ -211,7 +215,7 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
           }
         }
       }
-      return true;
+      return reached;
     };
     for (int v = 0; v < static_cast<int>(sample_count); ++v) {
       // The fans at v: its triangles, joined where they share an edge at v.
@@ -239,9 +243,18 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
       for (std::size_t i = 0; i < triangles.size(); ++i)
         fans[root(static_cast<int>(i))].push_back(triangles[i]);
       if (fans.size() < 2) continue;
+      // The fan kept is the one on the largest piece (a flap with more triangles at v than the
+      // sheet it hangs from is not kept in the sheet's place).
+      constexpr std::size_t large_piece = 4 * small_piece;
       auto largest = fans.begin();
+      std::size_t largest_piece = 0;
       for (auto it = fans.begin(); it != fans.end(); ++it) {
-        if (it->second.size() > largest->second.size()) largest = it;
+        const std::size_t piece = piece_from(it->second.front(), large_piece);
+        if (piece > largest_piece ||
+            (piece == largest_piece && it->second.size() > largest->second.size())) {
+          largest = it;
+          largest_piece = piece;
+        }
       }
       for (auto it = fans.begin(); it != fans.end(); ++it) {
         if (it == largest) continue;
@@ -256,7 +269,7 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
         bool cuts = false;
         for (const auto& [u, count] : on_fan) {
           if (u == v) continue;
-          for (int t : at[u]) cuts = cuts || (!gone[t] && small_piece_from(t));
+          for (int t : at[u]) cuts = cuts || (!gone[t] && piece_from(t, small_piece) < small_piece);
         }
         if (cuts) {
           for (int t : it->second) gone[t] = 0;
