@@ -53,6 +53,19 @@ bool manifold_at(const std::vector<Facet<3>>& triangles, int vertex) {
 
 const auto anything_may_be_added = [](const Facet<3>&) { return false; };
 
+// A sheet of (side - 1) x (side - 1) cells, two triangles a cell; vertex (i, j) is side * j + i.
+std::vector<Facet<3>> grid_sheet(int side) {
+  std::vector<Facet<3>> sheet;
+  const auto at = [&](int i, int j) { return side * j + i; };
+  for (int j = 0; j + 1 < side; ++j) {
+    for (int i = 0; i + 1 < side; ++i) {
+      sheet.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      sheet.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  }
+  return sheet;
+}
+
 TEST(Pinched_vertices, TwoFansMeetingAtAVertexAreJoinedAcrossTheNarrowerGap) {
   // Fans of two and three spokes, with gaps of one spoke (30 degrees) and six (180 degrees).
   std::vector<Facet<3>> triangles = {spoke(0), spoke(1), spoke(3), spoke(4), spoke(5)};
@@ -127,14 +140,8 @@ TEST(Pinched_vertices, AFanStillPinchedIsDroppedWhenNoSampleIsLost) {
   // A sheet of 8 x 8 cells and a flap from its middle vertex to an edge of its border: at the
   // middle vertex the flap is a fan of its own, and all its samples are on the sheet too.
   const int side = 9;
-  std::vector<Facet<3>> sheet;
   const auto at = [&](int i, int j) { return side * j + i; };
-  for (int j = 0; j + 1 < side; ++j) {
-    for (int i = 0; i + 1 < side; ++i) {
-      sheet.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      sheet.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  }
+  const std::vector<Facet<3>> sheet = grid_sheet(side);
   std::vector<Facet<3>> triangles = sheet;
   triangles.push_back({at(4, 4), at(1, 0), at(0, 0)});  // on the border edge (0,0) -> (1,0)
   ASSERT_FALSE(manifold_at(triangles, at(4, 4)));
@@ -147,14 +154,8 @@ TEST(Pinched_vertices, TheFanKeptIsTheOneOnTheLargerPiece) {
   // triangles at the corner than the sheet's two, but the sheet is the larger piece. Its corner
   // stays; the flap, whose samples are on it alone, stays too.
   const int side = 9;
-  std::vector<Facet<3>> triangles;
   const auto at = [&](int i, int j) { return side * j + i; };
-  for (int j = 0; j + 1 < side; ++j) {
-    for (int i = 0; i + 1 < side; ++i) {
-      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-    }
-  }
+  std::vector<Facet<3>> triangles = grid_sheet(side);
   const int flap = side * side;
   for (int k = 0; k < 3; ++k) triangles.push_back({at(0, 0), flap + k, flap + k + 1});
   ASSERT_FALSE(manifold_at(triangles, at(0, 0)));
