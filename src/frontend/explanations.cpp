@@ -82,14 +82,16 @@ std::string surface(Method method, Surface_kind kind, int dimension) {
           dimension == 2 ? "." : ", the candidates left after pruning, walked from the outside.";
       break;
     case Method::robust:
-      what += dimension == 3 && kind == Surface_kind::bordered
-                  ? ": the paper's bordered surface less the triangles spanning an opening "
-                    "(violet), those whose circumscribed circle is wider than 3 times the "
-                    "samples' spacing there (around each vertex, the median distance to the 6th "
-                    "nearest sample) with no sample near its centre, and, next to them, 2 times; "
-                    "the rest is pruned and walked as the co-cone's is, and small loops that "
-                    "can be filled with no such triangle are gaps in the sampling, filled."
-                  : ".";
+      what +=
+          dimension == 3 && kind == Surface_kind::bordered
+              ? ": the paper's bordered surface less the triangles spanning an opening "
+                "(violet), those whose circumscribed circle is wider than 3 times the "
+                "samples' spacing there (around each vertex, the median distance to the 6th "
+                "nearest sample) with no sample near its centre, and, next to them, 2 times; "
+                "the rest is pruned and walked as the co-cone's is, then mended: samples left off "
+                "set in or attached, fans pinched at a vertex joined (or the smaller "
+                "dropped), small loops that can be filled with no such triangle filled."
+              : ".";
       break;
     default:
       what += ".";

@@ -292,7 +292,7 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
     for (int t : triangles_at[start]) {
       if (taken[t]) continue;
       const auto& [a, b, c] = triangles[t];
-      const Vector normal = cross(minus(points[b], points[a]), minus(points[c], points[a]));
+      const Vector normal = normal_of(points, a, b, c);
       const double length = std::sqrt(dot(normal, normal));
       if (length == 0) continue;
       const double along_x = std::abs(normal[0]) / length;

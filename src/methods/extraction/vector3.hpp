@@ -3,6 +3,7 @@
 
 #include <array>
 #include <sculpt/sculpt.hpp>
+#include <vector>
 
 namespace sculpt::extraction_detail {
 
@@ -16,6 +17,10 @@ inline double dot(const Vector& a, const Vector& b) {
 }
 inline Vector cross(const Vector& a, const Vector& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+// The normal of the triangle (a, b, c) of `points`, as long as twice its area.
+inline Vector normal_of(const std::vector<Point<3>>& points, int a, int b, int c) {
+  return cross(minus(points[b], points[a]), minus(points[c], points[a]));
 }
 
 }  // namespace sculpt::extraction_detail

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../extraction/manifold_extraction.hpp"
+#include "../extraction/vector3.hpp"
 
 namespace sculpt {
 
@@ -28,6 +29,18 @@ inline Edge_uses edge_uses(const std::vector<Facet<3>>& triangles) {
 inline std::uint64_t directed_key(int a, int b) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
          static_cast<std::uint32_t>(b);
+}
+
+// Whether the triangle (w, v, u) that closes the border corner u -> v -> w faces as the
+// triangles it leans on: (u, v, u_apex) on u -> v and (v, w, w_apex) on v -> w (the notches of
+// left_off_samples.hpp, the joins of pinched_vertices.hpp).
+inline bool closes_corner_facing_on(const std::vector<Point<3>>& samples, int u, int v, int w,
+                                    int u_apex, int w_apex) {
+  using extraction_detail::dot;
+  using extraction_detail::normal_of;
+  const auto normal = normal_of(samples, w, v, u);
+  return dot(normal, normal_of(samples, u, v, u_apex)) > 0 &&
+         dot(normal, normal_of(samples, v, w, w_apex)) > 0;
 }
 
 struct Border_edge {

@@ -91,19 +91,15 @@ inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>&
 inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
                                           const Border_loop& border, const Edge_uses& edges,
                                           const std::function<bool(const Facet<3>&)>& not_to_add) {
-  using extraction_detail::cross;
   using extraction_detail::dot;
   using extraction_detail::edge_key;
-  using extraction_detail::minus;
+  using extraction_detail::normal_of;
   using extraction_detail::Vector;
-  const auto normal_of = [&](int a, int b, int c) {
-    return cross(minus(samples[b], samples[a]), minus(samples[c], samples[a]));
-  };
   std::vector<int> loop = border.vertices;
   // normals[i]: of the triangle on the loop's edge loop[i] -> loop[i + 1].
   std::vector<Vector> normals;
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    normals.push_back(normal_of(loop[i], loop[(i + 1) % loop.size()], border.apexes[i]));
+    normals.push_back(normal_of(samples, loop[i], loop[(i + 1) % loop.size()], border.apexes[i]));
   }
   std::vector<Facet<3>> fill;
   while (loop.size() >= 3) {
@@ -113,7 +109,7 @@ inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
     for (int i = 0; i < k; ++i) {
       const int before = loop[(i + k - 1) % k], after = loop[(i + 1) % k];
       if (k > 3 && edges.count(edge_key(before, after))) continue;
-      const Vector normal = normal_of(after, loop[i], before);
+      const Vector normal = normal_of(samples, after, loop[i], before);
       // The last ear (k = 3) covers a third edge, not looked at: a missing triangle where a thin
       // part folds sharply is still filled (checking it refused 42 of ChineseDragon's fills).
       if (dot(normal, normals[i]) <= 0 || dot(normal, normals[(i + k - 1) % k]) <= 0) continue;
@@ -125,7 +121,7 @@ inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
     if (not_to_add(ear)) return {};
     fill.push_back(ear);
     // The ear's edge before -> after is the loop's edge now.
-    normals[(best + k - 1) % k] = normal_of(ear[0], ear[1], ear[2]);
+    normals[(best + k - 1) % k] = normal_of(samples, ear[0], ear[1], ear[2]);
     normals.erase(normals.begin() + best);
     loop.erase(loop.begin() + best);
   }

@@ -43,9 +43,8 @@ inline constexpr double steepest_attachment = 60.0 * M_PI / 180;
 inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
                                            std::vector<Facet<3>>& surface,
                                            const std::function<bool(const Facet<3>&)>& not_to_add) {
-  using extraction_detail::cross;
   using extraction_detail::dot;
-  using extraction_detail::minus;
+  using extraction_detail::normal_of;
   std::vector<char> on_surface(samples.size(), 0);
   for (const auto& t : surface) {
     for (int v : t) on_surface[v] = 1;
@@ -103,8 +102,7 @@ inline std::size_t attach_left_off_samples(const std::vector<Point<3>>& samples,
           if (!(radius < chosen_radius[i]) && !(radius < narrowest_at_edge[e])) continue;
           // The triangle leaned on, (a, b, c), and the one added, (b, a, s): the turn between
           // their normals.
-          const auto leaned = cross(minus(samples[b], samples[a]), minus(samples[c], samples[a]));
-          const auto normal = cross(minus(samples[a], samples[b]), minus(samples[s], samples[b]));
+          const auto leaned = normal_of(samples, a, b, c), normal = normal_of(samples, b, a, s);
           const double lengths = std::sqrt(dot(leaned, leaned) * dot(normal, normal));
           if (!(dot(leaned, normal) > cos_steepest * lengths) || not_to_add(added)) continue;
           narrowest_at_edge[e] = std::min(narrowest_at_edge[e], radius);
@@ -146,7 +144,6 @@ inline constexpr double sharpest_notch_kept = 60.0 * M_PI / 180;
 inline std::size_t close_border_notches(const std::vector<Point<3>>& samples,
                                         std::vector<Facet<3>>& surface,
                                         const std::function<bool(const Facet<3>&)>& not_to_add) {
-  using extraction_detail::cross;
   using extraction_detail::dot;
   using extraction_detail::edge_key;
   using extraction_detail::minus;
@@ -181,12 +178,8 @@ inline std::size_t close_border_notches(const std::vector<Point<3>>& samples,
       if (lengths == 0 || dot(to_u, to_w) <= std::cos(sharpest_notch_kept) * lengths) continue;
       if (uses.count(edge_key(u, w))) continue;
       const Facet<3> added = {w, v, u};
-      const auto normal = cross(minus(samples[v], samples[w]), minus(samples[u], samples[w]));
-      const auto leaned_u =
-          cross(minus(samples[v], samples[u]), minus(samples[e.from_apex], samples[u]));
-      const auto leaned_w =
-          cross(minus(samples[w], samples[v]), minus(samples[e.to_apex], samples[v]));
-      if (dot(normal, leaned_u) <= 0 || dot(normal, leaned_w) <= 0 || not_to_add(added)) continue;
+      if (!closes_corner_facing_on(samples, u, v, w, e.from_apex, e.to_apex) || not_to_add(added))
+        continue;
       surface.push_back(added);
       touched[u] = touched[v] = touched[w] = 1;
       ++closed;

@@ -141,12 +141,7 @@ inline std::size_t join_pinched_vertices(const std::vector<Point<3>>& samples,
           if (!(lengths > 0)) continue;
           const double cosine = dot(to_u, to_w) / lengths;
           if (cosine <= best_cosine) continue;
-          const auto normal = cross(minus(samples[v], samples[w]), minus(samples[u], samples[w]));
-          const auto leaned_u =
-              cross(minus(samples[v], samples[u]), minus(samples[in.apex], samples[u]));
-          const auto leaned_w =
-              cross(minus(samples[w], samples[v]), minus(samples[out.apex], samples[v]));
-          if (dot(normal, leaned_u) <= 0 || dot(normal, leaned_w) <= 0) continue;
+          if (!closes_corner_facing_on(samples, u, v, w, in.apex, out.apex)) continue;
           if (not_to_add({w, v, u})) continue;
           best_cosine = cosine;
           best = {w, v, u};
@@ -187,10 +182,10 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
     }
     std::sort(on_edge.begin(), on_edge.end());
     std::vector<char> gone(surface.size(), 0);
-    std::vector<int> uses(sample_count, 0);
-    for (const auto& t : surface) {
-      for (int v : t) ++uses[v];
-    }
+    // The triangles at a sample not dropped yet.
+    const auto triangles_left_at = [&](int sample) {
+      return std::count_if(at[sample].begin(), at[sample].end(), [&](int t) { return !gone[t]; });
+    };
     // How many triangles are reached from `from` across edges, the gone ones left out, counting
     // up to `enough`.
     std::vector<int> seen_mark(surface.size(), -1), stack;
@@ -263,7 +258,7 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
           for (int u : surface[t]) ++on_fan[u];
         }
         bool stays = true;
-        for (const auto& [u, count] : on_fan) stays = stays && uses[u] > count;
+        for (const auto& [u, count] : on_fan) stays = stays && triangles_left_at(u) > count;
         if (!stays) continue;
         for (int t : it->second) gone[t] = 1;
         bool cuts = false;
@@ -274,9 +269,6 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
         if (cuts) {
           for (int t : it->second) gone[t] = 0;
           continue;
-        }
-        for (int t : it->second) {
-          for (int u : surface[t]) --uses[u];
         }
         ++dropped;
         progress = true;

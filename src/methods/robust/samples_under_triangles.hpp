@@ -65,7 +65,7 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
     return on;
   };
   const auto unit_normal = [&](const Facet<3>& f) {
-    auto normal = cross(minus(samples[f[1]], samples[f[0]]), minus(samples[f[2]], samples[f[0]]));
+    auto normal = extraction_detail::normal_of(samples, f[0], f[1], f[2]);
     const double length = std::sqrt(dot(normal, normal));
     for (double& x : normal) x /= length;
     return normal;
