@@ -122,6 +122,11 @@ struct Options {
   // Keep the solid's cells (stage 7; the statistics count them either way): the command line
   // keeps them only to write them (--solid).
   bool keep_solid = true;
+  // The robust method's carving (stage 6b) first floods the outer cells from the outside and
+  // keeps the flood when it is where carving cell by cell was going (a closed 2-manifold through
+  // every sample, no outer cell left): the same surface, at a fifth of the cost. false carves
+  // cell by cell from the start, largest circumball first (the tests compare the two).
+  bool carve_by_flood = true;
   std::function<bool(const Progress&)> progress;
 };
 
@@ -315,6 +320,7 @@ struct Statistics {
   std::size_t conflict_offers = 0;   // offers of the other label (several per pole)
   std::size_t carved_cells = 0;      // robust: all-sample cells removed from the hull
   std::size_t kept_outer_cells = 0;  // robust: judged outer, kept so the surface stays manifold
+  bool carved_by_flood = false;      // robust: the outer cells went in one flood (the shortcut)
   std::size_t inserted_poles = 0;    // m (closed) or l (bordered), without the box corners
   std::size_t delaunay_cells = 0;    // cells of DT(S ∪ BBV)
   std::size_t sculpted_cells = 0;    // cells of DT(S ∪ OUP); 0 when it was not built

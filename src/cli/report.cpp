@@ -54,7 +54,11 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
       row("cells of DT(S+OUP)", "not built (queries)");
     }
   } else if (sculpts(stats.method)) {
-    row("carved cells", stats.carved_cells);
+    if (stats.carved_by_flood) {
+      row("carved cells (one flood)", stats.carved_cells);
+    } else {
+      row("carved cells", stats.carved_cells);
+    }
     row("outer cells kept (manifold)", stats.kept_outer_cells);
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);

@@ -54,8 +54,8 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
   }
 
   clock.start("carving");
-  const Cell_judgement judgement = judge_cells<Traits>(triangulation, result, clock);
-  Manifold_carving<Traits> carving(triangulation, result, judgement);
+  const Cell_judge<Traits> judge(triangulation, result);
+  Manifold_carving<Traits> carving(triangulation, result, judge, clock);
   carving.run();
   result.stats.carved_cells = result.carving.events.size();
   result.stats.kept_outer_cells = result.carving.kept_outer_cells.size();

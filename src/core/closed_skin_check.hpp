@@ -1,0 +1,106 @@
+// Whether a solid's skin (its oriented facets, solid_and_skin.hpp) is a closed 2-manifold (a set
+// of closed curves in 2D) through every sample, and how its pieces are sized: the check the
+// robust carving's flood must pass to stand for the carving (manifold_carving.hpp).
+//
+// A facet (a, b, c) facing out gives vertex a the directed link edge b -> c. The skin is a closed
+// 2-manifold at a exactly when a's link edges make one directed cycle: every link vertex starts
+// one edge and ends one, and walking from any edge comes back after visiting all. Then every
+// edge ab lies on exactly two facets (b is in a's link once as a start and once as an end). In
+// 2D an edge (a, b) leaves a and enters b: a closed curve enters and leaves each vertex once.
+//
+// One pass counts the facets at each vertex and one files the link edges in compressed rows;
+// the rows are a few edges long (6 on average in 3D), so each is sorted and walked in place.
+// The pieces are the components of the facets' vertex graph (a union-find).
+#pragma once
+
+#include <algorithm>
+#include <numeric>
+#include <sculpt/sculpt.hpp>
+#include <utility>
+#include <vector>
+
+namespace sculpt {
+
+struct Skin_check {
+  bool closed_manifold_through_all = false;  // every sample on it, a 2-manifold at every one
+  std::size_t pieces = 0;                    // connected components
+  std::size_t smallest_piece = 0;            // samples on the smallest component
+};
+
+template <int D>
+Skin_check check_closed_skin(std::size_t sample_count, const std::vector<Facet<D>>& facets) {
+  Skin_check check;
+  const int n = static_cast<int>(sample_count);
+  for (const auto& facet : facets) {
+    for (int v : facet) {
+      if (v < 0 || v >= n) return check;  // a box corner on the skin
+    }
+  }
+  if constexpr (D == 2) {
+    std::vector<int> leaving(n, 0), entering(n, 0);
+    for (const auto& edge : facets) {
+      ++leaving[edge[0]];
+      ++entering[edge[1]];
+    }
+    for (int s = 0; s < n; ++s) {
+      if (leaving[s] != 1 || entering[s] != 1) return check;
+    }
+  } else {
+    std::vector<int> offsets(n + 1, 0);
+    for (const auto& facet : facets) {
+      for (int v : facet) ++offsets[v + 1];
+    }
+    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+    std::vector<std::pair<int, int>> link(offsets.back());
+    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
+    for (const auto& f : facets) {
+      link[fill[f[0]]++] = {f[1], f[2]};
+      link[fill[f[1]]++] = {f[2], f[0]};
+      link[fill[f[2]]++] = {f[0], f[1]};
+    }
+    for (int s = 0; s < n; ++s) {
+      const auto first = link.begin() + offsets[s], last = link.begin() + offsets[s + 1];
+      const auto size = last - first;
+      if (size < 3) return check;  // on no facet, or on too few to close around it
+      std::sort(first, last);
+      for (auto e = first + 1; e != last; ++e) {
+        if (e->first == (e - 1)->first) return check;  // a link vertex starting two edges
+      }
+      // Walk the cycle from the first edge: each step finds the edge starting where the last
+      // one ended; a missing one, or a return before every edge was walked, is no single cycle.
+      int at = first->second;
+      std::ptrdiff_t steps = 1;
+      while (at != first->first) {
+        const auto next = std::lower_bound(first, last, std::make_pair(at, -1));
+        if (next == last || next->first != at || ++steps > size) return check;
+        at = next->second;
+      }
+      if (steps != size) return check;
+    }
+  }
+  // The pieces: union-find over the facets' vertices, halving paths.
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  const auto root = [&](int v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (const auto& facet : facets) {
+    for (int j = 1; j < D; ++j) {
+      const int a = root(facet[0]), b = root(facet[j]);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  std::vector<int> size(n, 0);
+  for (int s = 0; s < n; ++s) ++size[root(s)];
+  check.smallest_piece = sample_count;
+  for (int s = 0; s < n; ++s) {
+    if (parent[s] != s) continue;
+    ++check.pieces;
+    check.smallest_piece = std::min(check.smallest_piece, static_cast<std::size_t>(size[s]));
+  }
+  check.closed_manifold_through_all = true;
+  return check;
+}
+
+}  // namespace sculpt
