@@ -25,7 +25,7 @@ void expect_flood_and_carving_agree(const std::vector<Point<D>>& samples, bool f
   EXPECT_EQ(flooded.surface, carved.surface);
   EXPECT_EQ(flooded.solid, carved.solid);
   EXPECT_EQ(flooded.stats.carved_cells, carved.stats.carved_cells);
-  if (!flood_stands) {  // undone without a trace: the carving's very events
+  if (!flood_stands) {  // undone without a trace: the carving's very events and cells kept
     ASSERT_EQ(flooded.carving.events.size(), carved.carving.events.size());
     for (std::size_t i = 0; i < carved.carving.events.size(); ++i) {
       EXPECT_EQ(flooded.carving.events[i].cell, carved.carving.events[i].cell);
@@ -55,6 +55,14 @@ TEST(Carving_flood, StandsForTheCarvingOnCleanShapes) {
 
 // Noise makes the carving keep a few outer cells (removing them would leave a sample off or
 // pinch the surface); an annulus has a cavity the flood cannot reach.
+// Two small spheres far apart: the flood gives two pieces of 150 samples, fewer than a group
+// removal may cut off, so it gives way (the carving itself separates them).
+TEST(Carving_flood, GivesWayToTheCarvingForSmallPieces) {
+  auto samples = shapes::sphere(150);
+  for (const auto& p : shapes::sphere(150)) samples.push_back({p[0] + 5, p[1], p[2]});
+  expect_flood_and_carving_agree<3>(samples, false);
+}
+
 TEST(Carving_flood, IsUndoneWhereTheCarvingKeepsCellsOrOpensCavities) {
   {
     SCOPED_TRACE("noisy sphere");
@@ -104,8 +112,12 @@ TEST(Closed_skin_check, RefusesOpenPinchedFlippedOrIncompleteSkins) {
   pinched.insert(pinched.end(), other.begin(), other.end());
   EXPECT_FALSE(check_closed_skin<3>(7, pinched).closed_manifold_through_all);
 
-  // A sample on no facet.
+  // A sample on no facet; a facet with a repeated vertex; a box corner.
   EXPECT_FALSE(check_closed_skin<3>(5, tetrahedron(0, 1, 2, 3)).closed_manifold_through_all);
+  auto degenerate = tetrahedron(0, 1, 2, 3);
+  degenerate.push_back({0, 0, 1});
+  EXPECT_FALSE(check_closed_skin<3>(4, degenerate).closed_manifold_through_all);
+  EXPECT_FALSE(check_closed_skin<3>(3, tetrahedron(0, 1, 2, 3)).closed_manifold_through_all);
 }
 
 TEST(Closed_skin_check, CurvesEnterAndLeaveEachSampleOnce) {
@@ -115,6 +127,13 @@ TEST(Closed_skin_check, CurvesEnterAndLeaveEachSampleOnce) {
   EXPECT_FALSE(check_closed_skin<2>(5, figure_eight).closed_manifold_through_all);
   const std::vector<Facet<2>> open_path = {{0, 1}, {1, 2}, {2, 3}};
   EXPECT_FALSE(check_closed_skin<2>(4, open_path).closed_manifold_through_all);
+  const std::vector<Facet<2>> two_triangles = {{0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5}, {5, 3}};
+  const Skin_check two = check_closed_skin<2>(6, two_triangles);
+  EXPECT_TRUE(two.closed_manifold_through_all);
+  EXPECT_EQ(two.pieces, 2u);
+  EXPECT_EQ(two.smallest_piece, 3u);
+  const std::vector<Facet<2>> loop_at_a_sample = {{0, 0}};
+  EXPECT_FALSE(check_closed_skin<2>(1, loop_at_a_sample).closed_manifold_through_all);
 }
 
 }  // namespace

@@ -162,5 +162,30 @@ TEST(Cgal_meshes, TheSamePointsGiveTheSameSurfaceInOneProcess) {
   }
 }
 
+// The robust carving's flood (methods/robust/manifold_carving.hpp) stands for carving cell by
+// cell on the clean models and gives way on those where the carving keeps outer cells: the same
+// triangles either way.
+TEST(Cgal_meshes, TheCarvingsFloodGivesTheSameTriangles) {
+  for (const auto& [name, flood_stands] :
+       std::vector<std::pair<std::string, bool>>{{"knot1.off", true},
+                                                 {"bunny00.off", true},
+                                                 {"hand.off", false},
+                                                 {"fandisk.off", false},
+                                                 {"elephant.off", false}}) {
+    SCOPED_TRACE(name);
+    const io::Point_set mesh =
+        io::read_points(std::string(SCULPT_TEST_DATA) + "/data/meshes/" + name);
+    Options options;
+    options.kind = Surface_kind::closed;
+    options.keep_triangulations = false;
+    const auto flooded = reconstruct(mesh.points, options);
+    options.carve_by_flood = false;
+    const auto carved = reconstruct(mesh.points, options);
+    EXPECT_EQ(flooded.stats.carved_by_flood, flood_stands);
+    EXPECT_EQ(flooded.surface, carved.surface);
+    EXPECT_EQ(flooded.stats.carved_cells, carved.stats.carved_cells);
+  }
+}
+
 }  // namespace
 }  // namespace sculpt

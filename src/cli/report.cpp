@@ -56,10 +56,11 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   } else if (sculpts(stats.method)) {
     if (stats.carved_by_flood) {
       row("carved cells (one flood)", stats.carved_cells);
+      row("outer cells kept (manifold)", "not counted (flood)");
     } else {
       row("carved cells", stats.carved_cells);
+      row("outer cells kept (manifold)", stats.kept_outer_cells);
     }
-    row("outer cells kept (manifold)", stats.kept_outer_cells);
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);
   if (stats.method == Method::alpha_shape) row("alpha (radius)", fmt::format("{:g}", stats.alpha));

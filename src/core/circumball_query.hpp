@@ -50,6 +50,9 @@ class Circumball_query {
         tree_(first, last),
         empty_(first == last),
         perturbed_(perturbed) {}
+  Circumball_query(const Triangulation& triangulation, const std::vector<Point<D>>& points,
+                   bool perturbed)
+      : Circumball_query(triangulation, points.data(), points.data() + points.size(), perturbed) {}
 
   // Whether a point lies in the circumball of `cell`, whose circumcentre Traits::circumcenter
   // gave as `center`.

@@ -8,8 +8,9 @@
 // edge ab lies on exactly two facets (b is in a's link once as a start and once as an end). In
 // 2D an edge (a, b) leaves a and enters b: a closed curve enters and leaves each vertex once.
 //
-// One pass counts the facets at each vertex and one files the link edges in compressed rows;
-// the rows are a few edges long (6 on average in 3D), so each is sorted and walked in place.
+// One pass counts the facets at each vertex and one files them in compressed rows (4 bytes a
+// facet and vertex: the check runs where memory peaks, in the carving); a vertex's link edges,
+// a few (6 on average), are then sorted and walked in a small buffer.
 // The pieces are the components of the facets' vertex graph (a union-find).
 #pragma once
 
@@ -21,6 +22,7 @@
 
 namespace sculpt {
 
+// With no samples and no facets, the empty skin passes, in 0 pieces.
 struct Skin_check {
   bool closed_manifold_through_all = false;  // every sample on it, a 2-manifold at every one
   std::size_t pieces = 0;                    // connected components
@@ -32,8 +34,11 @@ Skin_check check_closed_skin(std::size_t sample_count, const std::vector<Facet<D
   Skin_check check;
   const int n = static_cast<int>(sample_count);
   for (const auto& facet : facets) {
-    for (int v : facet) {
-      if (v < 0 || v >= n) return check;  // a box corner on the skin
+    for (int j = 0; j < D; ++j) {
+      if (facet[j] < 0 || facet[j] >= n) return check;  // a box corner on the skin
+      for (int k = 0; k < j; ++k) {
+        if (facet[k] == facet[j]) return check;  // a degenerate facet
+      }
     }
   }
   if constexpr (D == 2) {
@@ -46,20 +51,26 @@ Skin_check check_closed_skin(std::size_t sample_count, const std::vector<Facet<D
       if (leaving[s] != 1 || entering[s] != 1) return check;
     }
   } else {
-    std::vector<int> offsets(n + 1, 0);
+    // The facets at each vertex, in compressed rows: the running sums of the counts end each
+    // row, and filling a row from its end leaves its start there.
+    std::vector<int> starts(n + 1, 0);
     for (const auto& facet : facets) {
-      for (int v : facet) ++offsets[v + 1];
+      for (int v : facet) ++starts[v];
     }
-    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-    std::vector<std::pair<int, int>> link(offsets.back());
-    std::vector<int> fill(offsets.begin(), offsets.end() - 1);
-    for (const auto& f : facets) {
-      link[fill[f[0]]++] = {f[1], f[2]};
-      link[fill[f[1]]++] = {f[2], f[0]};
-      link[fill[f[2]]++] = {f[0], f[1]};
+    std::partial_sum(starts.begin(), starts.end(), starts.begin());
+    std::vector<int> facets_at(starts[n]);
+    for (std::size_t f = facets.size(); f-- > 0;) {
+      for (int v : facets[f]) facets_at[--starts[v]] = static_cast<int>(f);
     }
+    std::vector<std::pair<int, int>> link;
     for (int s = 0; s < n; ++s) {
-      const auto first = link.begin() + offsets[s], last = link.begin() + offsets[s + 1];
+      link.clear();
+      for (int i = starts[s]; i < starts[s + 1]; ++i) {
+        const auto& f = facets[facets_at[i]];
+        const int at = f[0] == s ? 0 : f[1] == s ? 1 : 2;
+        link.push_back({f[(at + 1) % 3], f[(at + 2) % 3]});
+      }
+      const auto first = link.begin(), last = link.end();
       const auto size = last - first;
       if (size < 3) return check;  // on no facet, or on too few to close around it
       std::sort(first, last);

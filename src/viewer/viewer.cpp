@@ -1392,8 +1392,12 @@ void Viewer::draw_statistics() {
   } else if (inserts_poles(s.method, s.kind, s.dimension)) {
     ImGui::Text("cells %zu -> %zu   solid %zu", s.delaunay_cells, s.sculpted_cells, s.solid_cells);
   } else {
-    ImGui::Text("cells %zu, carved %zu%s, outer kept %zu", s.delaunay_cells, s.carved_cells,
-                s.carved_by_flood ? " (one flood)" : "", s.kept_outer_cells);
+    if (s.carved_by_flood) {
+      ImGui::Text("cells %zu, carved %zu in one flood", s.delaunay_cells, s.carved_cells);
+    } else {
+      ImGui::Text("cells %zu, carved %zu, outer kept %zu", s.delaunay_cells, s.carved_cells,
+                  s.kept_outer_cells);
+    }
     ImGui::Text("solid %zu", s.solid_cells);
   }
   ImGui::Text("%s %zu   %s %zu", three ? "triangles" : "edges", s.facets,

@@ -38,18 +38,26 @@ namespace sculpt {
 inline constexpr double noise_pole_ratio = 0.3;
 
 template <int D>
-struct Outer_poles {
-  std::vector<Point<D>> centers;
-  std::vector<double> radii;
+std::vector<Point<D>> outer_pole_centres(const Reconstruction<D>& result) {
+  std::vector<Point<D>> centres;
+  for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
+    if (result.propagation.labels[p] == Label::outer) {
+      centres.push_back(result.poles.poles[p].center);
+    }
+  }
+  return centres;
+}
 
-  explicit Outer_poles(const Reconstruction<D>& result) {
-    for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
-      if (result.propagation.labels[p] != Label::outer) continue;
-      centers.push_back(result.poles.poles[p].center);
+template <int D>
+std::vector<double> outer_pole_radii(const Reconstruction<D>& result) {
+  std::vector<double> radii;
+  for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
+    if (result.propagation.labels[p] == Label::outer) {
       radii.push_back(result.poles.poles[p].radius);
     }
   }
-};
+  return radii;
+}
 
 // The two polar balls of every sample, packed together (one cache line in 3D): the power carve
 // reads those of the four samples of every cell, and the poles themselves lie scattered.
@@ -114,23 +122,22 @@ class Cell_judge {
  public:
   Cell_judge(const Triangulation& triangulation, const Reconstruction<D>& result)
       : triangulation_(triangulation),
-        outer_(result),
+        outer_radii_(outer_pole_radii(result)),
         // Strictly inside, decided exactly: the poles on the sphere (those of neighbouring cells
-        // can be) do not destroy it.
-        outer_poles_(triangulation, outer_.centers.data(),
-                     outer_.centers.data() + outer_.centers.size(), false),
+        // can be) do not destroy it. The query keeps its own copy of the centres.
+        outer_poles_(triangulation, outer_pole_centres(result), false),
         polar_balls_(result),
         sample_count_(static_cast<int>(result.sample_count())),
         verdicts_(result.delaunay.cell_count, unjudged) {}
 
   // 0: inner (or not an all-sample cell); else 1 + the Carve_reason it is outer for.
   std::uint8_t verdict(Cell_handle cell) const {
-    std::uint8_t& verdict = verdicts_[cell->info()];
-    if (verdict == unjudged) {
-      verdict = judge(cell);
+    std::uint8_t& memo = verdicts_[cell->info()];
+    if (memo == unjudged) {
+      memo = judge(cell);
       ++judged_;
     }
-    return verdict;
+    return memo;
   }
 
   // How many cells have been judged so far.
@@ -153,7 +160,7 @@ class Cell_judge {
       return 1 + static_cast<int>(Carve_reason::outer_power_cell);
     }
     if (outer_poles_.holds_point(cell, x, [&](int pole, double radius) {
-          return outer_.radii[pole] >= noise_pole_ratio * radius;
+          return outer_radii_[pole] >= noise_pole_ratio * radius;
         })) {
       return 1 + static_cast<int>(Carve_reason::outer_pole_inside);
     }
@@ -161,11 +168,13 @@ class Cell_judge {
   }
 
   const Triangulation& triangulation_;
-  const Outer_poles<D> outer_;
+  const std::vector<double> outer_radii_;  // of the outer poles, as the query numbers them
   const Circumball_query<Traits> outer_poles_;
   const Polar_balls<D> polar_balls_;
   int sample_count_;
-  mutable std::vector<std::uint8_t> verdicts_;  // per cell, unjudged until asked
+  // Per cell, unjudged until asked. Asking changes nothing but this memo (a verdict depends on
+  // the cell alone), hence const; one run's judge is not shared between threads.
+  mutable std::vector<std::uint8_t> verdicts_;
   mutable std::size_t judged_ = 0;
 };
 

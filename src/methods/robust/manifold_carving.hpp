@@ -20,18 +20,16 @@
 // of theirs, when that keeps the manifold.
 //
 // First, though, the carving tries a shortcut (Options::carve_by_flood): every outer cell the
-// outside reaches through outer cells is removed at once, a flood. The carving removes only such
-// cells (an inner one only to expose a buried sample, a cavity's only from inside), so where the
-// flood leaves a closed 2-manifold through every sample, no outer pole's cell in the solid (a
-// cavity would hold some) and no piece smaller than a group removal may cut off, the carving
-// ends there too, or short of it with outer cells it could not remove one group at a time: the
-// flood stands for it, and the cells it never reached are never judged. Otherwise the flood is
-// undone and the carving runs. Measured: the same surfaces, facet for facet, on the built-in
-// closed shapes, CGAL's knot1 and bunny00 and random tori (flood), and on CGAL's fandisk, hand,
-// elephant, femur and ChineseDragon, the shared scans and noisy spheres and tori (undone: the
-// carving keeps a few outer cells there). The carving stage of bunny00 subdivided (150k samples)
-// takes 0.44 s instead of 0.62 s, with the skin's 0.05 s; that of a 300k random torus 1.9 s
-// instead of 3.2 s. An undone flood costs about a tenth of the carving.
+// outside reaches through outer cells is removed at once, a flood. Until it stalls, the carving
+// removes only such cells (an enclosed group, a cavity, it opens only if the group holds outer
+// poles), so where the flood leaves a closed 2-manifold through every sample, no outer pole's
+// cell in the solid and no piece smaller than a group removal may cut off, the carving ends
+// there too, or stalls short of it with outer cells it cannot remove one group at a time (two
+// groups each pinching the surface alone but not together; the rounds running out). The flood
+// stands for it then, and the cells it never reached are never judged; otherwise it is undone
+// and the carving runs. Measured (the closing note of the speed issue): the same triangles
+// wherever the flood stood, and the carving stage in 60-70% of the time; an undone flood costs
+// about a tenth of the carving.
 #pragma once
 
 #include <algorithm>
@@ -71,7 +69,6 @@ class Manifold_carving {
         clock_(clock),
         sample_count_(static_cast<int>(result.sample_count())),
         outside_(result.delaunay.cell_count, 0),
-        queued_(result.delaunay.cell_count, 0),
         solid_cells_at_(sample_count_, 0),
         outside_cells_at_(sample_count_, 0) {}
 
@@ -85,14 +82,17 @@ class Manifold_carving {
     open_cavities();
     // Punching leaves fragments of webs (bridges between strands) that are whole groups again.
     for (int round = 0; round < 4; ++round) {
-      const std::size_t before = result_.carving.events.size();
+      const std::size_t before = removed_;
       open_handles();
       punch_through();
-      if (result_.carving.events.size() == before) break;
+      if (removed_ == before) break;
     }
     expose_buried_samples();
     record_what_stayed();
   }
+
+  // How many cells were removed.
+  std::size_t removed() const { return removed_; }
 
   bool is_outside(Cell_handle cell) const {
     return triangulation_.is_infinite(cell) || outside_[cell->info()];
@@ -107,7 +107,7 @@ class Manifold_carving {
   // Stage 8: the facets between the solid and the outside, facing the outside (the flood
   // collected them already when it stood).
   void collect_surface() const {
-    if (result_.stats.carved_by_flood) return;
+    if (skin_collected_) return;
     sculpt::collect_skin<Traits>(
         triangulation_, [&](Cell_handle cell) { return !is_outside(cell); }, result_);
   }
@@ -154,6 +154,13 @@ class Manifold_carving {
   }
   Carve_reason judged_reason(Cell_handle cell) const {
     return static_cast<Carve_reason>(judge_.verdict(cell) - 1);
+  }
+
+  // The carving's progress, never going back (an undone flood's, then the carving's).
+  void report(double fraction) {
+    if (fraction <= reported_) return;
+    reported_ = std::min(1.0, fraction);
+    clock_.report(reported_);
   }
 
   void start_from_hull() {
@@ -208,7 +215,15 @@ class Manifold_carving {
 
   void remove(Cell_handle cell, Carve_reason reason) {
     set_outside(cell, true);
-    result_.carving.events.push_back({cell->info(), reason});
+    record_removal(cell, reason);
+  }
+
+  // The events name cells of the first triangulation: kept with its cells (the viewer, the
+  // tests), only counted without them (the command line: 40 MB on a 1M-point torus).
+  void record_removal(Cell_handle cell, Carve_reason reason) {
+    ++removed_;
+    if (result_.options.keep_triangulations)
+      result_.carving.events.push_back({cell->info(), reason});
   }
 
   // A cell is queued at most once at a time: a removal next to a queued cell changes what its
@@ -221,12 +236,13 @@ class Manifold_carving {
   }
 
   void carve_outer_cells() {
+    queued_.assign(result_.delaunay.cell_count, 0);  // not before: the flood needs none
     // Every cell is judged here (most for the first time): the long part, which the progress
     // follows.
     const double cells = static_cast<double>(result_.delaunay.cell_count);
     std::size_t done = 0;
     for (auto cell : Traits::finite_cells(triangulation_)) {
-      if (++done % 262144 == 0) clock_.report(double(done) / cells);
+      if (++done % 262144 == 0) report(double(done) / cells);
       if (is_outside(cell) || !judged_outer(cell)) continue;
       for (int i = 0; i <= D; ++i) {
         if (is_outside(cell->neighbor(i))) {
@@ -254,7 +270,17 @@ class Manifold_carving {
     std::sort(pole_cells.begin(), pole_cells.end());
     pole_cells.erase(std::unique(pole_cells.begin(), pole_cells.end()), pole_cells.end());
     outer_pole_cells_.clear();
+    // A cell is removed when it is found, so none is found twice; the stack holds removed cells
+    // whose neighbours are still to be looked at.
     std::vector<Cell_handle> stack;
+    bool sample_left_off = false;  // the carving never removes a sample's last solid cell
+    const auto flood = [&](Cell_handle cell) {
+      remove(cell, judged_reason(cell));
+      for (int i = 0; i <= D; ++i) {
+        sample_left_off = sample_left_off || solid_cells_at_[cell->vertex(i)->info()] == 0;
+      }
+      stack.push_back(cell);
+    };
     for (auto cell : Traits::finite_cells(triangulation_)) {
       if (outer_pole_cells_.size() < pole_cells.size() &&
           cell->info() == pole_cells[outer_pole_cells_.size()]) {
@@ -262,43 +288,38 @@ class Manifold_carving {
       }
       if (is_outside(cell)) continue;
       for (int i = 0; i <= D; ++i) {
-        if (is_outside(cell->neighbor(i))) {  // only cells on the hull's skin are judged
-          if (judged_outer(cell)) {
-            queued_[cell->info()] = 1;
-            stack.push_back(cell);
-          }
+        // Only cells on the skin of the hull (or of the flood) are judged.
+        if (is_outside(cell->neighbor(i))) {
+          if (judged_outer(cell)) flood(cell);
           break;
         }
       }
     }
     const double cells = static_cast<double>(result_.delaunay.cell_count);
     std::size_t reported = 0;
-    bool sample_left_off = false;  // the carving never removes a sample's last solid cell
     while (!stack.empty() && !sample_left_off) {
       if (judge_.judged() >= reported + 262144) {
         reported = judge_.judged();
-        clock_.report(std::min(1.0, double(reported) / cells));
+        report(double(reported) / cells);
       }
       const Cell_handle cell = stack.back();
       stack.pop_back();
-      queued_[cell->info()] = 0;
-      remove(cell, judged_reason(cell));
-      for (int i = 0; i <= D; ++i) {
-        sample_left_off = sample_left_off || solid_cells_at_[cell->vertex(i)->info()] == 0;
+      for (int i = 0; i <= D && !sample_left_off; ++i) {
         const Cell_handle neighbour = cell->neighbor(i);
-        if (is_outside(neighbour) || queued_[neighbour->info()] || !judged_outer(neighbour)) {
-          continue;
-        }
-        queued_[neighbour->info()] = 1;
-        stack.push_back(neighbour);
+        if (!is_outside(neighbour) && judged_outer(neighbour)) flood(neighbour);
       }
     }
-    if (!sample_left_off && flood_is_the_carving()) return true;
+    // Every outer pole's cell met in the pass (else the pocket test would miss some: undone).
+    if (!sample_left_off && outer_pole_cells_.size() == pole_cells.size() &&
+        flood_is_the_carving()) {
+      result_.stats.carved_by_flood = true;
+      return true;
+    }
     // Undone: the hull again, as it was.
-    std::fill(queued_.begin(), queued_.end(), 0);
+    removed_ = 0;
     result_.carving.events.clear();
     result_.surface.clear();
-    result_.stats.carved_by_flood = false;
+    skin_collected_ = false;
     std::fill(solid_cells_at_.begin(), solid_cells_at_.end(), 0);
     std::fill(outside_cells_at_.begin(), outside_cells_at_.end(), 0);
     start_from_hull();
@@ -320,10 +341,10 @@ class Manifold_carving {
     for (Cell_handle cell : outer_pole_cells_) {
       if (!is_outside(cell) && judged_outer(cell)) return false;
     }
-    result_.stats.carved_by_flood = true;  // collect_surface() now collects
     result_.surface.clear();
     sculpt::collect_skin<Traits>(
         triangulation_, [&](Cell_handle cell) { return !is_outside(cell); }, result_);
+    skin_collected_ = true;
     const Skin_check skin = check_closed_skin<D>(sample_count_, result_.surface);
     // A piece of k samples, all on its skin, has at least k - D cells: one of more than
     // small_piece + D samples is no piece a group removal refuses to cut off.
@@ -607,8 +628,7 @@ class Manifold_carving {
       for (Cell_handle cell : group) set_outside(cell, false);
       return false;
     }
-    for (Cell_handle cell : group)
-      result_.carving.events.push_back({cell->info(), judged_reason(cell)});
+    for (Cell_handle cell : group) record_removal(cell, judged_reason(cell));
     // Removing the group can make Boissonnat's condition hold for outer cells next to it.
     for (Cell_handle cell : group) {
       for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
@@ -669,6 +689,9 @@ class Manifold_carving {
   int sample_count_;
   std::vector<std::uint8_t> outside_;
   std::vector<std::uint8_t> queued_;   // per cell: an entry of it is in the queue
+  std::size_t removed_ = 0;            // cells removed (the events, when they are kept)
+  bool skin_collected_ = false;        // by a flood that stood: stage 8 is done
+  double reported_ = 0;                // the carving's progress so far
   std::vector<int> solid_cells_at_;    // per sample: incident cells still in the solid
   std::vector<int> outside_cells_at_;  // per sample: incident cells outside
   std::priority_queue<Entry> queue_;

@@ -1,7 +1,8 @@
 // The robust method, after the shared stages 1-3 (Delaunay, poles, seeds):
 //   4.  labelling   poles labelled by confidence (confidence_labelling.hpp)
-//   6b. carving     the hull's all-sample cells judged (cell_classification.hpp) and carved from
-//                   the outside in, keeping a 2-manifold (manifold_carving.hpp)
+//   6b. carving     the hull's all-sample cells carved from the outside in, keeping a
+//                   2-manifold (manifold_carving.hpp), each judged (cell_classification.hpp)
+//                   when the carving first asks about it
 //   7.  solid       the cells left
 //   8.  surface     the facets between the solid and the outside
 // No pole is inserted: a cell judged outer is removed directly, so DT(S ∪ OUP) is never built.
@@ -57,7 +58,7 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
   const Cell_judge<Traits> judge(triangulation, result);
   Manifold_carving<Traits> carving(triangulation, result, judge, clock);
   carving.run();
-  result.stats.carved_cells = result.carving.events.size();
+  result.stats.carved_cells = carving.removed();
   result.stats.kept_outer_cells = result.carving.kept_outer_cells.size();
 
   clock.start("solid");
