@@ -25,6 +25,15 @@ void expect_flood_and_carving_agree(const std::vector<Point<D>>& samples, bool f
   EXPECT_EQ(flooded.surface, carved.surface);
   EXPECT_EQ(flooded.solid, carved.solid);
   EXPECT_EQ(flooded.stats.carved_cells, carved.stats.carved_cells);
+  // A flood that stood fills the topology from its check; the carving's is measured.
+  EXPECT_EQ(flooded.stats.facets, carved.stats.facets);
+  EXPECT_EQ(flooded.stats.components, carved.stats.components);
+  EXPECT_EQ(flooded.stats.euler_characteristic, carved.stats.euler_characteristic);
+  EXPECT_EQ(flooded.stats.boundary_ridges, carved.stats.boundary_ridges);
+  EXPECT_EQ(flooded.stats.boundary_loops, carved.stats.boundary_loops);
+  EXPECT_EQ(flooded.stats.non_manifold_ridges, carved.stats.non_manifold_ridges);
+  EXPECT_EQ(flooded.stats.non_manifold_vertices, carved.stats.non_manifold_vertices);
+  EXPECT_EQ(flooded.stats.unused_samples, carved.stats.unused_samples);
   if (!flood_stands) {  // undone without a trace: the carving's very events and cells kept
     ASSERT_EQ(flooded.carving.events.size(), carved.carving.events.size());
     for (std::size_t i = 0; i < carved.carving.events.size(); ++i) {

@@ -114,4 +114,20 @@ Skin_check check_closed_skin(std::size_t sample_count, const std::vector<Facet<D
   return check;
 }
 
+// The topology statistics (as measure_topology fills them, facet_topology.hpp) of facets that
+// passed check_closed_skin: no border, no non-manifold ridge or vertex, every sample used, and
+// in 3D every edge on two facets, so E = 3F/2 and the Euler characteristic is V - F/2 (in 2D,
+// V - E = 0). Spares the sort of every ridge (about 1 s for the 2M triangles of a 1M torus).
+template <int D>
+void closed_skin_topology(std::size_t sample_count, std::size_t facet_count,
+                          const Skin_check& check, Statistics& stats) {
+  stats.facets = facet_count;
+  stats.unused_samples = 0;
+  stats.components = check.pieces;
+  stats.boundary_ridges = stats.non_manifold_ridges = stats.non_manifold_vertices = 0;
+  stats.boundary_loops = 0;
+  const long vertices = static_cast<long>(sample_count), facets = static_cast<long>(facet_count);
+  stats.euler_characteristic = D == 3 ? vertices - facets / 2 : vertices - facets;
+}
+
 }  // namespace sculpt

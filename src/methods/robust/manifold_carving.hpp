@@ -348,8 +348,13 @@ class Manifold_carving {
     const Skin_check skin = check_closed_skin<D>(sample_count_, result_.surface);
     // A piece of k samples, all on its skin, has at least k - D cells: one of more than
     // small_piece + D samples is no piece a group removal refuses to cut off.
-    return skin.closed_manifold_through_all &&
-           (skin.pieces == 1 || skin.smallest_piece > small_piece + D);
+    if (!skin.closed_manifold_through_all ||
+        (skin.pieces > 1 && skin.smallest_piece <= small_piece + D)) {
+      return false;
+    }
+    // The topology follows from the check (the topology stage then measures nothing).
+    closed_skin_topology<D>(sample_count_, result_.surface.size(), skin, result_.stats);
+    return true;
   }
 
   void carve_queue() {
