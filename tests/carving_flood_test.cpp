@@ -95,6 +95,24 @@ TEST(Closed_skin_check, ATetrahedronsBoundaryIsClosed) {
   EXPECT_EQ(check.smallest_piece, 4u);
 }
 
+// The topology a passed check implies is the one measure_topology measures.
+template <int D>
+void expect_topology_as_measured(std::size_t samples, const std::vector<Facet<D>>& facets) {
+  const Skin_check check = check_closed_skin<D>(samples, facets);
+  ASSERT_TRUE(check.closed_manifold_through_all);
+  Statistics implied;
+  closed_skin_topology<D>(samples, facets.size(), check, implied);
+  const Statistics measured = facet_topology(samples, facets);
+  EXPECT_EQ(implied.facets, measured.facets);
+  EXPECT_EQ(implied.unused_samples, measured.unused_samples);
+  EXPECT_EQ(implied.components, measured.components);
+  EXPECT_EQ(implied.boundary_ridges, measured.boundary_ridges);
+  EXPECT_EQ(implied.non_manifold_ridges, measured.non_manifold_ridges);
+  EXPECT_EQ(implied.non_manifold_vertices, measured.non_manifold_vertices);
+  EXPECT_EQ(implied.boundary_loops, measured.boundary_loops);
+  EXPECT_EQ(implied.euler_characteristic, measured.euler_characteristic);
+}
+
 TEST(Closed_skin_check, CountsPiecesAndTheSmallest) {
   auto facets = tetrahedron(0, 1, 2, 3);
   const auto octahedron = std::vector<Facet<3>>{{4, 6, 8}, {4, 8, 7}, {4, 7, 9}, {4, 9, 6},
@@ -104,6 +122,7 @@ TEST(Closed_skin_check, CountsPiecesAndTheSmallest) {
   EXPECT_TRUE(check.closed_manifold_through_all);
   EXPECT_EQ(check.pieces, 2u);
   EXPECT_EQ(check.smallest_piece, 4u);
+  expect_topology_as_measured<3>(10, facets);
 }
 
 TEST(Closed_skin_check, RefusesOpenPinchedFlippedOrIncompleteSkins) {
@@ -141,6 +160,7 @@ TEST(Closed_skin_check, CurvesEnterAndLeaveEachSampleOnce) {
   EXPECT_TRUE(two.closed_manifold_through_all);
   EXPECT_EQ(two.pieces, 2u);
   EXPECT_EQ(two.smallest_piece, 3u);
+  expect_topology_as_measured<2>(6, two_triangles);
   const std::vector<Facet<2>> loop_at_a_sample = {{0, 0}};
   EXPECT_FALSE(check_closed_skin<2>(1, loop_at_a_sample).closed_manifold_through_all);
 }

@@ -27,15 +27,15 @@ class Point_tree {
     const int count = static_cast<int>(last - first);
     // Each point travels with its index while the medians are found: the comparisons read
     // contiguous memory rather than jumping through an index array.
-    std::vector<Entry> entries(count);
-    for (int i = 0; i < count; ++i) entries[i] = {first[i], i};
+    std::vector<Entry> entries;
+    entries.reserve(count);
+    for (int i = 0; i < count; ++i) entries.push_back({first[i], i});
     if (count > 0) build(entries, 0, count);
-    points_.reserve(count);
     input_index_.reserve(count);
-    for (const Entry& entry : entries) {
-      points_.push_back(entry.point);
-      input_index_.push_back(entry.index);
-    }
+    for (const Entry& entry : entries) input_index_.push_back(entry.index);
+    std::vector<Entry>().swap(entries);  // freed before the points are copied
+    points_.reserve(count);
+    for (int i : input_index_) points_.push_back(first[i]);
   }
 
   // Whether some point p at squared distance below r2 from x has accept(p) true.

@@ -120,7 +120,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   // A result that does not interpolate is measured on its own vertices (all of them used). The
   // skin of a robust carving's flood that stood was checked a closed 2-manifold through every
   // sample, and its topology filled in then (closed_skin_check.hpp).
-  if (!result.stats.carved_by_flood) {
+  if (!result.stats.carved_by_flood || result.stats.facets != result.surface.size()) {
     measure_topology<Traits::dimension>(
         result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
         result.stats);

@@ -309,7 +309,8 @@ propagation        events: records (pole, label, source, reason, weight, after_e
 insertion          inserted_poles: the poles inserted into DT (paper method: OUP, or UP bordered)
 sculpted_delaunay  cells, cell_count: DT(S + OUP) (paper method)
 carving            events: records (cell, reason) of the cells of delaunay removed (robust
-                   method; reason codes: CARVE_REASONS); kept_outer_cells; buried_samples
+                   method, with keep_triangulations; reason codes: CARVE_REASONS);
+                   kept_outer_cells (not counted after a flood); buried_samples
 crust              voronoi_vertices (v, d), cells, cell_count: DT(S + V) of the crust, whose
                    sites are the samples then the Voronoi vertices
 candidates         chosen, pruned (k, d): the facets the crust or co-cone chose, those pruned;
