@@ -56,7 +56,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   } else if (sculpts(stats.method)) {
     if (stats.carved_by_flood) {
       row("carved cells (one flood)", stats.carved_cells);
-      row("outer cells kept (manifold)", "not counted (flood)");
+      row("outer cells kept (manifold)", "not counted");
     } else {
       row("carved cells", stats.carved_cells);
       row("outer cells kept (manifold)", stats.kept_outer_cells);
