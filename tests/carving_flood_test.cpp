@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/closed_skin_check.hpp"
+#include "core/facet_topology.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -102,7 +103,8 @@ void expect_topology_as_measured(std::size_t samples, const std::vector<Facet<D>
   ASSERT_TRUE(check.closed_manifold_through_all);
   Statistics implied;
   closed_skin_topology<D>(samples, facets.size(), check, implied);
-  const Statistics measured = facet_topology(samples, facets);
+  Statistics measured;
+  measure_topology_by_ridges<D>(samples, facets, measured);
   EXPECT_EQ(implied.facets, measured.facets);
   EXPECT_EQ(implied.unused_samples, measured.unused_samples);
   EXPECT_EQ(implied.components, measured.components);

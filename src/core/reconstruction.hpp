@@ -117,14 +117,10 @@ Reconstruction<Traits::dimension> reconstruct_with(
 
   clock.start("topology");
   result.stats.surface_vertices = result.surface_vertices.size();
-  // A result that does not interpolate is measured on its own vertices (all of them used). The
-  // skin of a robust carving's flood that stood was checked a closed 2-manifold through every
-  // sample, and its topology filled in then (closed_skin_check.hpp).
-  if (!result.stats.carved_by_flood || result.stats.facets != result.surface.size()) {
-    measure_topology<Traits::dimension>(
-        result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
-        result.stats);
-  }
+  // A result that does not interpolate is measured on its own vertices (all of them used).
+  measure_topology<Traits::dimension>(
+      result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
+      result.stats);
   undo_normalisation<Traits::dimension>(result, normalisation, samples);
   clock.finish();
   return result;

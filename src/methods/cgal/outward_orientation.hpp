@@ -4,25 +4,22 @@
 #pragma once
 
 #include <map>
-#include <numeric>
 #include <sculpt/sculpt.hpp>
 #include <utility>
 #include <vector>
 
+#include "../../core/union_find.hpp"
+
 namespace sculpt {
 
 inline void orient_outward(const std::vector<Point<3>>& points, std::vector<Facet<3>>& surface) {
-  // The pieces: vertices joined by the triangles (union-find).
-  std::vector<int> parent(points.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  const auto root = [&](int v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  // The pieces: vertices joined by the triangles.
+  Union_find pieces(points.size());
   for (const auto& t : surface) {
-    parent[root(t[1])] = root(t[0]);
-    parent[root(t[2])] = root(t[0]);
+    pieces.unite(t[1], t[0]);
+    pieces.unite(t[2], t[0]);
   }
+  const auto root = [&](int v) { return static_cast<int>(pieces.find(v)); };
   // Per piece: six times its signed volume (tetrahedra from the origin to each triangle), and
   // whether every edge has a triangle on its other side.
   std::map<int, double> six_volume;

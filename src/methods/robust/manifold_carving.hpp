@@ -257,7 +257,7 @@ class Manifold_carving {
   // The shortcut (see the top): flood the outer cells from the outside, depth first, and keep
   // the result if it is where the carving was going; else undo it.
   bool flood_stands_for_carving() {
-    // The cells of the outer poles, for the pocket test of flood_is_the_carving(): found in
+    // The cells of the outer poles, for the pocket test of flood_is_the_carving: found in
     // this pass, which meets the cells in the order they are numbered.
     std::vector<int> pole_cells;
     const auto& poles = result_.poles;
@@ -269,7 +269,7 @@ class Manifold_carving {
     }
     std::sort(pole_cells.begin(), pole_cells.end());
     pole_cells.erase(std::unique(pole_cells.begin(), pole_cells.end()), pole_cells.end());
-    outer_pole_cells_.clear();
+    std::vector<Cell_handle> outer_pole_cells;
     // A cell is removed when it is found, so none is found twice; the stack holds removed cells
     // whose neighbours are still to be looked at.
     std::vector<Cell_handle> stack;
@@ -282,9 +282,9 @@ class Manifold_carving {
       stack.push_back(cell);
     };
     for (auto cell : Traits::finite_cells(triangulation_)) {
-      if (outer_pole_cells_.size() < pole_cells.size() &&
-          cell->info() == pole_cells[outer_pole_cells_.size()]) {
-        outer_pole_cells_.push_back(cell);
+      if (outer_pole_cells.size() < pole_cells.size() &&
+          cell->info() == pole_cells[outer_pole_cells.size()]) {
+        outer_pole_cells.push_back(cell);
       }
       if (is_outside(cell) || sample_left_off) continue;  // the pass goes on for pole cells
       for (int i = 0; i <= D; ++i) {
@@ -310,8 +310,8 @@ class Manifold_carving {
       }
     }
     // Every outer pole's cell met in the pass (else the pocket test would miss some: undone).
-    if (!sample_left_off && outer_pole_cells_.size() == pole_cells.size() &&
-        flood_is_the_carving()) {
+    if (!sample_left_off && outer_pole_cells.size() == pole_cells.size() &&
+        flood_is_the_carving(outer_pole_cells)) {
       result_.stats.carved_by_flood = true;
       return true;
     }
@@ -334,11 +334,11 @@ class Manifold_carving {
   // change nothing; it opens one as a cavity only if it holds the outer poles of most of its
   // samples, so it is enough to judge the cells of the outer poles still in the solid. (Not
   // looking for the other pockets, the flood counts no outer cell kept.)
-  bool flood_is_the_carving() {
+  bool flood_is_the_carving(const std::vector<Cell_handle>& outer_pole_cells) {
     for (int s = 0; s < sample_count_; ++s) {
       if (solid_cells_at_[s] == 0 || outside_cells_at_[s] == 0) return false;
     }
-    for (Cell_handle cell : outer_pole_cells_) {
+    for (Cell_handle cell : outer_pole_cells) {
       if (!is_outside(cell) && judged_outer(cell)) return false;
     }
     result_.surface.clear();
@@ -348,13 +348,8 @@ class Manifold_carving {
     const Skin_check skin = check_closed_skin<D>(sample_count_, result_.surface);
     // A piece of k samples, all on its skin, has at least k - D cells: one of more than
     // small_piece + D samples is no piece a group removal refuses to cut off.
-    if (!skin.closed_manifold_through_all ||
-        (skin.pieces > 1 && skin.smallest_piece <= small_piece + D)) {
-      return false;
-    }
-    // The topology follows from the check (the topology stage then measures nothing).
-    closed_skin_topology<D>(sample_count_, result_.surface.size(), skin, result_.stats);
-    return true;
+    return skin.closed_manifold_through_all &&
+           (skin.pieces == 1 || skin.smallest_piece > small_piece + D);
   }
 
   void carve_queue() {
@@ -705,7 +700,6 @@ class Manifold_carving {
   std::vector<std::array<int, 2>> link_;
   std::vector<std::pair<int, int>> link_ends_;
   std::vector<Cell_handle> outer_left_;  // judged outer and in the solid after the first carve
-  std::vector<Cell_handle> outer_pole_cells_;  // the flood's: cells of outer poles
   std::vector<Cell_handle> stack_;
   std::vector<int> group_mark_;  // per cell: the outer group that last reached it
   int group_counter_ = 0;
