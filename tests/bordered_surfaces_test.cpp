@@ -227,6 +227,9 @@ TEST(Bordered_surface, ANoisySheetIsABorderedManifoldThroughEverySample) {
     EXPECT_TRUE(verdict(result.stats).manifold) << verdict(result.stats).line;
     EXPECT_EQ(result.stats.unused_samples, 0u);
     EXPECT_EQ(result.stats.components, 1u);
+    // Noise stands slivers on edge, and the extraction leaves small holes amid the sheet; every
+    // one is a gap the least folded fill closes (greedy ear clipping left 1 or 2 of them).
+    EXPECT_EQ(result.stats.boundary_loops, 1u);
   }
 }
 
@@ -261,6 +264,41 @@ TEST(Bordered_surface, AWideCircleWhoseMiddleIsOnTheSheetBridgesNoOpening) {
   const Facet<3> ear = {rim, rim + 1, rim + 2};
   EXPECT_NEAR(facet_circumradius<3>(holed, ear), 0.5, 1e-12);
   EXPECT_FALSE(circle_middle_on_the_sheet(holed, holed_tree, ear));
+}
+
+// A fill need not be Delaunay: across a slot (an elliptic hole 2 long and 0.8 wide in a sheet of
+// samples 0.1 apart), the triangle of the rim samples at 0°, 9° and 180° has its circle's middle
+// near the rim, so the circle test would let it bridge the slot; its body covers the slot's
+// empty middle. Triangles on the sheet, and the sliver along a row, cover no empty disc.
+TEST(Bordered_surface, AFillAcrossASlotCoversAnEmptyDisc) {
+  std::vector<Point<3>> samples;
+  const auto in_slot = [](double x, double y) { return x * x + (y / 0.4) * (y / 0.4) <= 1.15; };
+  for (int i = -20; i <= 20; ++i) {
+    for (int j = -20; j <= 20; ++j) {
+      if (!in_slot(0.1 * i, 0.1 * j)) samples.push_back({0.1 * i, 0.1 * j, 0});
+    }
+  }
+  const int rim = static_cast<int>(samples.size());
+  for (int k = 0; k < 40; ++k) {
+    const double angle = 2 * M_PI * k / 40;
+    samples.push_back({std::cos(angle), 0.4 * std::sin(angle), 0});
+  }
+  const Point_tree<3> tree(samples.data(), samples.data() + samples.size());
+  const std::vector<double> spacing = neighbourhood_spacings(samples, tree);
+  const Facet<3> across = {rim, rim + 1, rim + 20};
+  EXPECT_TRUE(circle_middle_on_the_sheet(samples, tree, across));
+  EXPECT_TRUE(covers_an_empty_disc(samples, tree, spacing, across, opening_growth_ratio));
+  // Three neighbouring rim samples, and a triangle of the sheet beside the slot.
+  EXPECT_FALSE(covers_an_empty_disc(samples, tree, spacing, {rim + 5, rim + 6, rim + 7},
+                                    opening_growth_ratio));
+  EXPECT_FALSE(covers_an_empty_disc(samples, tree, spacing, {0, 1, 41}, opening_growth_ratio));
+  // A sliver along a row of the sheet: three neighbours on the edge x = -2, the middle one lifted.
+  std::vector<Point<3>> lifted = samples;
+  lifted[20][2] = 0.004;
+  const Point_tree<3> lifted_tree(lifted.data(), lifted.data() + lifted.size());
+  const Facet<3> sliver = {19, 20, 21};
+  EXPECT_GT(facet_circumradius<3>(lifted, sliver), 2 * spacing[20]);
+  EXPECT_FALSE(covers_an_empty_disc(lifted, lifted_tree, spacing, sliver, opening_growth_ratio));
 }
 
 // count_spanning measures only the spacings that can matter; it counts what measuring them all

@@ -5,8 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
+#include <random>
 #include <set>
 
 #include "test_support.hpp"
@@ -101,6 +103,94 @@ TEST(Gap_filling, AFillOverAnOpeningOrOnAnEdgeAlreadyThereIsRefused) {
   auto both_taken = holed;
   EXPECT_EQ(fill_gaps(with_apexes, both_taken, never_over_an_opening), 0u);
   EXPECT_EQ(both_taken, holed);
+}
+
+// Every triangulation of the polygon 0..k-1, as triangles (v_j, v_m, v_i) on each sub-chain.
+std::vector<std::vector<Facet<3>>> every_triangulation(int i, int j) {
+  if (j == i + 1) return {{}};
+  std::vector<std::vector<Facet<3>>> all;
+  for (int m = i + 1; m < j; ++m) {
+    for (const auto& left : every_triangulation(i, m)) {
+      for (const auto& right : every_triangulation(m, j)) {
+        std::vector<Facet<3>> triangles = left;
+        triangles.insert(triangles.end(), right.begin(), right.end());
+        triangles.push_back({j, m, i});
+        all.push_back(triangles);
+      }
+    }
+  }
+  return all;
+}
+
+// The cosine at a fill's sharpest fold, the fill given by loop positions: between two of its
+// triangles on a shared edge, and between one on a loop edge and the surface's triangle there.
+double sharpest_fold(const std::vector<Point<3>>& points, const std::vector<Facet<3>>& fill,
+                     const std::vector<std::array<double, 3>>& edge_normals) {
+  const auto unit_normal = [&](const Facet<3>& t) {
+    std::array<double, 3> u, v;
+    for (int c = 0; c < 3; ++c) {
+      u[c] = points[t[1]][c] - points[t[0]][c];
+      v[c] = points[t[2]][c] - points[t[0]][c];
+    }
+    std::array<double, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                               u[0] * v[1] - u[1] * v[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& x : n) x /= length;
+    return n;
+  };
+  const auto cosine = [](std::array<double, 3> a, std::array<double, 3> b) {
+    return (a[0] * b[0] + a[1] * b[1] + a[2] * b[2]) /
+           std::sqrt((a[0] * a[0] + a[1] * a[1] + a[2] * a[2]) *
+                     (b[0] * b[0] + b[1] * b[1] + b[2] * b[2]));
+  };
+  const int k = static_cast<int>(edge_normals.size());
+  std::map<std::pair<int, int>, std::vector<std::array<double, 3>>> on_edge;
+  for (const auto& t : fill) {
+    for (int j = 0; j < 3; ++j) {
+      const int a = std::min(t[j], t[(j + 1) % 3]), b = std::max(t[j], t[(j + 1) % 3]);
+      on_edge[{a, b}].push_back(unit_normal(t));
+    }
+  }
+  double sharpest = 1;
+  for (auto& [edge, normals] : on_edge) {
+    const auto [a, b] = edge;
+    if (b == a + 1) normals.push_back(edge_normals[a]);
+    if (a == 0 && b == k - 1) normals.push_back(edge_normals[k - 1]);
+    EXPECT_EQ(normals.size(), 2u);
+    if (normals.size() == 2) sharpest = std::min(sharpest, cosine(normals[0], normals[1]));
+  }
+  return sharpest;
+}
+
+// The fill is the least folded of all triangulations of the loop: on random crooked loops of 4
+// to 7 samples, its sharpest fold equals the best of every triangulation's, and is its own.
+TEST(Gap_filling, TheFillIsTheLeastFoldedTriangulation) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> jitter(-0.5, 0.5);
+  for (int k = 4; k <= 7; ++k) {
+    for (int trial = 0; trial < 20; ++trial) {
+      SCOPED_TRACE(::testing::Message() << k << " samples, trial " << trial);
+      // Round a circle clockwise seen from above, as the border of a hole in a sheet facing up.
+      std::vector<Point<3>> points;
+      std::vector<int> loop;
+      std::vector<std::array<double, 3>> edge_normals;
+      for (int i = 0; i < k; ++i) {
+        const double angle = -2 * M_PI * i / k, radius = 1 + 0.3 * jitter(random);
+        points.push_back({radius * std::cos(angle), radius * std::sin(angle), jitter(random)});
+        loop.push_back(i);
+        edge_normals.push_back({jitter(random), jitter(random), 1.0});
+      }
+      const Loop_fill fill = least_folded_fill(points, loop, edge_normals, Edge_uses{});
+      ASSERT_EQ(fill.triangles.size(), static_cast<std::size_t>(k - 2));
+      double best = -2;
+      for (const auto& triangulation : every_triangulation(0, k - 1)) {
+        best = std::max(best, sharpest_fold(points, triangulation, edge_normals));
+      }
+      EXPECT_NEAR(fill.sharpest_fold_cos, best, 1e-9);
+      EXPECT_NEAR(sharpest_fold(points, fill.triangles, edge_normals), fill.sharpest_fold_cos,
+                  1e-9);
+    }
+  }
 }
 
 // A flat strip around a round hole: `rim` samples at radius 1 and as many at radius 1.5, as

@@ -96,18 +96,21 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
     return spacing_unknown(facet) ||
            spans_opening<3>(samples, spacing, facet, opening_growth_ratio);
   };
-  const auto over_an_opening = [&](const Facet<3>& facet) {
-    return spacing_unknown(facet) || over_opening(facet, opening_growth_ratio);
+  // A fill is any triangulation of its loop, not a Delaunay one: an obtuse triangle's circle can
+  // reach over the sheet while its body spans a hole, so the discs it covers are measured.
+  const auto covers_an_opening = [&](const Facet<3>& facet) {
+    return spacing_unknown(facet) ||
+           covers_an_empty_disc(samples, tree, spacing, facet, opening_growth_ratio);
   };
   result.stats.set_in_samples = set_in_left_off_samples(samples, result.surface);
   result.stats.attached_samples = attach_left_off_samples(samples, result.surface, too_wide);
   result.stats.closed_notches = close_border_notches(samples, result.surface, too_wide);
   result.stats.joined_pinches = join_pinched_vertices(samples, result.surface, too_wide);
-  result.stats.filled_gaps = fill_gaps(samples, result.surface, over_an_opening);
+  result.stats.filled_gaps = fill_gaps(samples, result.surface, covers_an_opening);
   // Fans no triangle could join: the smaller ones go, and the loops that leaves may be gaps.
   result.stats.dropped_fans = drop_pinched_fans(result.surface, samples.size());
   if (result.stats.dropped_fans > 0)
-    result.stats.filled_gaps += fill_gaps(samples, result.surface, over_an_opening);
+    result.stats.filled_gaps += fill_gaps(samples, result.surface, covers_an_opening);
 }
 
 }  // namespace sculpt

@@ -1,16 +1,16 @@
 // Gaps in the sampling, filled: after the openings are taken out of a bordered surface and the
 // rest is made a manifold (bordered_surface.hpp), a border loop can be a gap rather than an
 // opening. Where the paper's candidates fold (slivers of nearly cospherical samples, as along the
-// rulings of a regularly sampled cylinder), the extraction keeps neither fold and leaves a hole a
-// few samples around amid the sheet (CGAL's cylinder_locally_refined: five loops of 3 to 7
-// samples). A loop that can be triangulated with no triangle wider than the test that took the
-// openings out allows (core/spanning_openings.hpp, at the ratio the openings grow by) is no
-// opening by that rule: it is filled with that triangulation, and the surface still interpolates.
+// rulings of a regularly sampled cylinder), or noise stands a sliver on its edge, the extraction
+// keeps neither fold and leaves a hole a few samples around amid the sheet (CGAL's
+// cylinder_locally_refined: five loops of 3 to 7 samples; a sheet with noise of 2% of its
+// spacing: nine). A loop whose fill covers no disc empty of samples wider than the test that took
+// the openings out allows (core/spanning_openings.hpp, at the ratio the openings grow by) is no
+// opening by that rule: it is filled, and the surface still interpolates.
 //
 //   for each border loop of at most 64 samples that is a simple cycle:
-//     fill <- ear clipping, each time the ear with the smallest circumradius among those that
-//             continue the surface (no fold back over it, no edge it has already)
-//     add fill if every ear could be clipped and none is too wide
+//     fill <- its least folded triangulation (least_folded_fill.hpp)
+//     add fill if it folds by less than 135° and no triangle of it covers an opening
 //
 // An opening narrower than that test can tell was never found; filling its loop keeps the rule's
 // word (CGAL's ChineseDragon: its two true holes are single missing triangles, closed either way).
@@ -27,6 +27,7 @@
 #include "../../core/spanning_openings.hpp"
 #include "../extraction/manifold_extraction.hpp"
 #include "border_edges.hpp"
+#include "least_folded_fill.hpp"
 
 namespace sculpt {
 
@@ -83,49 +84,30 @@ inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>&
   return simple_border_loops(triangles, edge_uses(triangles));
 }
 
-// A triangulation of the loop by ear clipping, each time the ear with the smallest circumradius
-// among those that continue the surface: facing against the loop's edges, turned less than 90
-// degrees from the triangles on the edges they cover (an ear at a reflex corner, or across the
-// outer border of a sheet, lies back over the surface and fails this), and whose new edge is not
-// an edge of the surface already. Empty when no ear is left or the one taken may not be added.
+// A fill lies back over the surface rather than across a gap when two of its triangles, or one
+// and the surface's triangle beside it, turn from each other by more than this: nearer folded
+// flat back (180°, the outer border of a small sheet) than square (90°). Noise folds less: the
+// missing triangles of a sheet with noise of 2% of its spacing, and of CGAL's ChineseDragon where
+// thin parts fold, turn by 90-145°.
+inline constexpr double sharpest_fill_fold_cos = -0.7071;  // 135°
+
+// The least folded triangulation of the loop (least_folded_fill.hpp), if it folds less than
+// sharpest_fill_fold_cos and `not_to_add` allows each of its triangles; empty otherwise.
 inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
                                           const Border_loop& border, const Edge_uses& edges,
                                           const std::function<bool(const Facet<3>&)>& not_to_add) {
-  using extraction_detail::dot;
-  using extraction_detail::edge_key;
-  using extraction_detail::normal_of;
-  using extraction_detail::Vector;
-  std::vector<int> loop = border.vertices;
-  // normals[i]: of the triangle on the loop's edge loop[i] -> loop[i + 1].
-  std::vector<Vector> normals;
+  const std::vector<int>& loop = border.vertices;
+  std::vector<extraction_detail::Vector> normals;  // of the triangle on loop[i] -> loop[i + 1]
   for (std::size_t i = 0; i < loop.size(); ++i) {
-    normals.push_back(normal_of(samples, loop[i], loop[(i + 1) % loop.size()], border.apexes[i]));
+    normals.push_back(extraction_detail::normal_of(samples, loop[i], loop[(i + 1) % loop.size()],
+                                                   border.apexes[i]));
   }
-  std::vector<Facet<3>> fill;
-  while (loop.size() >= 3) {
-    const int k = static_cast<int>(loop.size());
-    int best = -1;
-    double best_radius = INFINITY;
-    for (int i = 0; i < k; ++i) {
-      const int before = loop[(i + k - 1) % k], after = loop[(i + 1) % k];
-      if (k > 3 && edges.count(edge_key(before, after))) continue;
-      const Vector normal = normal_of(samples, after, loop[i], before);
-      // The last ear (k = 3) covers a third edge, not looked at: a missing triangle where a thin
-      // part folds sharply is still filled (checking it refused 42 of ChineseDragon's fills).
-      if (dot(normal, normals[i]) <= 0 || dot(normal, normals[(i + k - 1) % k]) <= 0) continue;
-      const double radius = facet_circumradius<3>(samples, {after, loop[i], before});
-      if (best < 0 || radius < best_radius) best = i, best_radius = radius;
-    }
-    if (best < 0) return {};
-    const Facet<3> ear = {loop[(best + 1) % k], loop[best], loop[(best + k - 1) % k]};
-    if (not_to_add(ear)) return {};
-    fill.push_back(ear);
-    // The ear's edge before -> after is the loop's edge now.
-    normals[(best + k - 1) % k] = normal_of(samples, ear[0], ear[1], ear[2]);
-    normals.erase(normals.begin() + best);
-    loop.erase(loop.begin() + best);
+  Loop_fill fill = least_folded_fill(samples, loop, normals, edges);
+  if (fill.triangles.empty() || !(fill.sharpest_fold_cos > sharpest_fill_fold_cos)) return {};
+  for (const auto& triangle : fill.triangles) {
+    if (not_to_add(triangle)) return {};
   }
-  return fill;
+  return std::move(fill.triangles);
 }
 
 // Fills the small border loops of `surface` that are gaps; returns how many.
