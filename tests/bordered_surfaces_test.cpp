@@ -10,6 +10,7 @@
 #include <set>
 #include <string>
 
+#include "core/automatic_kind.hpp"
 #include "core/spanning_openings.hpp"
 #include "methods/robust/bordered_surface.hpp"
 #include "shapes/shapes.hpp"
@@ -371,6 +372,28 @@ TEST(Automatic_kind, OnlyTheRobustMethodChooses) {
       EXPECT_NE(stage.name, "kind choice");
     }
   }
+}
+
+// The automatic kind's last word: a bordered result is kept when it has a border, the closed
+// result has the facets over openings to have capped its loops (2 each on a surface, 1 on a
+// curve), and it has fewer defects than the closed one with those facets counted.
+TEST(Automatic_kind, BorderLoopsAreOpeningsOnlyWhereTheClosedResultCappedThem) {
+  Statistics closed, bordered;
+  bordered.boundary_loops = 5;
+  // A torus with noise of 5% of its spacing: 5 loops torn, 7 facets over openings.
+  EXPECT_FALSE(keeps_bordered<3>(closed, 7, bordered));
+  EXPECT_TRUE(keeps_bordered<3>(closed, 10, bordered));
+  bordered.boundary_loops = 0;
+  EXPECT_FALSE(keeps_bordered<3>(closed, 100, bordered));
+  // A curve's gap is bridged by one edge.
+  bordered.boundary_loops = 2;
+  EXPECT_TRUE(keeps_bordered<2>(closed, 2, bordered));
+  EXPECT_FALSE(keeps_bordered<3>(closed, 2, bordered));
+  // More defects than the closed result's, with its facets over openings counted as defects.
+  bordered.non_manifold_vertices = 30;
+  closed.unused_samples = 5;
+  EXPECT_FALSE(keeps_bordered<3>(closed, 25, bordered));
+  EXPECT_TRUE(keeps_bordered<3>(closed, 26, bordered));
 }
 
 }  // namespace

@@ -54,6 +54,32 @@ TEST(Gap_filling, ALoopIsFollowedInTheTrianglesDirection) {
   EXPECT_EQ(apexes, (std::vector<int>{3, 1, 5}));
 }
 
+// Two holes side by side sharing a vertex: the square 0..3 on z = 0 with a fan of triangles
+// around vertex 4 at its centre, two of whose triangles are missing, (4, 1, 2) and (4, 3, 0).
+// At 4 two fans meet (its triangles (4, 0, 1) and (4, 2, 3)), each hole between an edge arriving
+// from one fan and one leaving the other: two loops of three, each filled.
+TEST(Gap_filling, HolesSharingAVertexAreTwoLoops) {
+  const std::vector<Point<3>> points = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 0},
+                                        {0, -3, 0},  {3, 0, 0},  {0, 3, 0}, {-3, 0, 0}};
+  // The fan's two triangles, and around the square a ring so that the square's sides are inner
+  // edges.
+  std::vector<Facet<3>> surface = {{4, 0, 1}, {4, 2, 3}, {0, 5, 1}, {1, 5, 6}, {1, 6, 2},
+                                   {2, 6, 7}, {2, 7, 3}, {3, 7, 8}, {3, 8, 0}, {0, 8, 5}};
+  const auto loops = simple_border_loops(surface);
+  ASSERT_EQ(loops.size(), 3u);  // the two holes and the ring's outer border
+  std::set<std::vector<int>> small;
+  for (const auto& loop : loops) {
+    if (loop.vertices.size() != 3) continue;
+    std::vector<int> sorted = loop.vertices;
+    std::sort(sorted.begin(), sorted.end());
+    small.insert(sorted);
+  }
+  EXPECT_EQ(small, (std::set<std::vector<int>>{{1, 2, 4}, {0, 3, 4}}));
+  EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening), 2u);
+  EXPECT_EQ(surface.size(), 12u);
+  EXPECT_EQ(simple_border_loops(surface).size(), 1u);
+}
+
 TEST(Gap_filling, TwoLoopsThroughOneVertexAreNotSimple) {
   // Two triangles meeting at vertex 0 only (a bowtie): its border passes 0 twice.
   const std::vector<Facet<3>> bowtie = {{0, 1, 2}, {0, 3, 4}};
@@ -163,7 +189,8 @@ double sharpest_fold(const std::vector<Point<3>>& points, const std::vector<Face
 }
 
 // The fill is the least folded of all triangulations of the loop: on random crooked loops of 4
-// to 7 samples, its sharpest fold equals the best of every triangulation's, and is its own.
+// to 7 samples, one diagonal of which the surface has already, its sharpest fold equals the best
+// of every triangulation's without that diagonal, and is its own.
 TEST(Gap_filling, TheFillIsTheLeastFoldedTriangulation) {
   std::mt19937 random(7);
   std::uniform_real_distribution<double> jitter(-0.5, 0.5);
@@ -171,24 +198,49 @@ TEST(Gap_filling, TheFillIsTheLeastFoldedTriangulation) {
     for (int trial = 0; trial < 20; ++trial) {
       SCOPED_TRACE(::testing::Message() << k << " samples, trial " << trial);
       // Round a circle clockwise seen from above, as the border of a hole in a sheet facing up.
-      std::vector<Point<3>> points;
+      // The loop's samples are numbered 10 + 3 i, its positions i; the diagonal between
+      // positions 1 and 3 is an edge of the surface already.
+      std::vector<Point<3>> points(10 + 3 * k);
+      std::vector<Point<3>> at_position;
       std::vector<int> loop;
       std::vector<std::array<double, 3>> edge_normals;
       for (int i = 0; i < k; ++i) {
         const double angle = -2 * M_PI * i / k, radius = 1 + 0.3 * jitter(random);
-        points.push_back({radius * std::cos(angle), radius * std::sin(angle), jitter(random)});
-        loop.push_back(i);
+        at_position.push_back(
+            {radius * std::cos(angle), radius * std::sin(angle), jitter(random)});
+        loop.push_back(10 + 3 * i);
+        points[loop.back()] = at_position.back();
         edge_normals.push_back({jitter(random), jitter(random), 1.0});
       }
-      const Loop_fill fill = least_folded_fill(points, loop, edge_normals, Edge_uses{});
+      const Edge_uses edges = {{extraction_detail::edge_key(loop[1], loop[3]), 2}};
+      const Loop_fill fill = least_folded_fill(points, loop, edge_normals, edges);
       ASSERT_EQ(fill.triangles.size(), static_cast<std::size_t>(k - 2));
+      const auto uses_diagonal = [](const std::vector<Facet<3>>& triangles, int a, int b) {
+        for (const auto& t : triangles) {
+          if (std::count(t.begin(), t.end(), a) && std::count(t.begin(), t.end(), b)) return true;
+        }
+        return false;
+      };
       double best = -2;
       for (const auto& triangulation : every_triangulation(0, k - 1)) {
-        best = std::max(best, sharpest_fold(points, triangulation, edge_normals));
+        if (uses_diagonal(triangulation, 1, 3)) continue;
+        best = std::max(best, sharpest_fold(at_position, triangulation, edge_normals));
       }
       EXPECT_NEAR(fill.sharpest_fold_cos, best, 1e-9);
-      EXPECT_NEAR(sharpest_fold(points, fill.triangles, edge_normals), fill.sharpest_fold_cos,
+      // The fill in loop positions.
+      std::vector<Facet<3>> in_positions;
+      for (const auto& t : fill.triangles) {
+        Facet<3> positions;
+        for (int j = 0; j < 3; ++j) positions[j] = (t[j] - 10) / 3;
+        in_positions.push_back(positions);
+      }
+      EXPECT_FALSE(uses_diagonal(in_positions, 1, 3));
+      EXPECT_NEAR(sharpest_fold(at_position, in_positions, edge_normals), fill.sharpest_fold_cos,
                   1e-9);
+      // Beside a degenerate triangle of the surface there is no fold to measure: no fill.
+      std::vector<std::array<double, 3>> one_degenerate = edge_normals;
+      one_degenerate[trial % k] = {0, 0, 0};
+      EXPECT_TRUE(least_folded_fill(points, loop, one_degenerate, edges).triangles.empty());
     }
   }
 }

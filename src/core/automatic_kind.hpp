@@ -36,14 +36,28 @@
 namespace sculpt {
 
 // The fewest facets over openings a closed result caps one opening with: a curve's gap is
-// bridged by one edge; a surface's opening takes a cap of triangles, and one triangle alone
-// closes only a loop of three samples, a missing triangle the bordered rule fills (a noisy
-// torus at 5% of the spacing: 7 facets over openings, 6 border loops torn by the noise).
+// bridged by one edge; a surface's opening takes a cap of triangles. An opening the test can
+// find is over ρ = 3 spacings in radius, with a rim of some 19 samples or more, and the cap over
+// it has many wide triangles; a loop torn by noise has one or none nearby (a torus with noise of
+// 5% of its spacing: 7 facets over openings, 5 border loops torn). The count is global: a real
+// opening capped by fewer facets than twice the loops noise tears elsewhere is lost.
 template <int D>
 inline constexpr std::size_t facets_capping_an_opening = D == 2 ? 1 : 2;
 
 inline std::size_t defects(const Statistics& stats) {
   return stats.non_manifold_ridges + stats.non_manifold_vertices + stats.unused_samples;
+}
+
+// Whether the bordered result is kept over the closed one, `spanning` facets of which span an
+// opening. A bordered result without a border found no opening: the closed one is the shape. Nor
+// is a border loop an opening unless the closed result capped one there: with fewer facets over
+// openings than it takes to cap the loops, the loops are holes the bordered rule made (noise
+// tears small ones).
+template <int D>
+bool keeps_bordered(const Statistics& closed, std::size_t spanning, const Statistics& bordered) {
+  return bordered.boundary_loops > 0 &&
+         bordered.boundary_loops * facets_capping_an_opening<D> <= spanning &&
+         defects(bordered) < defects(closed) + spanning;
 }
 
 // run(options) reconstructs with the given options (kind closed or bordered).
@@ -103,13 +117,7 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
 
   const auto bordered_started = std::chrono::steady_clock::now();
   Reconstruction<D> bordered_result = run(run_options(Surface_kind::bordered, 0.5, 1.0));
-  // A bordered result without a border found no opening: the closed one is the shape. Nor is a
-  // border loop an opening unless the closed result capped one there: with fewer facets over
-  // openings than it takes to cap the loops, the loops are holes the bordered rule made (noise
-  // tears small ones).
-  if (bordered_result.stats.boundary_loops == 0 ||
-      bordered_result.stats.boundary_loops * facets_capping_an_opening<D> > spanning ||
-      defects(bordered_result.stats) >= defects(closed_result.stats) + spanning) {
+  if (!keeps_bordered<D>(closed_result.stats, spanning, bordered_result.stats)) {
     // Closed kept: the attempt's time shows as a stage of its own.
     const double attempt_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - bordered_started).count();

@@ -161,13 +161,14 @@ inline bool circle_middle_on_the_sheet(const std::vector<Point<3>>& samples,
   return std::isfinite(reach) && tree.any_within(facet_circumcentre(samples, facet), reach * reach);
 }
 
-// Whether a triangle that need not be Delaunay (a gap's fill) covers a disc empty of samples
-// wider than `ratio` times the largest spacing of its vertices: no sample lies that close to
-// one of its deepest points. Looked at: the point farthest from its vertices (its circumcentre,
-// or the middle of its longest edge when an angle is obtuse), its centroid and the middles of
-// its edges (a diagonal across a hole has its middle there). For a triangle with an empty
-// circumscribed ball and no obtuse angle this is spans_opening; a sliver along a row of samples,
-// whose circle is wide but whose body lies on the sheet, covers no empty disc.
+// Whether a triangle that need not be Delaunay (a gap's fill) covers a disc empty of samples of
+// radius over `ratio` times the largest spacing of its vertices: no sample lies that close to
+// one of its deepest points. Looked at: its centroid, the middles of its edges (a diagonal across
+// a hole has its middle there), and the point of it farthest from its vertices: its circumcentre
+// when no angle is obtuse; else on the longest edge, where the perpendicular bisector of one of
+// the short edges crosses it (both are probed). For a triangle with an empty circumscribed ball
+// and no obtuse angle this is spans_opening; a sliver along a row of samples, whose circle is
+// wide but whose body lies on the sheet, covers no empty disc.
 inline bool covers_an_empty_disc(const std::vector<Point<3>>& samples, const Point_tree<3>& tree,
                                  const std::vector<double>& spacing, const Facet<3>& facet,
                                  double ratio) {
@@ -175,31 +176,38 @@ inline bool covers_an_empty_disc(const std::vector<Point<3>>& samples, const Poi
   for (int v : facet) local = std::max(local, spacing[v]);
   const double reach2 = ratio * local * ratio * local;
   const auto empty_around = [&](const Point<3>& x) { return !tree.any_within(x, reach2); };
-  const auto middle = [&](int a, int b) {
-    Point<3> m;
-    for (int k = 0; k < 3; ++k) m[k] = (samples[a][k] + samples[b][k]) / 2;
-    return m;
+  // The point a + t (b - a).
+  const auto along = [&](int a, int b, double t) {
+    Point<3> x;
+    for (int k = 0; k < 3; ++k) x[k] = samples[a][k] + t * (samples[b][k] - samples[a][k]);
+    return x;
+  };
+  const auto dot_at = [&](int apex, int b, int c) {  // (b - apex) · (c - apex)
+    double sum = 0;
+    for (int k = 0; k < 3; ++k) {
+      sum += (samples[b][k] - samples[apex][k]) * (samples[c][k] - samples[apex][k]);
+    }
+    return sum;
   };
   Point<3> centroid;
   for (int k = 0; k < 3; ++k) {
     centroid[k] = (samples[facet[0]][k] + samples[facet[1]][k] + samples[facet[2]][k]) / 3;
   }
   if (empty_around(centroid)) return true;
-  int longest = 0;
-  double longest2 = -1, sum_of_others = 0, lengths2[3];
   for (int j = 0; j < 3; ++j) {
-    lengths2[j] = 0;
-    for (int k = 0; k < 3; ++k) {
-      const double d = samples[facet[(j + 1) % 3]][k] - samples[facet[j]][k];
-      lengths2[j] += d * d;
-    }
-    if (lengths2[j] > longest2) longest2 = lengths2[j], longest = j;
-    if (empty_around(middle(facet[j], facet[(j + 1) % 3]))) return true;
+    if (empty_around(along(facet[j], facet[(j + 1) % 3], 0.5))) return true;
   }
-  for (int j = 0; j < 3; ++j) sum_of_others += j == longest ? 0 : lengths2[j];
-  // No obtuse angle: the circumcentre lies in the triangle, farther from the vertices than any
-  // other point of it.
-  return longest2 <= sum_of_others && empty_around(facet_circumcentre(samples, facet));
+  for (int j = 0; j < 3; ++j) {
+    // The angle at c is obtuse: the longest edge is a-b.
+    const int a = facet[j], b = facet[(j + 1) % 3], c = facet[(j + 2) % 3];
+    if (dot_at(c, a, b) >= 0) continue;
+    // On a-b, the points as far from c as from a, and from c as from b.
+    const double from_a = dot_at(a, c, c) / (2 * dot_at(a, c, b));
+    const double from_b = dot_at(b, c, c) / (2 * dot_at(b, c, a));
+    return (std::isfinite(from_a) && empty_around(along(a, b, from_a))) ||
+           (std::isfinite(from_b) && empty_around(along(b, a, from_b)));
+  }
+  return empty_around(facet_circumcentre(samples, facet));
 }
 
 // How many of the facets span an opening. Most samples' spacings need not be measured: a sample

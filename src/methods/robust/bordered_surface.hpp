@@ -16,7 +16,7 @@
 //                 the others attached to the border, its sharp notches closed
 //                 (left_off_samples.hpp), fans pinched at a vertex joined, small border loops
 //                 that are gaps, not openings, filled (gap_filling.hpp), then the smaller fans
-//                 still pinched dropped and the loops that leaves filled where they are gaps
+//                 still pinched dropped and the loops left, through pinches too, filled where they are gaps
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -86,7 +86,8 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   // A triangle reaching out to a left-off sample or across a notch may not be wider than the
   // growth ratio allows, however full the middle of its circle: that waiver, for slivers amid
   // the sheet, would let a triangle reach far out to samples off it. Inside a small loop a
-  // sliver with its circle's middle on the sheet is what the loop needs, as in the removal.
+  // sliver along the sheet is what the loop needs: a fill is refused only where its triangles
+  // cover a disc empty of samples.
   clock.start("mending");
   const auto spacing_unknown = [&](const Facet<3>& facet) {
     return !std::isfinite(spacing[facet[0]]) || !std::isfinite(spacing[facet[1]]) ||
@@ -106,11 +107,13 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   result.stats.attached_samples = attach_left_off_samples(samples, result.surface, too_wide);
   result.stats.closed_notches = close_border_notches(samples, result.surface, too_wide);
   result.stats.joined_pinches = join_pinched_vertices(samples, result.surface, too_wide);
-  result.stats.filled_gaps = fill_gaps(samples, result.surface, covers_an_opening);
-  // Fans no triangle could join: the smaller ones go, and the loops that leaves may be gaps.
+  result.stats.filled_gaps =
+      fill_gaps(samples, result.surface, covers_an_opening, Pinches::left_out);
+  // Fans no triangle could join: the smaller ones go, and the loops that leaves may be gaps; so
+  // may the loops between the fans that stay (a small fan folded back over the surface would
+  // leave its loop folded too if filled around first).
   result.stats.dropped_fans = drop_pinched_fans(result.surface, samples.size());
-  if (result.stats.dropped_fans > 0)
-    result.stats.filled_gaps += fill_gaps(samples, result.surface, covers_an_opening);
+  result.stats.filled_gaps += fill_gaps(samples, result.surface, covers_an_opening);
 }
 
 }  // namespace sculpt

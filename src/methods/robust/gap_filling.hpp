@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "../../core/spanning_openings.hpp"
+#include "../../core/union_find.hpp"
 #include "../extraction/manifold_extraction.hpp"
 #include "border_edges.hpp"
 #include "least_folded_fill.hpp"
@@ -43,57 +44,106 @@ struct Border_loop {
   std::vector<int> vertices, apexes;
 };
 
-// The border loops that are simple cycles: a loop through a vertex where more or fewer than one
-// border edge arrives or leaves is left out.
+// The border loops that are simple cycles. Where one border edge arrives at a vertex and one
+// leaves, the loop goes on along it. Where two fans of triangles meet at a vertex v (pinched:
+// two border edges arrive and two leave), each gap between the fans is bounded by an edge
+// arriving from one fan and one leaving the other, so a loop arriving from one fan leaves by the
+// other's edge (noise leaves small holes side by side sharing a vertex: a noisy sheet at 5% of
+// its spacing, a triangle hole and an 8-sample one sharing two). A loop through a vertex with
+// three fans or more, or none leaving, or through one vertex twice, is left out; so are the loops
+// through pinched vertices unless asked for.
+enum class Pinches { left_out, passed };
+
 inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles,
-                                                    const Edge_uses& uses) {
-  std::unordered_map<int, std::pair<int, int>> next;  // vertex -> (next vertex, apex)
-  std::unordered_map<int, int> arriving;
-  std::unordered_set<int> branching;
-  for (const auto& [a, b, apex] : border_edges(triangles, uses)) {
-    if (!next.emplace(a, std::make_pair(b, apex)).second) branching.insert(a);
-    if (++arriving[b] > 1) branching.insert(b);
+                                                    const Edge_uses& uses,
+                                                    Pinches pinches = Pinches::passed) {
+  const std::vector<Border_edge> border = border_edges(triangles, uses);
+  std::unordered_map<int, std::vector<int>> leaving, arriving;  // vertex -> border edges
+  for (int e = 0; e < static_cast<int>(border.size()); ++e) {
+    leaving[border[e].from].push_back(e);
+    arriving[border[e].to].push_back(e);
   }
-  std::vector<int> starts;
-  for (const auto& [v, unused] : next) starts.push_back(v);
-  std::sort(starts.begin(), starts.end());  // the same loops in the same order, run to run
-  std::vector<Border_loop> loops;
-  std::unordered_set<int> seen;
-  for (int start : starts) {
-    if (seen.count(start)) continue;
-    Border_loop loop;
-    bool simple = true;
-    int v = start;
-    do {
-      seen.insert(v);
-      simple = simple && !branching.count(v) && arriving.count(v);
-      const auto found = next.find(v);
-      if (found == next.end()) {
-        simple = false;
-        break;
+  // The fans at the pinched vertices: triangles at v sharing an edge v-x are one fan. fan_of
+  // gives, for a pinched vertex and a vertex x beside it, the fan's representative.
+  std::unordered_map<int, std::unordered_map<int, int>> fan_of;
+  for (const auto& [v, edges] : leaving) {
+    if (pinches == Pinches::passed && edges.size() == 2 && arriving[v].size() == 2) fan_of[v];
+  }
+  if (!fan_of.empty()) {
+    std::unordered_map<int, std::unordered_map<int, int>> number;  // v -> x -> index
+    const auto index_of = [&](int v, int x) {
+      auto& numbers = number[v];
+      return numbers.emplace(x, static_cast<int>(numbers.size())).first->second;
+    };
+    std::unordered_map<int, std::vector<std::pair<int, int>>> pairs;  // v -> (x, y) per triangle
+    for (const auto& t : triangles) {
+      for (int j = 0; j < 3; ++j) {
+        if (!fan_of.count(t[j])) continue;
+        const int x = t[(j + 1) % 3], y = t[(j + 2) % 3];
+        pairs[t[j]].push_back({index_of(t[j], x), index_of(t[j], y)});
       }
-      loop.vertices.push_back(v);
-      loop.apexes.push_back(found->second.second);
-      v = found->second.first;
-    } while (v != start && !seen.count(v));
-    if (simple && v == start) loops.push_back(std::move(loop));
+    }
+    for (auto& [v, sides] : pairs) {
+      Union_find around(number[v].size());
+      for (const auto& [x, y] : sides) around.unite(x, y);
+      for (const auto& [x, index] : number[v]) fan_of[v][x] = static_cast<int>(around.find(index));
+    }
+  }
+  // The border edge after e in its loop, or -1.
+  const auto after = [&](int e) {
+    const int v = border[e].to;
+    const auto out = leaving.find(v);
+    if (out == leaving.end()) return -1;
+    const std::vector<int>& edges = out->second;
+    if (edges.size() == 1 && arriving[v].size() == 1) return edges[0];
+    const auto fans = fan_of.find(v);
+    if (fans == fan_of.end()) return -1;
+    const auto fan = [&](int x) { return fans->second.at(x); };
+    const int from = fan(border[e].from);
+    const int first = fan(border[edges[0]].to), second = fan(border[edges[1]].to);
+    if (first == second) return -1;  // both leave one fan: more than two fans at v
+    if (from == first) return edges[1];
+    if (from == second) return edges[0];
+    return -1;
+  };
+  std::vector<Border_loop> loops;
+  std::vector<char> seen(border.size(), 0);
+  // Started from each border edge in the triangles' order: the same loops in the same order, run
+  // to run.
+  for (int start = 0; start < static_cast<int>(border.size()); ++start) {
+    if (seen[start]) continue;
+    Border_loop loop;
+    std::unordered_set<int> visited;
+    bool simple = true;
+    int e = start;
+    do {
+      seen[e] = 1;
+      simple = simple && visited.insert(border[e].from).second;
+      loop.vertices.push_back(border[e].from);
+      loop.apexes.push_back(border[e].apex);
+      e = after(e);
+    } while (e >= 0 && e != start && !seen[e]);
+    if (simple && e == start) loops.push_back(std::move(loop));
   }
   return loops;
 }
 
-inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles) {
-  return simple_border_loops(triangles, edge_uses(triangles));
+inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles,
+                                                    Pinches pinches = Pinches::passed) {
+  return simple_border_loops(triangles, edge_uses(triangles), pinches);
 }
 
 // A fill lies back over the surface rather than across a gap when two of its triangles, or one
 // and the surface's triangle beside it, turn from each other by more than this: nearer folded
 // flat back (180°, the outer border of a small sheet) than square (90°). Noise folds less: the
-// missing triangles of a sheet with noise of 2% of its spacing, and of CGAL's ChineseDragon where
-// thin parts fold, turn by 90-145°.
-inline constexpr double sharpest_fill_fold_cos = -0.7071;  // 135°
+// missing triangles of a sheet with noise of 2% of its spacing turn by 95-115°; where thin parts
+// of CGAL's ChineseDragon fold, some turn by 135-145° and stay open.
+inline constexpr double sharpest_fill_fold_cos = -0.70710678118654752;  // cos 135°
 
 // The least folded triangulation of the loop (least_folded_fill.hpp), if it folds less than
 // sharpest_fill_fold_cos and `not_to_add` allows each of its triangles; empty otherwise.
+// `not_to_add` judges the fill found, not the search: a search steered around it would look for
+// the triangulation that slips a hole between the points it probes.
 inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
                                           const Border_loop& border, const Edge_uses& edges,
                                           const std::function<bool(const Facet<3>&)>& not_to_add) {
@@ -111,13 +161,16 @@ inline std::vector<Facet<3>> fill_of_loop(const std::vector<Point<3>>& samples,
   return std::move(fill.triangles);
 }
 
-// Fills the small border loops of `surface` that are gaps; returns how many.
+// Fills the small border loops of `surface` that are gaps; returns how many. With the loops
+// through pinched vertices left out, the fans there can still be dropped (drop_pinched_fans)
+// before their loops are filled.
 inline std::size_t fill_gaps(const std::vector<Point<3>>& samples, std::vector<Facet<3>>& surface,
-                             const std::function<bool(const Facet<3>&)>& not_to_add) {
+                             const std::function<bool(const Facet<3>&)>& not_to_add,
+                             Pinches pinches = Pinches::passed) {
   using extraction_detail::edge_key;
   Edge_uses edges = edge_uses(surface);
   std::size_t filled = 0;
-  for (const auto& loop : simple_border_loops(surface, edges)) {
+  for (const auto& loop : simple_border_loops(surface, edges, pinches)) {
     if (static_cast<int>(loop.vertices.size()) > longest_gap_filled) continue;
     const std::vector<Facet<3>> fill = fill_of_loop(samples, loop, edges, not_to_add);
     if (fill.empty()) continue;

@@ -1,9 +1,11 @@
-// The triangulation of a border loop that folds least: of all triangulations of the loop, the
-// one whose sharpest fold (between two adjacent triangles of it, or one of it and the surface's
-// triangle on a loop edge) is the least sharp, and among those the smallest in area. Liepa
-// ("Filling holes in meshes", SGP 2003) weighs a hole's fills the same way, by dynamic
-// programming over the loop's sub-chains; here the programme is exact, at O(k^4) for a loop of
-// k samples (k <= 64: about 1.3M steps at most).
+// The triangulation of a border loop that folds least: of all triangulations of the loop, one
+// whose sharpest fold (between two adjacent triangles of it, or one of it and the surface's
+// triangle on a loop edge) is the least sharp, folds within 1e-9 of each other counting as the
+// same and going to the smaller area where a sub-chain chooses. Liepa ("Filling holes in
+// meshes", SGP 2003) weighs a hole's fills the same way, by dynamic programming over the loop's
+// sub-chains; here the programme keeps the triangle across each sub-chain's base as part of the
+// problem, so the sharpest fold found is the best of all triangulations, at O(k^4) for a loop
+// of k samples (k <= 64: about 1.3M steps and 10 MB at most).
 //
 // Greedy ear clipping decides each ear from the ears before it and cannot see the last one: on a
 // sheet with noise of 2% of its spacing it closed a 15-sample gap with a last triangle turned
@@ -23,9 +25,12 @@
 //                         is a loop edge: the worse of within(0, k-1, m) and its fold there
 //
 // A diagonal the surface already has as an edge would be used three times: no sub-chain stands
-// on it. A degenerate triangle has no normal: it is never used.
+// on it. A degenerate triangle has no normal: it is never used. A loop that passes a sample
+// twice, or beside a degenerate triangle of the surface (no normal to fold against), gets no
+// fill.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <sculpt/sculpt.hpp>
@@ -77,12 +82,20 @@ inline Loop_fill least_folded_fill(const std::vector<Point<3>>& samples,
   using extraction_detail::Vector;
   using fill_detail::Quality;
   const int k = static_cast<int>(loop.size());
-  if (k < 3) return {};
+  if (k < 3 || edge_normals.size() != loop.size()) return {};
+  std::vector<int> distinct = loop;
+  std::sort(distinct.begin(), distinct.end());
+  if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) return {};
   const auto unit = [](Vector v) {
     const double length = std::sqrt(dot(v, v));
     for (double& x : v) x /= length;
     return v;
   };
+  std::vector<Vector> unit_edge_normals;
+  for (const auto& n : edge_normals) {
+    if (!(dot(n, n) > 0)) return {};
+    unit_edge_normals.push_back(unit(n));
+  }
   const auto index = [k](int i, int m, int j) {
     return (static_cast<std::size_t>(i) * k + m) * k + j;
   };
@@ -90,10 +103,8 @@ inline Loop_fill least_folded_fill(const std::vector<Point<3>>& samples,
   // (which counts its area).
   std::vector<Vector> normal(static_cast<std::size_t>(k) * k * k);
   std::vector<Quality> within(normal.size());
-  std::vector<Vector> unit_edge_normals;
-  for (const auto& n : edge_normals) unit_edge_normals.push_back(unit(n));
   const auto may_stand_on = [&](int i, int j) {
-    return j == i + 1 || (i == 0 && j == k - 1) || !edges.count(edge_key(loop[i], loop[j]));
+    return (i == 0 && j == k - 1) || !edges.count(edge_key(loop[i], loop[j]));
   };
   // beside(i, j, n), and the top triangle that gives it (-1 for a loop edge or none).
   const auto beside = [&](int i, int j, const Vector& across, int* top = nullptr) {
