@@ -92,6 +92,7 @@ TEST_P(Bordered_surface, EveryBorderIsFoundWhereTheSamplesEnd) {
   EXPECT_EQ(s.non_manifold_vertices, 0u);
   EXPECT_EQ(s.unused_samples, 0u);
   EXPECT_EQ(s.components, 1u);
+  EXPECT_EQ(s.torn_loops, 0u);  // every loop is an opening
   EXPECT_TRUE(verdict(s).manifold) << verdict(s).line;
   for (int v : border_vertices(result.surface)) {
     EXPECT_TRUE(shape.at_border(samples[v]))
@@ -231,6 +232,22 @@ TEST(Bordered_surface, ANoisySheetIsABorderedManifoldThroughEverySample) {
     // Noise stands slivers on edge, and the extraction leaves small holes amid the sheet; every
     // one is a gap the least folded fill closes (greedy ear clipping left 1 or 2 of them).
     EXPECT_EQ(result.stats.boundary_loops, 1u);
+    EXPECT_EQ(result.stats.torn_loops, 0u);
+  }
+}
+
+// Noise tears small holes in a closed shape's bordered result where the mending finds every
+// fill folded back; they are told from openings (Statistics::torn_loops), and the automatic kind
+// keeps the shape closed.
+TEST(Bordered_surface, HolesNoiseTearsAreTornLoopsNotOpenings) {
+  // 10,000 samples, noise of 5% and 10% of the spacing: 2 and 10 loops torn.
+  for (double noise : {0.05, 0.1}) {
+    SCOPED_TRACE(noise);
+    const auto samples = shapes::noisy_sphere(10000, noise);
+    const auto bordered = reconstruct(samples, of_kind(Surface_kind::bordered));
+    EXPECT_GT(bordered.stats.boundary_loops, 0u);
+    EXPECT_EQ(bordered.stats.torn_loops, bordered.stats.boundary_loops);
+    EXPECT_EQ(reconstruct(samples).stats.kind, Surface_kind::closed);
   }
 }
 
@@ -374,14 +391,22 @@ TEST(Automatic_kind, OnlyTheRobustMethodChooses) {
   }
 }
 
-// The automatic kind's last word: a bordered result is kept when it has a border, the closed
-// result has the facets over openings to have capped its loops (2 each on a surface, 1 on a
-// curve), and it has fewer defects than the closed one with those facets counted.
+// The automatic kind's last word: a bordered result is kept when it has an opening (a border
+// loop not torn), the closed result has the facets over openings to have capped them (2 each on
+// a surface, 1 on a curve), and it has fewer defects than the closed one with those facets
+// counted.
 TEST(Automatic_kind, BorderLoopsAreOpeningsOnlyWhereTheClosedResultCappedThem) {
   Statistics closed, bordered;
-  bordered.boundary_loops = 5;
-  // A torus with noise of 5% of its spacing: 5 loops torn, 7 facets over openings.
+  // A torus with noise of 5% of its spacing: 7 facets over openings, 4 loops all torn.
+  bordered.boundary_loops = 4;
+  bordered.torn_loops = 4;
   EXPECT_FALSE(keeps_bordered<3>(closed, 7, bordered));
+  // One loop an opening: kept.
+  bordered.torn_loops = 3;
+  EXPECT_TRUE(keeps_bordered<3>(closed, 7, bordered));
+  bordered.torn_loops = 0;
+  bordered.boundary_loops = 5;
+  EXPECT_FALSE(keeps_bordered<3>(closed, 9, bordered));
   EXPECT_TRUE(keeps_bordered<3>(closed, 10, bordered));
   bordered.boundary_loops = 0;
   EXPECT_FALSE(keeps_bordered<3>(closed, 100, bordered));

@@ -7,9 +7,9 @@
 //   R_closed <- the closed reconstruction
 //   if no facet of R_closed spans an opening: keep R_closed
 //   R_bordered <- the bordered reconstruction
-//   keep R_bordered if it has a border, R_closed has at least 2 facets spanning an opening per
-//   border loop (1 on a curve), and defects(R_bordered) < defects(R_closed) + those facets;
-//   else R_closed
+//   keep R_bordered if it has an opening (a border loop not torn by noise), R_closed has at
+//   least 2 facets spanning an opening per opening (1 on a curve), and
+//   defects(R_bordered) < defects(R_closed) + those facets; else R_closed
 //
 // defects = non-manifold ridges + non-manifold vertices + samples left off. A facet spanning an
 // opening counts as a defect of the closed result: a surface made up across missing data. A
@@ -26,6 +26,7 @@
 // in advance): a closed result kept jumps from one half to the end.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <sculpt/sculpt.hpp>
 #include <vector>
@@ -36,11 +37,8 @@
 namespace sculpt {
 
 // The fewest facets over openings a closed result caps one opening with: a curve's gap is
-// bridged by one edge; a surface's opening takes a cap of triangles. An opening the test can
-// find is over ρ = 3 spacings in radius, with a rim of some 19 samples or more, and the cap over
-// it has many wide triangles; a loop torn by noise has one or none nearby (a torus with noise of
-// 5% of its spacing: 7 facets over openings, 5 border loops torn). The count is global: a real
-// opening capped by fewer facets than twice the loops noise tears elsewhere is lost.
+// bridged by one edge; a surface's opening takes a cap of triangles (an opening the test can find
+// is over ρ = 3 spacings in radius, with a rim of some 19 samples or more).
 template <int D>
 inline constexpr std::size_t facets_capping_an_opening = D == 2 ? 1 : 2;
 
@@ -49,14 +47,18 @@ inline std::size_t defects(const Statistics& stats) {
 }
 
 // Whether the bordered result is kept over the closed one, `spanning` facets of which span an
-// opening. A bordered result without a border found no opening: the closed one is the shape. Nor
-// is a border loop an opening unless the closed result capped one there: with fewer facets over
-// openings than it takes to cap the loops, the loops are holes the bordered rule made (noise
-// tears small ones).
+// opening. The bordered result's openings are its border loops but those torn in the sheet
+// (Statistics::torn_loops: noise tears small holes the mending cannot close). Without an
+// opening, the closed result is the shape (a torus with noise of 5% of its spacing: 4 loops,
+// all torn). Nor is a loop an opening unless the closed result capped one there: with fewer
+// facets over openings than it takes to cap the loops, they are holes the bordered rule made.
+// The count is global: a real opening capped by fewer facets than it takes to cap all the
+// bordered result's openings is lost.
 template <int D>
 bool keeps_bordered(const Statistics& closed, std::size_t spanning, const Statistics& bordered) {
-  return bordered.boundary_loops > 0 &&
-         bordered.boundary_loops * facets_capping_an_opening<D> <= spanning &&
+  const std::size_t openings =
+      bordered.boundary_loops - std::min(bordered.torn_loops, bordered.boundary_loops);
+  return openings > 0 && openings * facets_capping_an_opening<D> <= spanning &&
          defects(bordered) < defects(closed) + spanning;
 }
 

@@ -114,6 +114,7 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   // leave its loop folded too if filled around first).
   result.stats.dropped_fans = drop_pinched_fans(result.surface, samples.size());
   result.stats.filled_gaps += fill_gaps(samples, result.surface, covers_an_opening);
+  result.stats.torn_loops = count_torn_loops(samples, result.surface, covers_an_opening);
 }
 
 }  // namespace sculpt
