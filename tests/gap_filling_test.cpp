@@ -10,6 +10,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <unordered_set>
 
 #include "test_support.hpp"
 
@@ -75,9 +76,34 @@ TEST(Gap_filling, HolesSharingAVertexAreTwoLoops) {
     small.insert(sorted);
   }
   EXPECT_EQ(small, (std::set<std::vector<int>>{{1, 2, 4}, {0, 3, 4}}));
-  EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening), 2u);
+  // Left out when asked: the fans at a pinch may be dropped first.
+  EXPECT_EQ(simple_border_loops(surface, Pinches::left_out).size(), 1u);
+  EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening).filled, 2u);
   EXPECT_EQ(surface.size(), 12u);
   EXPECT_EQ(simple_border_loops(surface).size(), 1u);
+  // The fills face as the rest: every directed edge once.
+  std::map<std::pair<int, int>, int> directed;
+  for (const auto& t : surface) {
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(++directed[std::make_pair(t[j], t[(j + 1) % 3])], 1);
+  }
+}
+
+// A piece of the border (edges joined at shared vertices) counts as torn when every edge of it
+// is on a torn loop: a torn loop sharing a vertex with another loop that is not torn leaves its
+// piece an opening.
+TEST(Gap_filling, ABorderPieceIsTornWhenAllItsLoopsAre) {
+  using extraction_detail::edge_key;
+  // Two triangles meeting at vertex 4 only (a bow tie): one border piece of six edges.
+  const std::vector<Facet<3>> bowtie = {{4, 0, 1}, {4, 2, 3}};
+  const std::unordered_set<std::uint64_t> both = {edge_key(4, 0), edge_key(0, 1), edge_key(1, 4),
+                                                  edge_key(4, 2), edge_key(2, 3), edge_key(3, 4)};
+  EXPECT_EQ(count_torn_pieces(bowtie, both), 1u);
+  const std::unordered_set<std::uint64_t> one = {edge_key(4, 0), edge_key(0, 1), edge_key(1, 4)};
+  EXPECT_EQ(count_torn_pieces(bowtie, one), 0u);
+  // Two triangles apart: two pieces, one torn.
+  const std::vector<Facet<3>> apart = {{0, 1, 2}, {5, 6, 7}};
+  EXPECT_EQ(count_torn_pieces(apart, {edge_key(0, 1), edge_key(1, 2), edge_key(2, 0)}), 1u);
+  EXPECT_EQ(count_torn_pieces(apart, {}), 0u);
 }
 
 TEST(Gap_filling, TwoLoopsThroughOneVertexAreNotSimple) {
@@ -98,7 +124,7 @@ TEST(Gap_filling, AMissingTriangleOrTwoAreFilledFacingTheRest) {
     // One face, or two faces sharing the edge 2-4 (a loop of 4: 0, 4, 1, 2 in some order).
     faces.erase(faces.begin(), faces.begin() + missing);
     auto surface = faces;
-    EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening), 1u);
+    EXPECT_EQ(fill_gaps(points, surface, never_over_an_opening).filled, 1u);
     EXPECT_EQ(surface.size(), 8u);
     expect_closed_and_oriented(surface);
   }
@@ -109,7 +135,7 @@ TEST(Gap_filling, AFillOverAnOpeningOrOnAnEdgeAlreadyThereIsRefused) {
   auto faces = octahedron_faces();
   faces.erase(faces.begin());
   auto surface = faces;
-  EXPECT_EQ(fill_gaps(points, surface, [](const Facet<3>&) { return true; }), 0u);
+  EXPECT_EQ(fill_gaps(points, surface, [](const Facet<3>&) { return true; }).filled, 0u);
   EXPECT_EQ(surface, faces);
 
   // The loop 0 -> 4 -> 1 -> 2 left by removing (0, 2, 4) and (2, 1, 4). Its diagonals 0-1 and 2-4
@@ -123,11 +149,11 @@ TEST(Gap_filling, AFillOverAnOpeningOrOnAnEdgeAlreadyThereIsRefused) {
   std::vector<Facet<3>> holed(faces.begin() + 1, faces.end());
   for (const auto& t : tetrahedron(0, 1, 6, 7)) holed.push_back(t);
   auto one_taken = holed;
-  EXPECT_EQ(fill_gaps(with_apexes, one_taken, never_over_an_opening), 1u);
+  EXPECT_EQ(fill_gaps(with_apexes, one_taken, never_over_an_opening).filled, 1u);
   expect_closed_and_oriented(one_taken);
   for (const auto& t : tetrahedron(2, 4, 8, 9)) holed.push_back(t);
   auto both_taken = holed;
-  EXPECT_EQ(fill_gaps(with_apexes, both_taken, never_over_an_opening), 0u);
+  EXPECT_EQ(fill_gaps(with_apexes, both_taken, never_over_an_opening).filled, 0u);
   EXPECT_EQ(both_taken, holed);
 }
 
@@ -272,7 +298,7 @@ TEST(Gap_filling, TheHoleIsFilledNotTheOuterBorder) {
   const Ring ring = ring_around_a_hole(12);
   EXPECT_EQ(simple_border_loops(ring.triangles).size(), 2u);
   auto surface = ring.triangles;
-  EXPECT_EQ(fill_gaps(ring.points, surface, never_over_an_opening), 1u);
+  EXPECT_EQ(fill_gaps(ring.points, surface, never_over_an_opening).filled, 1u);
   // 10 triangles fill the hole of 12, all facing up as the ring does; the outer border stays.
   ASSERT_EQ(surface.size(), ring.triangles.size() + 10);
   for (std::size_t t = ring.triangles.size(); t < surface.size(); ++t) {
@@ -286,15 +312,15 @@ TEST(Gap_filling, TheHoleIsFilledNotTheOuterBorder) {
   // The outer border of a sheet alone is never filled: each ear lies back over the sheet.
   std::vector<Point<3>> square = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 0.5, 0}};
   std::vector<Facet<3>> fan = {{4, 0, 1}, {4, 1, 2}, {4, 2, 3}, {4, 3, 0}};
-  EXPECT_EQ(fill_gaps(square, fan, never_over_an_opening), 0u);
+  EXPECT_EQ(fill_gaps(square, fan, never_over_an_opening).filled, 0u);
   EXPECT_EQ(fan.size(), 4u);
 }
 
 TEST(Gap_filling, LoopsLongerThanTheLimitAreLeft) {
   Ring ring = ring_around_a_hole(longest_gap_filled + 1);
-  EXPECT_EQ(fill_gaps(ring.points, ring.triangles, never_over_an_opening), 0u);
+  EXPECT_EQ(fill_gaps(ring.points, ring.triangles, never_over_an_opening).filled, 0u);
   ring = ring_around_a_hole(longest_gap_filled);
-  EXPECT_EQ(fill_gaps(ring.points, ring.triangles, never_over_an_opening), 1u);
+  EXPECT_EQ(fill_gaps(ring.points, ring.triangles, never_over_an_opening).filled, 1u);
 }
 
 }  // namespace

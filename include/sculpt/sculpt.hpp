@@ -339,8 +339,8 @@ struct Statistics {
   std::size_t spanning_facets = 0;       // robust bordered (3D): removed as spanning an opening
   std::size_t filled_gaps = 0;           // robust bordered (3D): border loops filled as gaps
   std::size_t torn_loops = 0;            // robust bordered (3D): border loops torn in the sheet
-                                         // (by noise), not openings: no fill of theirs covers
-                                         // an empty disc, but every one folds back
+                                         // (by noise), not openings: of at most 64 samples, their
+                                         // least folded fill covers no empty disc but folds back
   std::size_t set_in_samples = 0;        // robust bordered (3D): left-off samples set into a
                                          // triangle over them
   std::size_t attached_samples = 0;      // robust bordered (3D): left-off samples put back

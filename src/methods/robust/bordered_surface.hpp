@@ -16,7 +16,8 @@
 //                 the others attached to the border, its sharp notches closed
 //                 (left_off_samples.hpp), fans pinched at a vertex joined, small border loops
 //                 that are gaps, not openings, filled (gap_filling.hpp), then the smaller fans
-//                 still pinched dropped and the loops left, through pinches too, filled where they are gaps
+//                 still pinched dropped and the loops left, through pinches too, filled where
+//                 they are gaps
 #pragma once
 
 #include <sculpt/sculpt.hpp>
@@ -108,13 +109,14 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   result.stats.closed_notches = close_border_notches(samples, result.surface, too_wide);
   result.stats.joined_pinches = join_pinched_vertices(samples, result.surface, too_wide);
   result.stats.filled_gaps =
-      fill_gaps(samples, result.surface, covers_an_opening, Pinches::left_out);
+      fill_gaps(samples, result.surface, covers_an_opening, Pinches::left_out).filled;
   // Fans no triangle could join: the smaller ones go, and the loops that leaves may be gaps; so
   // may the loops between the fans that stay (a small fan folded back over the surface would
   // leave its loop folded too if filled around first).
   result.stats.dropped_fans = drop_pinched_fans(result.surface, samples.size());
-  result.stats.filled_gaps += fill_gaps(samples, result.surface, covers_an_opening);
-  result.stats.torn_loops = count_torn_loops(samples, result.surface, covers_an_opening);
+  const Gaps_filled last = fill_gaps(samples, result.surface, covers_an_opening);
+  result.stats.filled_gaps += last.filled;
+  result.stats.torn_loops = last.torn_loops;
 }
 
 }  // namespace sculpt

@@ -49,9 +49,10 @@ struct Border_loop {
 // two border edges arrive and two leave), each gap between the fans is bounded by an edge
 // arriving from one fan and one leaving the other, so a loop arriving from one fan leaves by the
 // other's edge (noise leaves small holes side by side sharing a vertex: a noisy sheet at 5% of
-// its spacing, a triangle hole and an 8-sample one sharing two). A loop through a vertex with
-// three fans or more, or none leaving, or through one vertex twice, is left out; so are the loops
-// through pinched vertices unless asked for.
+// its spacing, a triangle hole and an 8-sample one sharing two). A loop through a vertex where
+// the border does not pair up so (more border edges, none leaving, both leaving edges in one fan:
+// a fan turned against the others or an edge on three triangles), or through one vertex twice,
+// is left out; so are the loops through pinched vertices unless asked for.
 enum class Pinches { left_out, passed };
 
 inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles,
@@ -98,10 +99,13 @@ inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>&
     if (edges.size() == 1 && arriving[v].size() == 1) return edges[0];
     const auto fans = fan_of.find(v);
     if (fans == fan_of.end()) return -1;
-    const auto fan = [&](int x) { return fans->second.at(x); };
+    const auto fan = [&](int x) {
+      const auto found = fans->second.find(x);
+      return found == fans->second.end() ? -1 : found->second;
+    };
     const int from = fan(border[e].from);
     const int first = fan(border[edges[0]].to), second = fan(border[edges[1]].to);
-    if (first == second) return -1;  // both leave one fan: more than two fans at v
+    if (first == second) return -1;  // both leave one fan: it is turned against the other
     if (from == first) return edges[1];
     if (from == second) return edges[0];
     return -1;
@@ -142,9 +146,11 @@ inline constexpr double sharpest_fill_fold_cos = -0.70710678118654752;  // cos 1
 
 // Why a loop gets the fill it gets.
 enum class Loop_fill_verdict {
-  gap,      // filled: a gap in the sampling
-  opening,  // a triangle of its fill covers a disc empty of samples
-  torn,     // no fill of it covers an empty disc, but each folds back (or none can be made)
+  gap,         // filled: a gap in the sampling
+  opening,     // a triangle of its least folded fill covers a disc empty of samples
+  torn,        // its least folded fill covers no empty disc but folds back: a hole noise tore
+  unfillable,  // no fill: every triangulation needs an edge the surface has, or a triangle
+               // beside the loop is degenerate
 };
 
 // The least folded triangulation of the loop (least_folded_fill.hpp), and whether it may go in:
@@ -161,52 +167,71 @@ inline std::pair<Loop_fill_verdict, std::vector<Facet<3>>> fill_of_loop(
                                                    border.apexes[i]));
   }
   Loop_fill fill = least_folded_fill(samples, loop, normals, edges);
+  if (fill.triangles.empty()) return {Loop_fill_verdict::unfillable, {}};
   for (const auto& triangle : fill.triangles) {
     if (not_to_add(triangle)) return {Loop_fill_verdict::opening, {}};
   }
-  if (fill.triangles.empty() || !(fill.sharpest_fold_cos > sharpest_fill_fold_cos)) {
-    return {Loop_fill_verdict::torn, {}};
-  }
+  if (!(fill.sharpest_fold_cos > sharpest_fill_fold_cos)) return {Loop_fill_verdict::torn, {}};
   return {Loop_fill_verdict::gap, std::move(fill.triangles)};
 }
 
-// Fills the small border loops of `surface` that are gaps; returns how many. With the loops
-// through pinched vertices left out, the fans there can still be dropped (drop_pinched_fans)
-// before their loops are filled.
-inline std::size_t fill_gaps(const std::vector<Point<3>>& samples, std::vector<Facet<3>>& surface,
+// How many pieces of the border of `surface` (its border edges joined at shared vertices, as
+// Statistics::boundary_loops counts them) have every edge on a loop in `torn` (edge_key).
+inline std::size_t count_torn_pieces(const std::vector<Facet<3>>& surface,
+                                     const std::unordered_set<std::uint64_t>& torn) {
+  if (torn.empty()) return 0;
+  const Edge_uses uses = edge_uses(surface);
+  std::unordered_map<int, std::size_t> index;  // border vertex -> union-find element
+  std::vector<std::pair<std::size_t, std::size_t>> border;
+  std::vector<bool> on_torn_loop;
+  for (const auto& [a, b, apex] : border_edges(surface, uses)) {
+    const std::size_t i = index.emplace(a, index.size()).first->second;
+    const std::size_t j = index.emplace(b, index.size()).first->second;
+    border.push_back({i, j});
+    on_torn_loop.push_back(torn.count(extraction_detail::edge_key(a, b)) > 0);
+  }
+  Union_find pieces(index.size());
+  for (const auto& [i, j] : border) pieces.unite(i, j);
+  std::vector<char> all_torn(index.size(), 1);
+  for (std::size_t e = 0; e < border.size(); ++e) {
+    if (!on_torn_loop[e]) all_torn[pieces.find(border[e].first)] = 0;
+  }
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < index.size(); ++v) count += pieces.find(v) == v && all_torn[v];
+  return count;
+}
+
+struct Gaps_filled {
+  std::size_t filled = 0;      // loops filled
+  std::size_t torn_loops = 0;  // border pieces left whose every loop is torn (count_torn_pieces)
+};
+
+// Fills the small border loops of `surface` that are gaps, and counts the border pieces left
+// that are holes noise tore. With the loops through pinched vertices left out, the fans there
+// can still be dropped (drop_pinched_fans) before their loops are filled.
+inline Gaps_filled fill_gaps(const std::vector<Point<3>>& samples, std::vector<Facet<3>>& surface,
                              const std::function<bool(const Facet<3>&)>& not_to_add,
                              Pinches pinches = Pinches::passed) {
   using extraction_detail::edge_key;
   Edge_uses edges = edge_uses(surface);
-  std::size_t filled = 0;
+  Gaps_filled result;
+  std::unordered_set<std::uint64_t> torn;
   for (const auto& loop : simple_border_loops(surface, edges, pinches)) {
     if (static_cast<int>(loop.vertices.size()) > longest_gap_filled) continue;
     const auto [verdict, fill] = fill_of_loop(samples, loop, edges, not_to_add);
+    if (verdict == Loop_fill_verdict::torn) {
+      const auto& v = loop.vertices;
+      for (std::size_t i = 0; i < v.size(); ++i) torn.insert(edge_key(v[i], v[(i + 1) % v.size()]));
+    }
     if (verdict != Loop_fill_verdict::gap) continue;
     for (const auto& t : fill) {
       surface.push_back(t);
       for (int j = 0; j < 3; ++j) ++edges[edge_key(t[j], t[(j + 1) % 3])];
     }
-    ++filled;
+    ++result.filled;
   }
-  return filled;
-}
-
-// How many border loops of `surface` are torn (Loop_fill_verdict::torn): small holes in the
-// sheet, not openings. Measured after the mending, in the --bordered results of
-// scripts/measure-noise and the bordered inputs: the loops noise tears (every loop left on a
-// noisy torus or sphere) are all torn; the openings of CGAL's holes.off and mech-holes-shark.off
-// and of the shared distcap scan are longer than longest_gap_filled or cover an empty disc.
-inline std::size_t count_torn_loops(const std::vector<Point<3>>& samples,
-                                    const std::vector<Facet<3>>& surface,
-                                    const std::function<bool(const Facet<3>&)>& not_to_add) {
-  const Edge_uses edges = edge_uses(surface);
-  std::size_t torn = 0;
-  for (const auto& loop : simple_border_loops(surface, edges)) {
-    if (static_cast<int>(loop.vertices.size()) > longest_gap_filled) continue;
-    torn += fill_of_loop(samples, loop, edges, not_to_add).first == Loop_fill_verdict::torn;
-  }
-  return torn;
+  result.torn_loops = count_torn_pieces(surface, torn);
+  return result;
 }
 
 }  // namespace sculpt
