@@ -90,7 +90,8 @@ std::string surface(Method method, Surface_kind kind, int dimension) {
                 "nearest sample) with no sample near its centre, and, next to them, 2 times; "
                 "the rest is pruned and walked as the co-cone's is, then mended: samples left off "
                 "set in or attached, fans pinched at a vertex joined (or the smaller "
-                "dropped), small loops that can be filled with no such triangle filled."
+                "dropped), small loops filled by their least folded triangulation unless it "
+                "covers an opening or folds back (a hole torn by noise)."
               : ".";
       break;
     default:
