@@ -33,7 +33,7 @@
 namespace sculpt {
 
 // Loops longer than this are left as they are: the least folded fill costs the fourth power of
-// the length (1.3M steps and 10 MB at 64), and a loop so long whose triangles all stay narrow is
+// the length (1.3M steps and 1.7 MB at 64), and a loop so long whose triangles all stay narrow is
 // a slit along the sheet, not a gap.
 inline constexpr int longest_gap_filled = 64;
 
