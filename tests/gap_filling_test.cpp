@@ -232,8 +232,7 @@ TEST(Gap_filling, TheFillIsTheLeastFoldedTriangulation) {
       std::vector<std::array<double, 3>> edge_normals;
       for (int i = 0; i < k; ++i) {
         const double angle = -2 * M_PI * i / k, radius = 1 + 0.3 * jitter(random);
-        at_position.push_back(
-            {radius * std::cos(angle), radius * std::sin(angle), jitter(random)});
+        at_position.push_back({radius * std::cos(angle), radius * std::sin(angle), jitter(random)});
         loop.push_back(10 + 3 * i);
         points[loop.back()] = at_position.back();
         edge_normals.push_back({jitter(random), jitter(random), 1.0});

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <map>
+#include <set>
 #include <utility>
 
 #include "test_support.hpp"
@@ -87,6 +88,38 @@ TEST(Samples_under_triangles, ASampleFarOffTheSheetOrBesideItStaysOff) {
 
   EXPECT_EQ(set_in_left_off_samples(points, triangles), 0u);
   EXPECT_EQ(triangles, before);
+}
+
+// Beyond a corner no triangle or edge lies under a sample: over the apex v of a pyramid (its four
+// faces facing out), s takes v's place in v's four triangles and v is set into the one it lies
+// nearest, which it now lies beneath.
+TEST(Samples_under_triangles, ASampleOverACornerTakesItsPlace) {
+  std::vector<Point<3>> points = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}};
+  const int v = 4, s = 5;
+  points.push_back({0.02, 0.01, 1.3});
+  std::vector<Facet<3>> triangles = {{0, 1, v}, {1, 2, v}, {2, 3, v}, {3, 0, v}};
+
+  EXPECT_EQ(set_in_left_off_samples(points, triangles), 1u);
+  EXPECT_EQ(triangles.size(), 6u);
+  EXPECT_TRUE(consistently_oriented(triangles));
+  // s has every corner of the base beside it; v is on the three parts of the triangle it was
+  // set into, two of them through s.
+  std::set<int> beside_s;
+  int through_v = 0, through_v_and_s = 0;
+  for (const auto& t : triangles) {
+    const bool has_s = t[0] == s || t[1] == s || t[2] == s;
+    const bool has_v = t[0] == v || t[1] == v || t[2] == v;
+    if (has_s) beside_s.insert(t.begin(), t.end());
+    through_v += has_v;
+    through_v_and_s += has_v && has_s;
+  }
+  EXPECT_EQ(beside_s, (std::set<int>{0, 1, 2, 3, v, s}));
+  EXPECT_EQ(through_v, 3);
+  EXPECT_EQ(through_v_and_s, 2);
+  // Too far over the corner (more than half the longest edge at v): left off.
+  points[s][2] = 3.0;
+  std::vector<Facet<3>> far = {{0, 1, v}, {1, 2, v}, {2, 3, v}, {3, 0, v}};
+  EXPECT_EQ(set_in_left_off_samples(points, far), 0u);
 }
 
 }  // namespace

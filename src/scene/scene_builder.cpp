@@ -671,16 +671,15 @@ class Scene_builder {
       if (count == 0) return nullptr;
       const std::size_t loops = r_.stats.boundary_loops;
       // Loops noise tore in the sheet, not openings (robust bordered rule).
-      const std::string torn = r_.stats.torn_loops == 0
-                                   ? ""
-                                   : " (" + std::to_string(r_.stats.torn_loops) + " torn)";
+      const std::string torn =
+          r_.stats.torn_loops == 0 ? "" : " (" + std::to_string(r_.stats.torn_loops) + " torn)";
       const std::string what =
-          D == 2 ? (border ? "curve ends (" + std::to_string(count) + ")"
-                           : "branching samples (" + std::to_string(count) + ")")
-                 : (border ? "border: " + std::to_string(loops) +
-                                 (loops == 1 ? " loop" : " loops") + torn + ", " +
-                                 std::to_string(count) + " edges"
-                           : "non-manifold edges (" + std::to_string(count) + ")");
+          D == 2
+              ? (border ? "curve ends (" + std::to_string(count) + ")"
+                        : "branching samples (" + std::to_string(count) + ")")
+              : (border ? "border: " + std::to_string(loops) + (loops == 1 ? " loop" : " loops") +
+                              torn + ", " + std::to_string(count) + " edges"
+                        : "non-manifold edges (" + std::to_string(count) + ")");
       return &add(border ? "border" : "non-manifold", what,
                   D == 2 ? Primitive::points : Primitive::lines,
                   border ? palette::border : palette::non_manifold, D == 2 ? 11.0f : 3.0f);
