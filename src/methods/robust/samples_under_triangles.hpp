@@ -19,11 +19,12 @@
 //     off, 0.0027 from a vertex whose edges are 0.003-0.007 long).
 //
 // The new triangles cover what the old ones covered (over a corner, the corner moves out to s),
-// so the surface keeps its borders and stays a manifold; it now interpolates s. The corner case,
-// measured with scripts/measure-noise: fewer loops, samples left off and non-manifold vertices
-// at every noise from 5% (a wavy sheet at 10%: 14 -> 9 loops, 3 -> 1 non-manifold vertices). Measured on 20,000 samples of a wavy sheet with noise of 2%
-// of the spacing: 9 samples left off before, none after; ChineseDragon --bordered 1 -> 0 and the
-// shared distcap scan 2 -> 0 samples left off, with fewer border loops (53 -> 52, 23 -> 21).
+// so the surface keeps its borders and stays a manifold; it now interpolates s. Measured on
+// 20,000 samples of a wavy sheet with noise of 2% of the spacing: 9 samples left off before,
+// none after; ChineseDragon --bordered 1 -> 0 and the shared distcap scan 2 -> 0 samples left
+// off, with fewer border loops (53 -> 52, 23 -> 21). The corner case, with scripts/measure-noise:
+// fewer loops, samples left off and non-manifold vertices at every noise from 5% (a wavy sheet
+// at 10%: 14 -> 9 loops, 3 -> 1 non-manifold vertices).
 #pragma once
 
 #include <algorithm>
