@@ -84,6 +84,7 @@ TEST(Samples_under_triangles, ASampleFarOffTheSheetOrBesideItStaysOff) {
   std::vector<Facet<3>> triangles = grid_triangles(points);
   points.push_back({1.7, 1.3, -1.0});  // deeper than half the triangle's longest edge
   points.push_back({3.5, 1.5, 0.0});   // beside the sheet, over no triangle
+  points.push_back({3.3, 3.2, 0.3});   // beyond the corner (3, 3), a border vertex, and over it
   const auto before = triangles;
 
   EXPECT_EQ(set_in_left_off_samples(points, triangles), 0u);
@@ -98,10 +99,12 @@ TEST(Samples_under_triangles, ASampleOverACornerTakesItsPlace) {
   const int v = 4, s = 5;
   points.push_back({0.02, 0.01, 1.3});
   std::vector<Facet<3>> triangles = {{0, 1, v}, {1, 2, v}, {2, 3, v}, {3, 0, v}};
+  const auto border = testing::border_edges(triangles);
 
   EXPECT_EQ(set_in_left_off_samples(points, triangles), 1u);
   EXPECT_EQ(triangles.size(), 6u);
   EXPECT_TRUE(consistently_oriented(triangles));
+  EXPECT_EQ(testing::border_edges(triangles), border) << "the border is kept";
   // s has every corner of the base beside it; v is on the three parts of the triangle it was
   // set into, two of them through s.
   std::set<int> beside_s;

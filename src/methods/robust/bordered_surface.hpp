@@ -12,7 +12,8 @@
 //                 middle is empty, and, grown from them across edges, those wider than 2 times
 //   surface    <- manifold extraction of candidates - spanning (prune sharp edges, walk the
 //                 outer boundary: methods/extraction/manifold_extraction.hpp)
-//   mending    <- samples left off beneath a triangle set into it (samples_under_triangles.hpp),
+//   mending    <- samples left off beneath a triangle set into it, or into an edge, or over a
+//                 corner given the corner's place (samples_under_triangles.hpp),
 //                 the others attached to the border, its sharp notches closed
 //                 (left_off_samples.hpp), fans pinched at a vertex joined, small border loops
 //                 that are gaps, not openings, filled (gap_filling.hpp), then the smaller fans

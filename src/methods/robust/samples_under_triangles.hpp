@@ -12,25 +12,27 @@
 //       from it than half its length (s under a fold projects into neither triangle): they are
 //       replaced by (a, s, c), (s, b, c), (b, s, d), (s, a, d);
 //     the nearest of these, when no new triangle faces against the one it replaces;
-//   failing both, a surface vertex v no farther from s than half the longest edge of its
-//     triangles and within 60° of the line of its normal, where s lies over v itself (beyond a
-//     corner, no triangle or edge has s over it): s takes v's place in v's triangles, and v is set
-//     into the new triangle it lies nearest, as above (CGAL's mech-holes-shark: its one sample left
-//     off, 0.0027 from a vertex whose edges are 0.003-0.007 long).
+//   failing both, the nearest inner surface vertex v no farther from s than half the longest
+//     edge of its triangles and within 60° of the line of its normal (on either side), where s
+//     lies over v itself (beyond a corner, no triangle or edge has s over it): s takes v's place
+//     in v's triangles, and v is set into the new triangle it lies nearest, as above (CGAL's
+//     mech-holes-shark: its one sample left off, 0.0027 from a vertex whose edges are
+//     0.003-0.007 long).
 //
 // The new triangles cover what the old ones covered (over a corner, the corner moves out to s),
 // so the surface keeps its borders and stays a manifold; it now interpolates s. Measured on
 // 20,000 samples of a wavy sheet with noise of 2% of the spacing: 9 samples left off before,
 // none after; ChineseDragon --bordered 1 -> 0 and the shared distcap scan 2 -> 0 samples left
-// off, with fewer border loops (53 -> 52, 23 -> 21). The corner case, with scripts/measure-noise:
-// fewer loops, samples left off and non-manifold vertices at every noise from 5% (a wavy sheet
-// at 10%: 14 -> 9 loops, 3 -> 1 non-manifold vertices).
+// off, with fewer border loops (53 -> 52, 23 -> 21). The corner case, with scripts/measure-noise
+// --bordered: at 5% of the spacing a torus and a cap 4 -> 3 loops; at 10-20%, loops and
+// non-manifold vertices within a few of before either way.
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <map>
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
@@ -44,7 +46,7 @@ inline constexpr int surface_vertices_asked = 8;
 // How far, against its longest edge, a sample may lie off a triangle's plane and be set into it.
 inline constexpr double farthest_set_in = 0.5;
 // How near the line of a vertex's normal a sample must lie to be over the vertex (cos 60°): the
-// shark's sample lies 44° off it; a sample beside a sheet's border, 90°.
+// shark's sample lies 44° off it; a sample beside the sheet, in its plane, 90°.
 inline constexpr double over_a_vertex_cos = 0.5;
 
 // Splits a triangle of `surface` over each sample on no triangle, where there is one; returns how
@@ -94,7 +96,8 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
     return true;
   };
 
-  // The vertex case: s over a vertex v of the triangles `asked`. Returns whether s was set in.
+  // The corner case: s over an inner vertex v of the triangles `asked`, the nearest such v that
+  // may give s its place. Returns whether s was set in.
   const auto take_the_place_of_a_vertex = [&](int s, const std::vector<int>& asked,
                                               const auto& replace, const auto& add) {
     const Point<3>& x = samples[s];
@@ -103,48 +106,64 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
     std::sort(vertices.begin(), vertices.end());
     vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
     int best_vertex = -1, best_triangle = -1;
-    double best_height = std::numeric_limits<double>::infinity();
+    double best_distance = std::numeric_limits<double>::infinity();
     for (int v : vertices) {
       const auto off = minus(x, samples[v]);
       const double distance = std::sqrt(dot(off, off));
-      bool keeps = !triangles_at[v].empty();
-      double longest2 = 0;  // the longest edge of v's triangles
-      Point<3> normal{};    // of v's triangles, weighted by their areas
+      if (distance >= best_distance || triangles_at[v].empty()) continue;
+      // v must be inside the surface (each of its edges on two of its triangles): beyond a
+      // border, s would move the border out.
+      std::map<int, int> around;  // neighbour -> triangles of v through it
+      double longest2 = 0;        // the longest edge of v's triangles
+      Point<3> normal{};          // of v's triangles, weighted by their areas
+      double areas = 0;
+      bool keeps = true;
       for (int t : triangles_at[v]) {
-        Facet<3> with = surface[t];
-        const auto& f = surface[t];
+        const Facet<3>& f = surface[t];
         const auto n =
             cross(minus(samples[f[1]], samples[f[0]]), minus(samples[f[2]], samples[f[0]]));
         for (int k = 0; k < 3; ++k) normal[k] += n[k];
+        areas += std::sqrt(dot(n, n));
         for (int j = 0; j < 3; ++j) {
-          const auto edge = minus(samples[with[j]], samples[with[(j + 1) % 3]]);
+          const auto edge = minus(samples[f[j]], samples[f[(j + 1) % 3]]);
           longest2 = std::max(longest2, dot(edge, edge));
+          if (f[j] != v) ++around[f[j]];
         }
+        Facet<3> with = f;
         for (int& u : with) u = u == v ? s : u;
-        keeps = keeps && keeps_facing(surface[t], {with});
+        keeps = keeps && keeps_facing(f, {with});
       }
-      // Over v, not beside it (off the border of a sheet): within 60° of the normal's line.
-      const double along = std::abs(dot(off, normal)) / std::sqrt(dot(normal, normal));
-      if (!keeps || distance > farthest_set_in * std::sqrt(longest2) ||
+      bool inner = true;
+      for (const auto& [u, triangles] : around) inner = inner && triangles == 2;
+      // Over v, not beside it: within 60° of the line of its normal, where the normal is one
+      // (fans turned against each other cancel out).
+      const double length = std::sqrt(dot(normal, normal));
+      const double along = std::abs(dot(off, normal)) / length;
+      if (!keeps || !inner || !(length >= 0.5 * areas) ||
+          distance > farthest_set_in * std::sqrt(longest2) ||
           !(along >= over_a_vertex_cos * distance))
         continue;
-      // v into the triangle (now through s) it lies nearest, split in three.
+      // v into the triangle (now through s) it lies nearest, split in three, each part facing
+      // as the triangle did before s took v's place.
+      double best_height = std::numeric_limits<double>::infinity();
       for (int t : triangles_at[v]) {
         Facet<3> g = surface[t];
         for (int& u : g) u = u == v ? s : u;
         const Point<3>& a = samples[g[0]];
-        const auto normal = cross(minus(samples[g[1]], a), minus(samples[g[2]], a));
-        const double area2 = dot(normal, normal);
+        const auto g_normal = cross(minus(samples[g[1]], a), minus(samples[g[2]], a));
+        const double area2 = dot(g_normal, g_normal);
         if (!(area2 > 0)) continue;
-        double longest2 = 0;
+        double g_longest2 = 0;
         for (int j = 0; j < 3; ++j) {
           const auto edge = minus(samples[g[j]], samples[g[(j + 1) % 3]]);
-          longest2 = std::max(longest2, dot(edge, edge));
+          g_longest2 = std::max(g_longest2, dot(edge, edge));
         }
-        const double height = std::abs(dot(minus(samples[v], a), normal)) / std::sqrt(area2);
-        if (height < best_height && height <= farthest_set_in * std::sqrt(longest2) &&
-            keeps_facing(g, {{g[0], g[1], v}, {g[1], g[2], v}, {g[2], g[0], v}})) {
-          best_vertex = v, best_triangle = t, best_height = height;
+        const double height = std::abs(dot(minus(samples[v], a), g_normal)) / std::sqrt(area2);
+        const std::initializer_list<Facet<3>> parts = {
+            {g[0], g[1], v}, {g[1], g[2], v}, {g[2], g[0], v}};
+        if (height < best_height && height <= farthest_set_in * std::sqrt(g_longest2) &&
+            keeps_facing(g, parts) && keeps_facing(surface[t], parts)) {
+          best_vertex = v, best_triangle = t, best_height = height, best_distance = distance;
         }
       }
     }
