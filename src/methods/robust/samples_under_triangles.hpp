@@ -77,6 +77,14 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
     }
     return on;
   };
+  const auto longest_edge = [&](const Facet<3>& f) {
+    double longest2 = 0;
+    for (int j = 0; j < 3; ++j) {
+      const auto edge = minus(samples[f[j]], samples[f[(j + 1) % 3]]);
+      longest2 = std::max(longest2, dot(edge, edge));
+    }
+    return std::sqrt(longest2);
+  };
   const auto unit_normal = [&](const Facet<3>& f) {
     auto normal = extraction_detail::normal_of(samples, f[0], f[1], f[2]);
     const double length = std::sqrt(dot(normal, normal));
@@ -114,7 +122,7 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
       // v must be inside the surface (each of its edges on two of its triangles): beyond a
       // border, s would move the border out.
       std::map<int, int> around;  // neighbour -> triangles of v through it
-      double longest2 = 0;        // the longest edge of v's triangles
+      double longest = 0;         // the longest edge of v's triangles
       Point<3> normal{};          // of v's triangles, weighted by their areas
       double areas = 0;
       bool keeps = true;
@@ -124,10 +132,9 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
             cross(minus(samples[f[1]], samples[f[0]]), minus(samples[f[2]], samples[f[0]]));
         for (int k = 0; k < 3; ++k) normal[k] += n[k];
         areas += std::sqrt(dot(n, n));
-        for (int j = 0; j < 3; ++j) {
-          const auto edge = minus(samples[f[j]], samples[f[(j + 1) % 3]]);
-          longest2 = std::max(longest2, dot(edge, edge));
-          if (f[j] != v) ++around[f[j]];
+        longest = std::max(longest, longest_edge(f));
+        for (int u : f) {
+          if (u != v) ++around[u];
         }
         Facet<3> with = f;
         for (int& u : with) u = u == v ? s : u;
@@ -139,8 +146,7 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
       // (fans turned against each other cancel out).
       const double length = std::sqrt(dot(normal, normal));
       const double along = std::abs(dot(off, normal)) / length;
-      if (!keeps || !inner || !(length >= 0.5 * areas) ||
-          distance > farthest_set_in * std::sqrt(longest2) ||
+      if (!keeps || !inner || !(length >= 0.5 * areas) || distance > farthest_set_in * longest ||
           !(along >= over_a_vertex_cos * distance))
         continue;
       // v into the triangle (now through s) it lies nearest, split in three, each part facing
@@ -153,15 +159,10 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
         const auto g_normal = cross(minus(samples[g[1]], a), minus(samples[g[2]], a));
         const double area2 = dot(g_normal, g_normal);
         if (!(area2 > 0)) continue;
-        double g_longest2 = 0;
-        for (int j = 0; j < 3; ++j) {
-          const auto edge = minus(samples[g[j]], samples[g[(j + 1) % 3]]);
-          g_longest2 = std::max(g_longest2, dot(edge, edge));
-        }
         const double height = std::abs(dot(minus(samples[v], a), g_normal)) / std::sqrt(area2);
         const std::initializer_list<Facet<3>> parts = {
             {g[0], g[1], v}, {g[1], g[2], v}, {g[2], g[0], v}};
-        if (height < best_height && height <= farthest_set_in * std::sqrt(g_longest2) &&
+        if (height < best_height && height <= farthest_set_in * longest_edge(g) &&
             keeps_facing(g, parts) && keeps_facing(surface[t], parts)) {
           best_vertex = v, best_triangle = t, best_height = height, best_distance = distance;
         }
@@ -202,12 +203,7 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
       const auto normal = cross(minus(b, a), minus(c, a));
       const double area2 = dot(normal, normal);
       if (!(area2 > 0)) continue;
-      double longest2 = 0;
-      for (int j = 0; j < 3; ++j) {
-        const auto edge = minus(samples[f[j]], samples[f[(j + 1) % 3]]);
-        longest2 = std::max(longest2, dot(edge, edge));
-      }
-      const double reach = farthest_set_in * std::sqrt(longest2);
+      const double reach = farthest_set_in * longest_edge(f);
       const double height = std::abs(dot(minus(x, a), normal)) / std::sqrt(area2);
       if (height < best_distance && height <= reach &&
           keeps_facing(f, {{f[0], f[1], s}, {f[1], f[2], s}, {f[2], f[0], s}})) {
