@@ -397,7 +397,7 @@ TEST(Automatic_kind, OnlyTheRobustMethodChooses) {
 // counted.
 TEST(Automatic_kind, BorderLoopsAreOpeningsOnlyWhereTheClosedResultCappedThem) {
   Statistics closed, bordered;
-  // A torus with noise of 5% of its spacing: 7 facets over openings, 4 loops all torn.
+  // As a torus with noise of 5% of its spacing: 7 facets over openings, every loop torn.
   bordered.boundary_loops = 4;
   bordered.torn_loops = 4;
   EXPECT_FALSE(keeps_bordered<3>(closed, 7, bordered));

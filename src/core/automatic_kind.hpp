@@ -49,7 +49,7 @@ inline std::size_t defects(const Statistics& stats) {
 // Whether the bordered result is kept over the closed one, `spanning` facets of which span an
 // opening. The bordered result's openings are its border loops but those torn in the sheet
 // (Statistics::torn_loops: noise tears small holes the mending cannot close). Without an
-// opening, the closed result is the shape (a torus with noise of 5% of its spacing: 4 loops,
+// opening, the closed result is the shape (a torus with noise of 5% of its spacing: 3 loops,
 // all torn). Nor is a loop an opening unless the closed result capped one there: with fewer
 // facets over openings than it takes to cap the loops, they are holes the bordered rule made.
 // The count is global: a real opening capped by fewer facets than it takes to cap all the
