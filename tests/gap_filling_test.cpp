@@ -97,13 +97,15 @@ TEST(Gap_filling, ABorderPieceIsTornWhenAllItsLoopsAre) {
   const std::vector<Facet<3>> bowtie = {{4, 0, 1}, {4, 2, 3}};
   const std::unordered_set<std::uint64_t> both = {edge_key(4, 0), edge_key(0, 1), edge_key(1, 4),
                                                   edge_key(4, 2), edge_key(2, 3), edge_key(3, 4)};
-  EXPECT_EQ(count_torn_pieces(bowtie, both), 1u);
+  EXPECT_EQ(count_torn_pieces(bowtie, edge_uses(bowtie), both), 1u);
   const std::unordered_set<std::uint64_t> one = {edge_key(4, 0), edge_key(0, 1), edge_key(1, 4)};
-  EXPECT_EQ(count_torn_pieces(bowtie, one), 0u);
+  EXPECT_EQ(count_torn_pieces(bowtie, edge_uses(bowtie), one), 0u);
   // Two triangles apart: two pieces, one torn.
   const std::vector<Facet<3>> apart = {{0, 1, 2}, {5, 6, 7}};
-  EXPECT_EQ(count_torn_pieces(apart, {edge_key(0, 1), edge_key(1, 2), edge_key(2, 0)}), 1u);
-  EXPECT_EQ(count_torn_pieces(apart, {}), 0u);
+  EXPECT_EQ(
+      count_torn_pieces(apart, edge_uses(apart), {edge_key(0, 1), edge_key(1, 2), edge_key(2, 0)}),
+      1u);
+  EXPECT_EQ(count_torn_pieces(apart, edge_uses(apart), {}), 0u);
 }
 
 TEST(Gap_filling, TwoLoopsThroughOneVertexAreNotSimple) {

@@ -31,6 +31,24 @@ inline std::uint64_t directed_key(int a, int b) {
          static_cast<std::uint32_t>(b);
 }
 
+// Per directed edge a -> b of a triangle (directed_key), the triangle's third vertex. On an
+// oriented surface an edge's uses are those of its two directions.
+using Third_vertex = std::unordered_map<std::uint64_t, int>;
+
+// The end w of the border edge v -> w leaving the fan of triangles around v that the border edge
+// u -> v arrives in: around v from the triangle on u -> v, across one edge at v after another,
+// until the fan ends. -1 around a closed fan (after `most` steps). `third` needs the triangles at
+// v only.
+inline int fan_end(const Third_vertex& third, int u, int v, std::size_t most) {
+  int x = third.at(directed_key(u, v));
+  for (std::size_t steps = 0; steps < most; ++steps) {
+    const auto next = third.find(directed_key(x, v));
+    if (next == third.end()) return x;
+    x = next->second;
+  }
+  return -1;
+}
+
 // Whether the triangle (w, v, u) that closes the border corner u -> v -> w faces as the
 // triangles it leans on: (u, v, u_apex) on u -> v and (v, w, w_apex) on v -> w (the notches of
 // left_off_samples.hpp, the joins of pinched_vertices.hpp).

@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <limits>
 #include <sculpt/sculpt.hpp>
+#include <type_traits>
 #include <vector>
 
 #include "../../core/circumball_query.hpp"
@@ -37,26 +38,14 @@ namespace sculpt {
 // How large, against a cell's circumradius, an outer pole's ball must be to destroy the cell.
 inline constexpr double noise_pole_ratio = 0.3;
 
-template <int D>
-std::vector<Point<D>> outer_pole_centres(const Reconstruction<D>& result) {
-  std::vector<Point<D>> centres;
+// Something of each outer pole (its centre, its radius), in the order of the poles.
+template <int D, class Of>
+auto of_outer_poles(const Reconstruction<D>& result, Of&& of) {
+  std::vector<std::decay_t<decltype(of(result.poles.poles[0]))>> values;
   for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
-    if (result.propagation.labels[p] == Label::outer) {
-      centres.push_back(result.poles.poles[p].center);
-    }
+    if (result.propagation.labels[p] == Label::outer) values.push_back(of(result.poles.poles[p]));
   }
-  return centres;
-}
-
-template <int D>
-std::vector<double> outer_pole_radii(const Reconstruction<D>& result) {
-  std::vector<double> radii;
-  for (std::size_t p = 0; p < result.poles.poles.size(); ++p) {
-    if (result.propagation.labels[p] == Label::outer) {
-      radii.push_back(result.poles.poles[p].radius);
-    }
-  }
-  return radii;
+  return values;
 }
 
 // The two polar balls of every sample, packed together (one cache line in 3D): the power carve
@@ -122,10 +111,12 @@ class Cell_judge {
  public:
   Cell_judge(const Triangulation& triangulation, const Reconstruction<D>& result)
       : triangulation_(triangulation),
-        outer_radii_(outer_pole_radii(result)),
+        outer_radii_(of_outer_poles(result, [](const Pole<D>& pole) { return pole.radius; })),
         // Strictly inside, decided exactly: the poles on the sphere (those of neighbouring cells
         // can be) do not destroy it. The query keeps its own copy of the centres.
-        outer_poles_(triangulation, outer_pole_centres(result), false),
+        outer_poles_(triangulation,
+                     of_outer_poles(result, [](const Pole<D>& pole) { return pole.center; }),
+                     false),
         polar_balls_(result),
         sample_count_(static_cast<int>(result.sample_count())),
         verdicts_(result.delaunay.cell_count, unjudged) {}

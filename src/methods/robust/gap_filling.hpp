@@ -49,10 +49,11 @@ struct Border_loop {
 // two border edges arrive and two leave), each gap between the fans is bounded by an edge
 // arriving from one fan and one leaving the other, so a loop arriving from one fan leaves by the
 // other's edge (noise leaves small holes side by side sharing a vertex: a noisy sheet at 5% of
-// its spacing, a triangle hole and an 8-sample one sharing two). A loop through a vertex where
-// the border does not pair up so (more border edges, none leaving, both leaving edges in one fan:
-// a fan turned against the others or an edge on three triangles), or through one vertex twice,
-// is left out; so are the loops through pinched vertices unless asked for.
+// its spacing, a triangle hole and an 8-sample one sharing two); the fan's own leaving edge is
+// found walking around v (fan_end, as pinched_vertices.hpp joins fans). A loop through a vertex
+// where the border does not pair up so (more border edges, none leaving, a fan ending at neither
+// leaving edge: turned against the others, or an edge on three triangles), or through one
+// vertex twice, is left out; so are the loops through pinched vertices unless asked for.
 enum class Pinches { left_out, passed };
 
 inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>& triangles,
@@ -64,31 +65,18 @@ inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>&
     leaving[border[e].from].push_back(e);
     arriving[border[e].to].push_back(e);
   }
-  // The fans at the pinched vertices: triangles at v sharing an edge v-x are one fan. fan_of
-  // gives, for a pinched vertex and a vertex x beside it, the fan's representative.
-  std::unordered_map<int, std::unordered_map<int, int>> fan_of;
+  std::unordered_set<int> pinched;  // two border edges arrive and two leave
   for (const auto& [v, edges] : leaving) {
-    if (pinches == Pinches::passed && edges.size() == 2 && arriving[v].size() == 2) fan_of[v];
+    if (pinches == Pinches::passed && edges.size() == 2 && arriving[v].size() == 2) {
+      pinched.insert(v);
+    }
   }
-  if (!fan_of.empty()) {
-    std::unordered_map<int, std::unordered_map<int, int>> number;  // v -> x -> index
-    const auto index_of = [&](int v, int x) {
-      auto& numbers = number[v];
-      return numbers.emplace(x, static_cast<int>(numbers.size())).first->second;
-    };
-    std::unordered_map<int, std::vector<std::pair<int, int>>> pairs;  // v -> (x, y) per triangle
-    for (const auto& t : triangles) {
-      for (int j = 0; j < 3; ++j) {
-        if (!fan_of.count(t[j])) continue;
-        const int x = t[(j + 1) % 3], y = t[(j + 2) % 3];
-        pairs[t[j]].push_back({index_of(t[j], x), index_of(t[j], y)});
-      }
-    }
-    for (auto& [v, sides] : pairs) {
-      Union_find around(number[v].size());
-      for (const auto& [x, y] : sides) around.unite(x, y);
-      for (const auto& [x, index] : number[v]) fan_of[v][x] = static_cast<int>(around.find(index));
-    }
+  // The triangles at the pinched vertices, for walking around their fans.
+  Third_vertex third;
+  for (const auto& t : triangles) {
+    if (pinched.empty()) break;
+    if (!pinched.count(t[0]) && !pinched.count(t[1]) && !pinched.count(t[2])) continue;
+    for (int j = 0; j < 3; ++j) third[directed_key(t[j], t[(j + 1) % 3])] = t[(j + 2) % 3];
   }
   // The border edge after e in its loop, or -1.
   const auto after = [&](int e) {
@@ -97,17 +85,11 @@ inline std::vector<Border_loop> simple_border_loops(const std::vector<Facet<3>>&
     if (out == leaving.end()) return -1;
     const std::vector<int>& edges = out->second;
     if (edges.size() == 1 && arriving[v].size() == 1) return edges[0];
-    const auto fans = fan_of.find(v);
-    if (fans == fan_of.end()) return -1;
-    const auto fan = [&](int x) {
-      const auto found = fans->second.find(x);
-      return found == fans->second.end() ? -1 : found->second;
-    };
-    const int from = fan(border[e].from);
-    const int first = fan(border[edges[0]].to), second = fan(border[edges[1]].to);
-    if (first == second) return -1;  // both leave one fan: it is turned against the other
-    if (from == first) return edges[1];
-    if (from == second) return edges[0];
+    if (!pinched.count(v)) return -1;
+    // Not the edge leaving e's own fan: the other.
+    const int own = fan_end(third, border[e].from, v, triangles.size());
+    if (own == border[edges[0]].to) return edges[1];
+    if (own == border[edges[1]].to) return edges[0];
     return -1;
   };
   std::vector<Border_loop> loops;
@@ -177,10 +159,10 @@ inline std::pair<Loop_fill_verdict, std::vector<Facet<3>>> fill_of_loop(
 
 // How many pieces of the border of `surface` (its border edges joined at shared vertices, as
 // Statistics::boundary_loops counts them) have every edge on a loop in `torn` (edge_key).
-inline std::size_t count_torn_pieces(const std::vector<Facet<3>>& surface,
+// `uses`: the surface's edge_uses.
+inline std::size_t count_torn_pieces(const std::vector<Facet<3>>& surface, const Edge_uses& uses,
                                      const std::unordered_set<std::uint64_t>& torn) {
   if (torn.empty()) return 0;
-  const Edge_uses uses = edge_uses(surface);
   std::unordered_map<int, std::size_t> index;  // border vertex -> union-find element
   std::vector<std::pair<std::size_t, std::size_t>> border;
   std::vector<bool> on_torn_loop;
@@ -230,7 +212,7 @@ inline Gaps_filled fill_gaps(const std::vector<Point<3>>& samples, std::vector<F
     }
     ++result.filled;
   }
-  result.torn_loops = count_torn_pieces(surface, torn);
+  result.torn_loops = count_torn_pieces(surface, edges, torn);
   return result;
 }
 

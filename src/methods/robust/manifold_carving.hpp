@@ -107,7 +107,7 @@ class Manifold_carving {
   // Stage 8: the facets between the solid and the outside, facing the outside (the flood
   // collected them already when it stood).
   void collect_surface() const {
-    if (skin_collected_) return;
+    if (result_.stats.carved_by_flood) return;
     sculpt::collect_skin<Traits>(
         triangulation_, [&](Cell_handle cell) { return !is_outside(cell); }, result_);
   }
@@ -319,7 +319,6 @@ class Manifold_carving {
     removed_ = 0;
     result_.carving.events.clear();
     result_.surface.clear();
-    skin_collected_ = false;
     std::fill(solid_cells_at_.begin(), solid_cells_at_.end(), 0);
     std::fill(outside_cells_at_.begin(), outside_cells_at_.end(), 0);
     start_from_hull();
@@ -344,7 +343,6 @@ class Manifold_carving {
     result_.surface.clear();
     sculpt::collect_skin<Traits>(
         triangulation_, [&](Cell_handle cell) { return !is_outside(cell); }, result_);
-    skin_collected_ = true;
     const Skin_check skin = check_closed_skin<D>(sample_count_, result_.surface);
     // A piece of k samples, all on its skin, has at least k - D cells: one of more than
     // small_piece + D samples is no piece a group removal refuses to cut off.
@@ -690,7 +688,6 @@ class Manifold_carving {
   std::vector<std::uint8_t> outside_;
   std::vector<std::uint8_t> queued_;   // per cell: an entry of it is in the queue
   std::size_t removed_ = 0;            // cells removed (the events, when they are kept)
-  bool skin_collected_ = false;        // by a flood that stood: stage 8 is done
   double reported_ = 0;                // the carving's progress so far
   std::vector<int> solid_cells_at_;    // per sample: incident cells still in the solid
   std::vector<int> outside_cells_at_;  // per sample: incident cells outside

@@ -49,24 +49,13 @@ inline std::size_t join_pinched_vertices(const std::vector<Point<3>>& samples,
   // Per directed edge a -> b of a triangle, its third vertex: the surface is oriented, so an
   // edge's uses are those of its two directions. Kept up to date as triangles are added, as are
   // the border edges arriving at and leaving each vertex.
-  std::unordered_map<std::uint64_t, int> third;
+  Third_vertex third;
   third.reserve(3 * surface.size());
   for (const auto& t : surface) {
     for (int j = 0; j < 3; ++j) third[directed_key(t[j], t[(j + 1) % 3])] = t[(j + 2) % 3];
   }
   const auto uses = [&](int a, int b) {
     return int(third.count(directed_key(a, b))) + int(third.count(directed_key(b, a)));
-  };
-  // The end w of the border edge v -> w leaving the fan that u -> v arrives in: around v from
-  // the triangle on u -> v, across one edge at v after another, until the fan ends.
-  const auto fan_end = [&](int u, int v) {
-    int x = third.at(directed_key(u, v));
-    for (std::size_t steps = 0; steps < surface.size(); ++steps) {
-      const auto next = third.find(directed_key(x, v));
-      if (next == third.end()) return x;
-      x = next->second;
-    }
-    return -1;  // around a closed fan: no end
   };
   std::unordered_map<int, std::vector<Side>> arriving, leaving;
   for (const auto& t : surface) {
@@ -126,7 +115,8 @@ inline std::size_t join_pinched_vertices(const std::vector<Point<3>>& samples,
           // u-w may be an edge already only as a border edge w -> u: the triangle closes a loop.
           const int u_w_uses = uses(u, w);
           if (u_w_uses > 1 || (u_w_uses == 1 && !third.count(directed_key(w, u)))) continue;
-          if (fan_end(u, v) == w) continue;  // that would close u's own fan, not join two
+          // That would close u's own fan, not join two.
+          if (fan_end(third, u, v, surface.size()) == w) continue;
           // Across a gap next to both: no other fan's border edge at v lies between them.
           bool gap = true;
           for (const auto* sides : {&arriving[v], &leaving[v]}) {

@@ -29,6 +29,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <initializer_list>
 #include <limits>
@@ -53,7 +54,6 @@ inline constexpr double over_a_vertex_cos = 0.5;
 // many samples were set in.
 inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
                                            std::vector<Facet<3>>& surface) {
-  using extraction_detail::cross;
   using extraction_detail::dot;
   using extraction_detail::minus;
   const int n = static_cast<int>(samples.size());
@@ -103,11 +103,44 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
     }
     return true;
   };
+  // How far x lies off the plane of f; infinite for a degenerate f.
+  const auto height_over = [&](const Point<3>& x, const Facet<3>& f) {
+    const auto normal = extraction_detail::normal_of(samples, f[0], f[1], f[2]);
+    const double area2 = dot(normal, normal);
+    if (!(area2 > 0)) return std::numeric_limits<double>::infinity();
+    return std::abs(dot(minus(x, samples[f[0]]), normal)) / std::sqrt(area2);
+  };
+  // f with s in place of v.
+  const auto in_place_of = [](Facet<3> f, int v, int s) {
+    for (int& u : f) u = u == v ? s : u;
+    return f;
+  };
+  const auto replace = [&](int t, const Facet<3>& with) {
+    for (int v : surface[t]) {
+      auto& at = triangles_at[v];
+      at.erase(std::find(at.begin(), at.end(), t));
+    }
+    surface[t] = with;
+    for (int v : with) triangles_at[v].push_back(t);
+  };
+  const auto add = [&](const Facet<3>& f) {
+    surface.push_back(f);
+    for (int v : f) triangles_at[v].push_back(static_cast<int>(surface.size()) - 1);
+  };
+  // The parts of triangle f split in three at x.
+  const auto parts_at = [](const Facet<3>& f, int x) {
+    return std::array<Facet<3>, 3>{{{f[0], f[1], x}, {f[1], f[2], x}, {f[2], f[0], x}}};
+  };
+  const auto split_in_three = [&](int t, int x) {
+    const auto parts = parts_at(surface[t], x);
+    replace(t, parts[0]);
+    add(parts[1]);
+    add(parts[2]);
+  };
 
   // The corner case: s over an inner vertex v of the triangles `asked`, the nearest such v that
   // may give s its place. Returns whether s was set in.
-  const auto take_the_place_of_a_vertex = [&](int s, const std::vector<int>& asked,
-                                              const auto& replace, const auto& add) {
+  const auto take_the_place_of_a_vertex = [&](int s, const std::vector<int>& asked) {
     const Point<3>& x = samples[s];
     std::vector<int> vertices;
     for (int t : asked) vertices.insert(vertices.end(), surface[t].begin(), surface[t].end());
@@ -128,17 +161,14 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
       bool keeps = true;
       for (int t : triangles_at[v]) {
         const Facet<3>& f = surface[t];
-        const auto n =
-            cross(minus(samples[f[1]], samples[f[0]]), minus(samples[f[2]], samples[f[0]]));
+        const auto n = extraction_detail::normal_of(samples, f[0], f[1], f[2]);
         for (int k = 0; k < 3; ++k) normal[k] += n[k];
         areas += std::sqrt(dot(n, n));
         longest = std::max(longest, longest_edge(f));
         for (int u : f) {
           if (u != v) ++around[u];
         }
-        Facet<3> with = f;
-        for (int& u : with) u = u == v ? s : u;
-        keeps = keeps && keeps_facing(f, {with});
+        keeps = keeps && keeps_facing(f, {in_place_of(f, v, s)});
       }
       bool inner = true;
       for (const auto& [u, triangles] : around) inner = inner && triangles == 2;
@@ -153,17 +183,11 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
       // as the triangle did before s took v's place.
       double best_height = std::numeric_limits<double>::infinity();
       for (int t : triangles_at[v]) {
-        Facet<3> g = surface[t];
-        for (int& u : g) u = u == v ? s : u;
-        const Point<3>& a = samples[g[0]];
-        const auto g_normal = cross(minus(samples[g[1]], a), minus(samples[g[2]], a));
-        const double area2 = dot(g_normal, g_normal);
-        if (!(area2 > 0)) continue;
-        const double height = std::abs(dot(minus(samples[v], a), g_normal)) / std::sqrt(area2);
-        const std::initializer_list<Facet<3>> parts = {
-            {g[0], g[1], v}, {g[1], g[2], v}, {g[2], g[0], v}};
+        const Facet<3> g = in_place_of(surface[t], v, s);
+        const double height = height_over(samples[v], g);
+        const auto [p0, p1, p2] = parts_at(g, v);
         if (height < best_height && height <= farthest_set_in * longest_edge(g) &&
-            keeps_facing(g, parts) && keeps_facing(surface[t], parts)) {
+            keeps_facing(g, {p0, p1, p2}) && keeps_facing(surface[t], {p0, p1, p2})) {
           best_vertex = v, best_triangle = t, best_height = height, best_distance = distance;
         }
       }
@@ -171,15 +195,8 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
     if (best_vertex < 0) return false;
     const int v = best_vertex;
     const std::vector<int> umbrella = triangles_at[v];
-    for (int t : umbrella) {
-      Facet<3> with = surface[t];
-      for (int& u : with) u = u == v ? s : u;
-      replace(t, with);
-    }
-    const Facet<3> g = surface[best_triangle];
-    replace(best_triangle, {g[0], g[1], v});
-    add({g[1], g[2], v});
-    add({g[2], g[0], v});
+    for (int t : umbrella) replace(t, in_place_of(surface[t], v, s));
+    split_in_three(best_triangle, v);
     return true;
   };
 
@@ -199,14 +216,11 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
     double best_distance = std::numeric_limits<double>::infinity();
     for (int t : asked) {
       const Facet<3> f = surface[t];
-      const Point<3>&a = samples[f[0]], &b = samples[f[1]], &c = samples[f[2]];
-      const auto normal = cross(minus(b, a), minus(c, a));
-      const double area2 = dot(normal, normal);
-      if (!(area2 > 0)) continue;
-      const double reach = farthest_set_in * longest_edge(f);
-      const double height = std::abs(dot(minus(x, a), normal)) / std::sqrt(area2);
-      if (height < best_distance && height <= reach &&
-          keeps_facing(f, {{f[0], f[1], s}, {f[1], f[2], s}, {f[2], f[0], s}})) {
+      const double height = height_over(x, f);
+      if (std::isinf(height)) continue;  // degenerate: neither it nor its edges
+      const auto [p0, p1, p2] = parts_at(f, s);
+      if (height < best_distance && height <= farthest_set_in * longest_edge(f) &&
+          keeps_facing(f, {p0, p1, p2})) {
         best = t, best_edge = -1, best_distance = height;
       }
       // Into an edge: where two triangles fold over s, it projects into neither.
@@ -237,27 +251,13 @@ inline std::size_t set_in_left_off_samples(const std::vector<Point<3>>& samples,
         best = t, best_edge = j, best_other = other, best_distance = distance;
       }
     }
-    const auto replace = [&](int t, const Facet<3>& with) {
-      for (int v : surface[t]) {
-        auto& at = triangles_at[v];
-        at.erase(std::find(at.begin(), at.end(), t));
-      }
-      surface[t] = with;
-      for (int v : with) triangles_at[v].push_back(t);
-    };
-    const auto add = [&](const Facet<3>& f) {
-      surface.push_back(f);
-      for (int v : f) triangles_at[v].push_back(static_cast<int>(surface.size()) - 1);
-    };
     if (best < 0) {
-      set_in += take_the_place_of_a_vertex(s, asked, replace, add);
+      set_in += take_the_place_of_a_vertex(s, asked);
       continue;
     }
     const Facet<3> f = surface[best];
     if (best_edge < 0) {
-      replace(best, {f[0], f[1], s});
-      add({f[1], f[2], s});
-      add({f[2], f[0], s});
+      split_in_three(best, s);
     } else {
       const int p = f[best_edge], q = f[(best_edge + 1) % 3], r = f[(best_edge + 2) % 3];
       int apex = -1;
