@@ -1382,7 +1382,7 @@ void Viewer::draw_statistics() {
   if (s.dropped_fans > 0) ImGui::Text("pinched fans dropped %zu", s.dropped_fans);
   if (s.closed_notches > 0) ImGui::Text("sharp border notches closed %zu", s.closed_notches);
   if (s.filled_gaps > 0) ImGui::Text("gaps in the sampling filled %zu", s.filled_gaps);
-  if (s.torn_loops > 0) ImGui::Text("border loops torn, not openings %zu", s.torn_loops);
+  if (s.torn_loops > 0) ImGui::Text("torn loops (not openings) %zu", s.torn_loops);
   if (s.candidate_facets > 0) {
     ImGui::Text("cells %zu   candidates %zu, pruned %zu%s", s.delaunay_cells, s.candidate_facets,
                 s.pruned_facets, s.rims_kept ? " (rims kept)" : "");
