@@ -17,7 +17,12 @@ class Union_find {
     while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
     return x;
   }
-  void unite(std::size_t a, std::size_t b) { parent_[find(a)] = find(b); }
+  // Joins the sets of a and b; whether they were apart.
+  bool unite(std::size_t a, std::size_t b) {
+    const std::size_t root_a = find(a), root_b = find(b);
+    parent_[root_a] = root_b;
+    return root_a != root_b;
+  }
 
  private:
   std::vector<std::size_t> parent_;

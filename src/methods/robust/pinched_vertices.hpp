@@ -30,6 +30,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "../../core/union_find.hpp"
 #include "../extraction/vector3.hpp"
 #include "border_edges.hpp"
 
@@ -149,6 +150,39 @@ inline std::size_t join_pinched_vertices(const std::vector<Point<3>>& samples,
   return joined;
 }
 
+namespace pinch_detail {
+
+// A run of triangle indices in compressed rows.
+struct Span {
+  const int* first;
+  const int* last;
+};
+
+// Whether `triangles` (all at v) make one fan: each pair of them joined by a chain of triangles
+// sharing an edge at v, that is a vertex other than v. A quick test before the fans are built:
+// most vertices are not pinched. `around` is scratch space.
+inline bool one_fan(const std::vector<Facet<3>>& surface, int v, const std::vector<int>& triangles,
+                    std::vector<std::pair<int, int>>& around) {
+  // (vertex other than v, triangle's place in `triangles`), sorted: triangles sharing a vertex
+  // are adjacent in it. Their fans are merged by a union-find on places.
+  around.clear();
+  for (int i = 0; i < static_cast<int>(triangles.size()); ++i) {
+    for (int u : surface[triangles[i]]) {
+      if (u != v) around.push_back({u, i});
+    }
+  }
+  std::sort(around.begin(), around.end());
+  Union_find fans(triangles.size());
+  std::size_t joins = 0;
+  for (std::size_t j = 1; j < around.size(); ++j) {
+    if (around[j].first == around[j - 1].first)
+      joins += fans.unite(around[j].second, around[j - 1].second);
+  }
+  return joins + 1 == triangles.size();
+}
+
+}  // namespace pinch_detail
+
 // Where fans stay pinched (folded against each other, or their gap's third edge inside the
 // surface already), the fan on the largest piece of the surface is kept and the others go, each
 // when every sample on it stays on some other triangle and no small piece of the surface is cut
@@ -156,25 +190,52 @@ inline std::size_t join_pinched_vertices(const std::vector<Point<3>>& samples,
 // reaches far enough).
 inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t sample_count) {
   using extraction_detail::edge_key;
+  using pinch_detail::one_fan;
+  using pinch_detail::Span;
   constexpr std::size_t small_piece = 64;  // triangles: fewer cut off is a piece of its own
   std::size_t dropped = 0;
   for (bool progress = true; progress;) {
     progress = false;
-    std::vector<std::vector<int>> at(sample_count);
-    // The triangles on each edge: (edge key, triangle) sorted by key.
+    // The triangles at each sample, in compressed rows (in the order of the triangles).
+    std::vector<int> at_offsets(sample_count + 1, 0), at_triangles(3 * surface.size());
+    for (const auto& t : surface) {
+      for (int u : t) ++at_offsets[u + 1];
+    }
+    for (std::size_t u = 0; u < sample_count; ++u) at_offsets[u + 1] += at_offsets[u];
+    {
+      std::vector<int> fill(at_offsets.begin(), at_offsets.end() - 1);
+      for (int t = 0; t < static_cast<int>(surface.size()); ++t) {
+        for (int u : surface[t]) at_triangles[fill[u]++] = t;
+      }
+    }
+    const auto at = [&](int sample) {
+      return Span{at_triangles.data() + at_offsets[sample],
+                  at_triangles.data() + at_offsets[sample + 1]};
+    };
+    // The triangles on each edge: (edge key, triangle) sorted by key; and for the edge j of
+    // triangle t (slot 3 t + j), where the triangles on it start in that order.
+    const auto key_of = [&](int t, int j) {
+      return edge_key(surface[t][j], surface[t][(j + 1) % 3]);
+    };
     std::vector<std::pair<std::uint64_t, int>> on_edge;
     on_edge.reserve(3 * surface.size());
     for (int t = 0; t < static_cast<int>(surface.size()); ++t) {
-      for (int j = 0; j < 3; ++j) {
-        at[surface[t][j]].push_back(t);
-        on_edge.push_back({edge_key(surface[t][j], surface[t][(j + 1) % 3]), t});
-      }
+      for (int j = 0; j < 3; ++j) on_edge.push_back({key_of(t, j), t});
     }
     std::sort(on_edge.begin(), on_edge.end());
+    std::vector<int> edge_first(3 * surface.size());
+    for (std::size_t i = 0, first = 0; i < on_edge.size(); ++i) {
+      if (on_edge[i].first != on_edge[first].first) first = i;
+      const int t = on_edge[i].second;
+      for (int j = 0; j < 3; ++j) {
+        if (key_of(t, j) == on_edge[i].first) edge_first[3 * t + j] = static_cast<int>(first);
+      }
+    }
     std::vector<char> gone(surface.size(), 0);
     // The triangles at a sample not dropped yet.
     const auto triangles_left_at = [&](int sample) {
-      return std::count_if(at[sample].begin(), at[sample].end(), [&](int t) { return !gone[t]; });
+      const Span triangles = at(sample);
+      return std::count_if(triangles.first, triangles.last, [&](int t) { return !gone[t]; });
     };
     // How many triangles are reached from `from` across edges, the gone ones left out, counting
     // up to `enough`.
@@ -190,8 +251,8 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
         stack.pop_back();
         if (++reached >= enough) return reached;
         for (int j = 0; j < 3; ++j) {
-          const std::uint64_t key = edge_key(surface[t][j], surface[t][(j + 1) % 3]);
-          for (auto it = std::lower_bound(on_edge.begin(), on_edge.end(), std::make_pair(key, -1));
+          const std::uint64_t key = on_edge[edge_first[3 * t + j]].first;
+          for (auto it = on_edge.begin() + edge_first[3 * t + j];
                it != on_edge.end() && it->first == key; ++it) {
             const int u = it->second;
             if (gone[u] || seen_mark[u] == search) continue;
@@ -202,13 +263,15 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
       }
       return reached;
     };
+    std::vector<int> triangles;
+    std::vector<std::pair<int, int>> around;
     for (int v = 0; v < static_cast<int>(sample_count); ++v) {
       // The fans at v: its triangles, joined where they share an edge at v.
-      std::vector<int> triangles;
-      for (int t : at[v]) {
-        if (!gone[t]) triangles.push_back(t);
+      triangles.clear();
+      for (const int* t = at(v).first; t != at(v).last; ++t) {
+        if (!gone[*t]) triangles.push_back(*t);
       }
-      if (triangles.size() < 2) continue;
+      if (triangles.size() < 2 || one_fan(surface, v, triangles, around)) continue;
       std::vector<int> fan_of(triangles.size());
       for (std::size_t i = 0; i < triangles.size(); ++i) fan_of[i] = static_cast<int>(i);
       const auto root = [&](int i) {
@@ -254,7 +317,9 @@ inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t
         bool cuts = false;
         for (const auto& [u, count] : on_fan) {
           if (u == v) continue;
-          for (int t : at[u]) cuts = cuts || (!gone[t] && piece_from(t, small_piece) < small_piece);
+          for (const int* t = at(u).first; t != at(u).last; ++t) {
+            cuts = cuts || (!gone[*t] && piece_from(*t, small_piece) < small_piece);
+          }
         }
         if (cuts) {
           for (int t : it->second) gone[t] = 0;
