@@ -36,32 +36,47 @@ void find_poles(const typename Traits::Triangulation& triangulation,
   // Keeping a few largest balls per sample in one pass does not find p- either: a sample's
   // largest Voronoi vertices crowd together at the far end of its cell, on the side of p+
   // (measured: the 4 largest are all on that side for 98% of bunny00's samples).
+  // What a pole needs of its cell (centre, radius, sites) is kept per sample as the passes find
+  // it, so that no cell is visited again out of the container's order (each such visit a cache
+  // miss). The radii and centres, read for every cell at each of its samples, are kept apart from
+  // the rest, written only when a larger ball is found (a few times a sample): compact arrays
+  // that stay in cache. Bunny00 subdivided (150k): the stage 0.23 -> 0.17 s.
+  struct Ball {
+    int cell = -1;  // index among the finite cells
+    Cell<D> sites{};
+  };
+  const auto keep = [](Ball& ball, Cell_handle cell) {
+    ball.cell = cell->info();
+    for (int i = 0; i <= D; ++i) ball.sites[i] = cell->vertex(i)->info();
+  };
 
   // Pass 1: p+ of every sample.
-  std::vector<double> plus_radius2(n, -1.0);
-  std::vector<Cell_handle> plus_cell(n);
+  std::vector<double> plus_radius2(n, -1.0);  // -1: none found (yet)
+  std::vector<Cgal_point> plus_center(n);
+  std::vector<Ball> plus(n);
   const double cells = 2.0 * static_cast<double>(result.delaunay.cell_count);
   std::size_t done = 0;
   for (auto cell : Traits::finite_cells(triangulation)) {
     if (++done % 262144 == 0) clock.report(double(done) / cells);
-    const double r2 = squared_radius(cell, Traits::circumcenter(triangulation, cell));
+    const Cgal_point center = Traits::circumcenter(triangulation, cell);
+    const double r2 = squared_radius(cell, center);
     for (int i = 0; i <= D; ++i) {
       const int s = cell->vertex(i)->info();
       if (s < n && r2 > plus_radius2[s]) {
         plus_radius2[s] = r2;
-        plus_cell[s] = cell;
+        plus_center[s] = center;
+        keep(plus[s], cell);
       }
     }
   }
-  std::vector<Cgal_point> plus_center(n);
-  for (int s = 0; s < n; ++s) plus_center[s] = Traits::circumcenter(triangulation, plus_cell[s]);
 
   // Pass 2: p- of every sample.
   std::vector<double> minus_radius2(n, -1.0);
-  std::vector<Cell_handle> minus_cell(n);
+  std::vector<Cgal_point> minus_center(n);
+  std::vector<Ball> minus(n);
   for (auto cell : Traits::finite_cells(triangulation)) {
     if (++done % 262144 == 0) clock.report(double(done) / cells);
-    const auto center = Traits::circumcenter(triangulation, cell);
+    const Cgal_point center = Traits::circumcenter(triangulation, cell);
     const double r2 = squared_radius(cell, center);
     for (int i = 0; i <= D; ++i) {
       const int s = cell->vertex(i)->info();
@@ -69,7 +84,8 @@ void find_poles(const typename Traits::Triangulation& triangulation,
       const auto& sample = cell->vertex(i)->point();
       if ((center - sample) * (plus_center[s] - sample) < 0) {
         minus_radius2[s] = r2;
-        minus_cell[s] = cell;
+        minus_center[s] = center;
+        keep(minus[s], cell);
       }
     }
   }
@@ -85,8 +101,8 @@ void find_poles(const typename Traits::Triangulation& triangulation,
   std::vector<Naming> namings;
   namings.reserve(2 * static_cast<std::size_t>(n));
   for (int s = 0; s < n; ++s) {
-    namings.push_back({plus_cell[s]->info(), 2 * s});
-    if (minus_radius2[s] >= 0) namings.push_back({minus_cell[s]->info(), 2 * s + 1});
+    namings.push_back({plus[s].cell, 2 * s});
+    if (minus_radius2[s] >= 0) namings.push_back({minus[s].cell, 2 * s + 1});
   }
   std::sort(namings.begin(), namings.end(), [](const Naming& a, const Naming& b) {
     return a.cell != b.cell ? a.cell < b.cell : a.slot < b.slot;
@@ -97,21 +113,18 @@ void find_poles(const typename Traits::Triangulation& triangulation,
     if (i == 0 || namings[i].cell != namings[i - 1].cell) first_slots.push_back(namings[i].slot);
   }
   std::sort(first_slots.begin(), first_slots.end());
-  const auto cell_of_slot = [&](int slot) {
-    return slot % 2 == 0 ? plus_cell[slot / 2] : minus_cell[slot / 2];
-  };
   stage.poles.resize(first_slots.size());
+  std::vector<int> pole_of_slot(2 * static_cast<std::size_t>(n), -1);
   for (std::size_t pole = 0; pole < first_slots.size(); ++pole) {
-    const auto cell = cell_of_slot(first_slots[pole]);
+    const int slot = first_slots[pole];
+    pole_of_slot[slot] = static_cast<int>(pole);
+    const Ball& ball = slot % 2 == 0 ? plus[slot / 2] : minus[slot / 2];
     Pole<D>& p = stage.poles[pole];
-    const auto center = Traits::circumcenter(triangulation, cell);
-    p.center = Traits::from_cgal(center);
-    p.radius = std::sqrt(squared_radius(cell, center));
-    p.cell = static_cast<std::size_t>(cell->info());
-    for (int i = 0; i <= D; ++i) {
-      p.sites[i] = cell->vertex(i)->info();
-      p.convex = p.convex || p.sites[i] >= n;
-    }
+    p.center = Traits::from_cgal(slot % 2 == 0 ? plus_center[slot / 2] : minus_center[slot / 2]);
+    p.radius = std::sqrt(slot % 2 == 0 ? plus_radius2[slot / 2] : minus_radius2[slot / 2]);
+    p.cell = static_cast<std::size_t>(ball.cell);
+    p.sites = ball.sites;
+    for (int i = 0; i <= D; ++i) p.convex = p.convex || p.sites[i] >= n;
   }
   stage.positive_pole.assign(n, -1);
   stage.negative_pole.assign(n, -1);
@@ -119,9 +132,7 @@ void find_poles(const typename Traits::Triangulation& triangulation,
     std::size_t j = i;
     while (j < namings.size() && namings[j].cell == namings[i].cell) ++j;
     // namings[i] is this cell's first naming: its pole's number is its rank among first namings.
-    const int pole =
-        static_cast<int>(std::lower_bound(first_slots.begin(), first_slots.end(), namings[i].slot) -
-                         first_slots.begin());
+    const int pole = pole_of_slot[namings[i].slot];
     for (std::size_t k = i; k < j; ++k) {
       const int slot = namings[k].slot;
       (slot % 2 == 0 ? stage.positive_pole : stage.negative_pole)[slot / 2] = pole;
