@@ -43,10 +43,12 @@ constexpr float strong_evidence = 0.5f;
 // The evidence between poles: for each pole, its neighbours with a weight and whether the
 // evidence says "same side" or "opposite sides". Compressed rows.
 struct Pole_evidence {
+  // 8 bytes: the labelling reads the links of each pole it pops, in no order the memory likes.
   struct Link {
-    int pole;
+    int key;  // 2 pole + 1 if the evidence says "opposite sides"
     float weight;
-    bool opposite;
+    int pole() const { return key >> 1; }
+    bool opposite() const { return key & 1; }
   };
   std::vector<int> offsets;
   std::vector<Link> links;
@@ -61,25 +63,44 @@ Pole_evidence pole_evidence(const Reconstruction<D>& result) {
   const int pole_count = static_cast<int>(stage.poles.size());
   // Each piece of evidence, found twice (cheap: a cosine): once to count the links of every
   // pole, once to file them in compressed rows, both directions. Keeping the list between the
-  // two would cost more memory than the links themselves.
+  // two would cost more memory than the links themselves. What a sample lends to the evidence
+  // (its position, its poles and their centres) is gathered in one record per sample: the poles
+  // name their samples in no useful order, and one record is one or two cache lines where the
+  // scattered arrays were five (bunny00 subdivided: the evidence 0.20 -> 0.13 s).
+  struct Sample_poles {
+    Point<D> sample;
+    Point<D> center[2];  // of p+ and p-
+    int pole[2];         // p+ and p- (-1: none)
+  };
+  std::vector<Sample_poles> around(n);
+  for (int s = 0; s < n; ++s) {
+    around[s].sample = result.sites[s];
+    around[s].pole[0] = stage.positive_pole[s];
+    around[s].pole[1] = stage.negative_pole[s];
+    for (int j = 0; j < 2; ++j) {
+      if (around[s].pole[j] >= 0) around[s].center[j] = stage.poles[around[s].pole[j]].center;
+    }
+  }
   const auto for_each_evidence = [&](auto&& use) {
     for (int p = 0; p < pole_count; ++p) {
+      const Point<D>& p_center = stage.poles[p].center;
       for (int s : stage.poles[p].sites) {
         if (s >= n) continue;  // a box corner
-        for (int q : {stage.positive_pole[s], stage.negative_pole[s]}) {
+        const Sample_poles& at = around[s];
+        for (int j = 0; j < 2; ++j) {
+          const int q = at.pole[j];
           if (q < 0 || q == p) continue;
-          const auto& sample = result.sites[s];
           double dot = 0, a2 = 0, b2 = 0;
           for (int k = 0; k < D; ++k) {
-            const double a = stage.poles[p].center[k] - sample[k];
-            const double b = stage.poles[q].center[k] - sample[k];
+            const double a = p_center[k] - at.sample[k];
+            const double b = at.center[j][k] - at.sample[k];
             dot += a * b;
             a2 += a * a;
             b2 += b * b;
           }
           if (a2 <= 0 || b2 <= 0) continue;
           const double cosine = dot / std::sqrt(a2 * b2);
-          const int plus = stage.positive_pole[s], minus = stage.negative_pole[s];
+          const int plus = at.pole[0], minus = at.pole[1];
           const bool pair = (p == plus && q == minus) || (p == minus && q == plus);
           if (pair && cosine <= antipodal_pair_cosine) {
             use(p, q, float(-cosine), true);
@@ -103,19 +124,15 @@ Pole_evidence pole_evidence(const Reconstruction<D>& result) {
   {
     std::vector<int> fill(offsets.begin(), offsets.end() - 1);
     for_each_evidence([&](int p, int q, float weight, bool opposite) {
-      links[fill[p]++] = {q, weight, opposite};
-      links[fill[q]++] = {p, weight, opposite};
+      links[fill[p]++] = {2 * q + opposite, weight};
+      links[fill[q]++] = {2 * p + opposite, weight};
     });
   }
   // Per pole, one link per (neighbour, kind), with the strongest weight, in that order.
   const auto before = [](const Link& a, const Link& b) {
-    if (a.pole != b.pole) return a.pole < b.pole;
-    if (a.opposite != b.opposite) return a.opposite < b.opposite;
-    return a.weight > b.weight;
+    return a.key != b.key ? a.key < b.key : a.weight > b.weight;
   };
-  const auto same = [](const Link& a, const Link& b) {
-    return a.pole == b.pole && a.opposite == b.opposite;
-  };
+  const auto same = [](const Link& a, const Link& b) { return a.key == b.key; };
   std::size_t kept = 0;
   for (int p = 0; p < pole_count; ++p) {
     const auto first = links.begin() + offsets[p], last = links.begin() + offsets[p + 1];
@@ -204,20 +221,21 @@ class Confidence_labelling {
 
     for (int i = evidence_.offsets[pole]; i < evidence_.offsets[pole + 1]; ++i) {
       const auto& link = evidence_.links[i];
-      const Label offered = link.opposite ? opposite(label) : label;
+      const int other = link.pole();
+      const Label offered = link.opposite() ? opposite(label) : label;
       const Label_reason reason =
-          link.opposite ? Label_reason::pairing : Label_reason::ball_overlap;
-      const Label current = stage_.labels[link.pole];
+          link.opposite() ? Label_reason::pairing : Label_reason::ball_overlap;
+      const Label current = stage_.labels[other];
       if (current == Label::unlabelled) {
-        Offer& offer = offers_[link.pole].side[side(offered)];
+        Offer& offer = offers_[other].side[side(offered)];
         if (link.weight > offer.weight) {
           offer = {link.weight, pole, reason};
-          queue_.push({confidence(link.pole), link.pole});
+          queue_.push({confidence(other), other});
         }
       } else if (current != offered && link.weight >= strong_evidence &&
-                 link.weight >= offers_[link.pole].side[side(current)].weight) {
+                 link.weight >= offers_[other].side[side(current)].weight) {
         stage_.conflicts.push_back(
-            {link.pole, offered, pole, reason, link.weight, long(stage_.events.size())});
+            {other, offered, pole, reason, link.weight, long(stage_.events.size())});
       }
     }
   }
