@@ -394,7 +394,7 @@ TEST(Automatic_kind, OnlyTheRobustMethodChooses) {
 // The automatic kind's last word: a bordered result is kept when it has an opening (a border
 // loop not torn), the closed result has the facets over openings to have capped them (2 each on
 // a surface, 1 on a curve), and it has fewer defects than the closed one with those facets
-// counted.
+// counted, and no more than the closed one's and one per torn loop.
 TEST(Automatic_kind, BorderLoopsAreOpeningsOnlyWhereTheClosedResultCappedThem) {
   Statistics closed, bordered;
   // As a torus with noise of 5% of its spacing: 7 facets over openings, every loop torn.
@@ -415,10 +415,22 @@ TEST(Automatic_kind, BorderLoopsAreOpeningsOnlyWhereTheClosedResultCappedThem) {
   EXPECT_TRUE(keeps_bordered<2>(closed, 2, bordered));
   EXPECT_FALSE(keeps_bordered<3>(closed, 2, bordered));
   // More defects than the closed result's, with its facets over openings counted as defects.
+  bordered.boundary_loops = 32;
+  bordered.torn_loops = 30;
   bordered.non_manifold_vertices = 30;
   closed.unused_samples = 5;
   EXPECT_FALSE(keeps_bordered<3>(closed, 25, bordered));
   EXPECT_TRUE(keeps_bordered<3>(closed, 26, bordered));
+  // More defects than the closed result's and the torn loops explain, however many facets over
+  // openings: a 2-manifold is not traded for a surface that is not (a CAD mesh's flat faces).
+  closed.unused_samples = 0;
+  bordered.non_manifold_vertices = 31;
+  EXPECT_FALSE(keeps_bordered<3>(closed, 1000, bordered));
+  bordered.non_manifold_vertices = 30;
+  bordered.unused_samples = 1;
+  EXPECT_FALSE(keeps_bordered<3>(closed, 1000, bordered));
+  bordered.unused_samples = 0;
+  EXPECT_TRUE(keeps_bordered<3>(closed, 1000, bordered));
 }
 
 }  // namespace
