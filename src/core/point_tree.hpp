@@ -72,6 +72,10 @@ class Point_tree {
     return any_within(x, r2, [](const Point<D>&) { return true; });
   }
 
+  // The points' indices in the order given, listed in the tree's order: neighbours come one
+  // after another, so queries about the points made in this order find the tree in cache.
+  const std::vector<int>& tree_order() const { return input_index_; }
+
   // How many points lie at squared distance below r2 from x, counting up to `enough` (where the
   // search stops).
   int count_within(const Point<D>& x, double r2, int enough) const {
