@@ -164,10 +164,12 @@ class Manifold_carving {
   }
 
   void start_from_hull() {
+    hull_outside_.clear();
     for (auto cell : Traits::finite_cells(triangulation_)) {
       bool all_samples = true;
       for (int i = 0; i <= D; ++i) all_samples = all_samples && is_sample(cell->vertex(i));
       outside_[cell->info()] = !all_samples;
+      if (!all_samples) hull_outside_.push_back(cell);
       for (int i = 0; i <= D; ++i) {
         if (!is_sample(cell->vertex(i))) continue;
         ++(all_samples ? solid_cells_at_ : outside_cells_at_)[cell->vertex(i)->info()];
@@ -282,17 +284,34 @@ class Manifold_carving {
       stack.push_back(cell);
     };
     for (auto cell : Traits::finite_cells(triangulation_)) {
-      if (outer_pole_cells.size() < pole_cells.size() &&
-          cell->info() == pole_cells[outer_pole_cells.size()]) {
-        outer_pole_cells.push_back(cell);
-      }
-      if (is_outside(cell) || sample_left_off) continue;  // the pass goes on for pole cells
+      if (outer_pole_cells.size() == pole_cells.size()) break;
+      if (cell->info() == pole_cells[outer_pole_cells.size()]) outer_pole_cells.push_back(cell);
+    }
+    // The flood starts at the outer cells of the skin, taken in the order the cells are
+    // numbered: a solid cell touching the outside then (the hull's outside, or a cell that
+    // started the flood before it) starts it too if it is outer; the rest of the flood follows
+    // from the stack. Only the cells on the hull's skin, found from the few cells outside it,
+    // and the neighbours of starting cells are looked at, not every cell.
+    const auto later_first = [](Cell_handle a, Cell_handle b) { return a->info() > b->info(); };
+    std::priority_queue<Cell_handle, std::vector<Cell_handle>, decltype(later_first)> next(
+        later_first);
+    for (Cell_handle outside : hull_outside_) {
       for (int i = 0; i <= D; ++i) {
-        // Only cells on the skin of the hull (or of the flood) are judged.
-        if (is_outside(cell->neighbor(i))) {
-          if (judged_outer(cell)) flood(cell);
-          break;
-        }
+        if (!is_outside(outside->neighbor(i))) next.push(outside->neighbor(i));
+      }
+    }
+    int passed = -1;  // the number of the last cell looked at
+    while (!next.empty() && !sample_left_off) {
+      const Cell_handle cell = next.top();
+      next.pop();
+      if (cell->info() <= passed) continue;  // looked at already
+      passed = cell->info();
+      // Only cells on the skin of the hull (or of the flood) are judged.
+      if (is_outside(cell) || !judged_outer(cell)) continue;
+      flood(cell);
+      for (int i = 0; i <= D; ++i) {
+        const Cell_handle neighbour = cell->neighbor(i);
+        if (!is_outside(neighbour) && neighbour->info() > passed) next.push(neighbour);
       }
     }
     const double cells = static_cast<double>(result_.delaunay.cell_count);
@@ -696,7 +715,8 @@ class Manifold_carving {
   std::vector<std::uint8_t> reached_;  // per cell: reached by a search of cuts_off_small_piece
   std::vector<std::array<int, 2>> link_;
   std::vector<std::pair<int, int>> link_ends_;
-  std::vector<Cell_handle> outer_left_;  // judged outer and in the solid after the first carve
+  std::vector<Cell_handle> outer_left_;    // judged outer and in the solid after the first carve
+  std::vector<Cell_handle> hull_outside_;  // the finite cells outside the hull (not all-sample)
   std::vector<Cell_handle> stack_;
   std::vector<int> group_mark_;  // per cell: the outer group that last reached it
   int group_counter_ = 0;
