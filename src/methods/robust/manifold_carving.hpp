@@ -287,45 +287,36 @@ class Manifold_carving {
       if (outer_pole_cells.size() == pole_cells.size()) break;
       if (cell->info() == pole_cells[outer_pole_cells.size()]) outer_pole_cells.push_back(cell);
     }
-    // The flood starts at the outer cells of the skin, taken in the order the cells are
-    // numbered: a solid cell touching the outside then (the hull's outside, or a cell that
-    // started the flood before it) starts it too if it is outer; the rest of the flood follows
-    // from the stack. Only the cells on the hull's skin, found from the few cells outside it,
-    // and the neighbours of starting cells are looked at, not every cell.
-    const auto later_first = [](Cell_handle a, Cell_handle b) { return a->info() > b->info(); };
-    std::priority_queue<Cell_handle, std::vector<Cell_handle>, decltype(later_first)> next(
-        later_first);
+    // The flood starts at the outer cells on the hull's skin (found from the few cells outside
+    // the hull), in the order the cells are numbered, and goes depth first from each. Where it
+    // ends does not depend on the order: every outer cell the outside reaches through outer
+    // cells (the order of the events does).
+    std::vector<Cell_handle> skin_cells;
     for (Cell_handle outside : hull_outside_) {
       for (int i = 0; i <= D; ++i) {
-        if (!is_outside(outside->neighbor(i))) next.push(outside->neighbor(i));
+        if (!is_outside(outside->neighbor(i))) skin_cells.push_back(outside->neighbor(i));
       }
     }
-    int passed = -1;  // the number of the last cell looked at
-    while (!next.empty() && !sample_left_off) {
-      const Cell_handle cell = next.top();
-      next.pop();
-      if (cell->info() <= passed) continue;  // looked at already
-      passed = cell->info();
-      // Only cells on the skin of the hull (or of the flood) are judged.
-      if (is_outside(cell) || !judged_outer(cell)) continue;
-      flood(cell);
-      for (int i = 0; i <= D; ++i) {
-        const Cell_handle neighbour = cell->neighbor(i);
-        if (!is_outside(neighbour) && neighbour->info() > passed) next.push(neighbour);
-      }
-    }
+    const auto by_number = [](Cell_handle a, Cell_handle b) { return a->info() < b->info(); };
+    std::sort(skin_cells.begin(), skin_cells.end(), by_number);
+    skin_cells.erase(std::unique(skin_cells.begin(), skin_cells.end()), skin_cells.end());
     const double cells = static_cast<double>(result_.delaunay.cell_count);
     std::size_t reported = 0;
-    while (!stack.empty() && !sample_left_off) {
-      if (judge_.judged() >= reported + 262144) {
-        reported = judge_.judged();
-        report(double(reported) / cells);
-      }
-      const Cell_handle cell = stack.back();
-      stack.pop_back();
-      for (int i = 0; i <= D && !sample_left_off; ++i) {
-        const Cell_handle neighbour = cell->neighbor(i);
-        if (!is_outside(neighbour) && judged_outer(neighbour)) flood(neighbour);
+    for (Cell_handle start : skin_cells) {
+      if (sample_left_off) break;
+      if (is_outside(start) || !judged_outer(start)) continue;
+      flood(start);
+      while (!stack.empty() && !sample_left_off) {
+        if (judge_.judged() >= reported + 262144) {
+          reported = judge_.judged();
+          report(double(reported) / cells);
+        }
+        const Cell_handle cell = stack.back();
+        stack.pop_back();
+        for (int i = 0; i <= D && !sample_left_off; ++i) {
+          const Cell_handle neighbour = cell->neighbor(i);
+          if (!is_outside(neighbour) && judged_outer(neighbour)) flood(neighbour);
+        }
       }
     }
     // Every outer pole's cell met in the pass (else the pocket test would miss some: undone).
