@@ -38,6 +38,7 @@
 #include <cstdint>
 #include <queue>
 #include <sculpt/sculpt.hpp>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -233,6 +234,23 @@ class Manifold_carving {
     ++removed_;
     if (result_.options.keep_triangulations)
       result_.carving.events.push_back({cell->info(), reason});
+    if (!stamp_.empty()) stamp_around(cell);
+  }
+
+  // A removal stamps the vertices of the cell and of its neighbours: a vertex's stamp moves
+  // whenever a cell around it changes, or a cell next to one of those, which is all that its
+  // manifold test (manifold_at) and its count of solid cells read.
+  void stamp_around(Cell_handle cell) {
+    ++tick_;
+    for (int i = 0; i <= D; ++i) {
+      stamp_[cell->vertex(i)->info()] = tick_;
+      const Cell_handle neighbour = cell->neighbor(i);
+      if (triangulation_.is_infinite(neighbour)) continue;
+      for (int j = 0; j <= D; ++j) stamp_[neighbour->vertex(j)->info()] = tick_;
+    }
+  }
+  bool unchanged_since(Vertex_handle v, std::uint32_t tick) const {
+    return stamp_[v->info()] <= tick;
   }
 
   // A cell is queued at most once at a time: a removal next to a queued cell changes what its
@@ -246,6 +264,7 @@ class Manifold_carving {
 
   void carve_outer_cells() {
     queued_.assign(result_.delaunay.cell_count, 0);  // not before: the flood needs none
+    stamp_.assign(result_.sites.size(), 0);
     // Every cell is judged here (most for the first time): the long part, which the progress
     // follows.
     const double cells = static_cast<double>(result_.delaunay.cell_count);
@@ -577,6 +596,15 @@ class Manifold_carving {
       bool punched = false;
       for (Cell_handle cell : std::vector<Cell_handle>(outer_cells_left())) {
         if (is_outside(cell)) continue;
+        // Nothing changed around the cell (its faces, the cells at its vertices) and around the
+        // vertex that failed since this punch last failed: it would fail again, the same way.
+        const auto failed = failed_punches_.find(cell->info());
+        if (failed != failed_punches_.end()) {
+          bool unchanged = unchanged_since(failed->second.at, failed->second.tick);
+          for (int i = 0; i <= D; ++i)
+            unchanged = unchanged && unchanged_since(cell->vertex(i), failed->second.tick);
+          if (unchanged) continue;
+        }
         int opposite[D + 1];
         const int k = outside_facets(cell, opposite);
         if (k == 0 || k >= D) continue;
@@ -594,7 +622,12 @@ class Manifold_carving {
           do add(c);
           while (++c != first);
         }
-        punched = try_remove_group(group) || punched;
+        Vertex_handle failed_at{};
+        if (try_remove_group(group, &failed_at)) {
+          punched = true;
+        } else if (failed_at != Vertex_handle{}) {
+          failed_punches_[cell->info()] = {tick_, failed_at};
+        }
       }
       if (!punched) break;
     }
@@ -656,16 +689,25 @@ class Manifold_carving {
     return cut;
   }
 
-  bool try_remove_group(const std::vector<Cell_handle>& group) {
+  // `failed_at`, when given, is set to the vertex whose test failed (left alone when the group
+  // would cut a piece off).
+  bool try_remove_group(const std::vector<Cell_handle>& group, Vertex_handle* failed_at = nullptr) {
     // Callers pass groups that touch the outside (pockets inside the solid are cavities' business).
     for (Cell_handle cell : group) set_outside(cell, true);
-    bool fine = true;
+    // Each vertex of the group once: the cells around a vertex all share it (punch_through's
+    // groups), and a vertex's test walks all its cells.
+    group_vertices_.clear();
     for (Cell_handle cell : group) {
-      for (int i = 0; i <= D && fine; ++i) {
-        const Vertex_handle v = cell->vertex(i);
-        fine = solid_cells_at_[v->info()] > 0 && manifold_at(v);
-      }
-      if (!fine) break;
+      for (int i = 0; i <= D; ++i) group_vertices_.push_back(cell->vertex(i));
+    }
+    std::sort(group_vertices_.begin(), group_vertices_.end());
+    group_vertices_.erase(std::unique(group_vertices_.begin(), group_vertices_.end()),
+                          group_vertices_.end());
+    bool fine = true;
+    for (std::size_t j = 0; j < group_vertices_.size() && fine; ++j) {
+      const Vertex_handle v = group_vertices_[j];
+      fine = solid_cells_at_[v->info()] > 0 && manifold_at(v);
+      if (!fine && failed_at) *failed_at = v;
     }
     if (fine) fine = !cuts_off_small_piece(group);
     if (!fine) {
@@ -739,6 +781,16 @@ class Manifold_carving {
   std::vector<int> outside_cells_at_;  // per sample: incident cells outside
   std::priority_queue<Entry> queue_;
   std::vector<Cell_handle> star_, piece_, large_pieces_;
+  std::vector<Vertex_handle> group_vertices_;
+  // The change stamps (stamp_around), per site; empty in the flood, which needs none.
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t tick_ = 0;
+  // Per outer cell whose punch failed at a vertex's test: the stamp then, and the vertex.
+  struct Failed_punch {
+    std::uint32_t tick;
+    Vertex_handle at;
+  };
+  std::unordered_map<int, Failed_punch> failed_punches_;
   std::vector<std::uint8_t> reached_;  // per cell: reached by a search of cuts_off_small_piece
   std::vector<std::array<int, 2>> link_;
   std::vector<std::pair<int, int>> link_ends_;
