@@ -5,7 +5,8 @@
 // samples' spacing (spanning_openings.hpp). So:
 //
 //   R_closed <- the closed reconstruction
-//   if no facet of R_closed spans an opening: keep R_closed
+//   if too few facets of R_closed span an opening to cap one (2 on a surface, 1 on a curve):
+//     keep R_closed
 //   R_bordered <- the bordered reconstruction
 //   keep R_bordered if it has an opening (a border loop not torn by noise), R_closed has at
 //   least 2 facets spanning an opening per opening (1 on a curve),
@@ -116,14 +117,17 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
   const auto now = std::chrono::steady_clock::now();
   const double choice_seconds = std::chrono::duration<double>(now - choosing).count();
   const double closed_seconds = std::chrono::duration<double>(now - started).count();
-  report(1.0, spanning == 0 ? 1.0 : 0.5);
+  // Too few facets over openings to have capped one: the bordered result could not be kept
+  // (keeps_bordered), so it is not made.
+  const bool closed_stands = spanning < facets_capping_an_opening<D>;
+  report(1.0, closed_stands ? 1.0 : 0.5);
   const auto add_choice_stage = [&] {
     auto& stats = closed_result.stats;
     const double peak = stats.stages.empty() ? 0.0 : stats.stages.back().peak_memory_mib;
     stats.stages.push_back(Stage_measure{"kind choice", choice_seconds, peak});
     stats.total_seconds += choice_seconds;
   };
-  if (spanning == 0) {
+  if (closed_stands) {
     add_choice_stage();
     return closed_result;
   }
