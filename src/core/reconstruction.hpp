@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 #include "../methods/boissonnat/boissonnat_method.hpp"
@@ -18,6 +19,7 @@
 #include "../methods/paper/paper_method.hpp"
 #include "../methods/power_crust/power_crust_method.hpp"
 #include "../methods/robust/robust_method.hpp"
+#include "closed_skin_check.hpp"
 #include "delaunay.hpp"
 #include "exact_normalisation.hpp"
 #include "facet_topology.hpp"
@@ -70,6 +72,8 @@ Reconstruction<Traits::dimension> reconstruct_with(
   find_poles<Traits>(triangulation, result, clock);
   result.stats.poles = result.poles.poles.size();
 
+  // A method whose surface passed check_closed_skin says so: its topology follows from that.
+  std::optional<Skin_check> checked_skin;
   switch (options.method) {
     case Method::paper:
       clock.start("seeds");
@@ -79,7 +83,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
     case Method::robust:
       clock.start("seeds");
       select_seeds(result);
-      run_robust_method<Traits>(triangulation, result, clock);
+      checked_skin = run_robust_method<Traits>(triangulation, result, clock);
       break;
     case Method::crust:
       if constexpr (Traits::dimension == 2) {
@@ -118,9 +122,14 @@ Reconstruction<Traits::dimension> reconstruct_with(
   clock.start("topology");
   result.stats.surface_vertices = result.surface_vertices.size();
   // A result that does not interpolate is measured on its own vertices (all of them used).
-  measure_topology<Traits::dimension>(
-      result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
-      result.stats);
+  if (checked_skin) {
+    closed_skin_topology<Traits::dimension>(samples.size(), result.surface.size(), *checked_skin,
+                                            result.stats);
+  } else {
+    measure_topology<Traits::dimension>(
+        result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
+        result.stats);
+  }
   undo_normalisation<Traits::dimension>(result, normalisation, samples);
   clock.finish();
   return result;

@@ -36,6 +36,7 @@
 #include <array>
 #include <climits>
 #include <cstdint>
+#include <optional>
 #include <queue>
 #include <sculpt/sculpt.hpp>
 #include <unordered_map>
@@ -94,6 +95,12 @@ class Manifold_carving {
 
   // How many cells were removed.
   std::size_t removed() const { return removed_; }
+
+  // The surface's check as a closed 2-manifold through every sample, when the flood stood (it
+  // passed it): the topology follows from it without checking the surface again.
+  std::optional<Skin_check> checked_skin() const {
+    return result_.stats.carved_by_flood ? checked_skin_ : std::nullopt;
+  }
 
   bool is_outside(Cell_handle cell) const {
     return triangulation_.is_infinite(cell) || outside_[cell->info()];
@@ -409,6 +416,7 @@ class Manifold_carving {
     for (const Skin_facet& facet : skin) result_.surface.push_back(facet.sites);
     std::vector<Skin_facet>().swap(skin);
     const Skin_check check = check_closed_skin<D>(sample_count_, result_.surface);
+    if (check.closed_manifold_through_all) checked_skin_ = check;
     // A piece of k samples, all on its skin, has at least k - D cells: one of more than
     // small_piece + D samples is no piece a group removal refuses to cut off.
     return check.closed_manifold_through_all &&
@@ -791,7 +799,8 @@ class Manifold_carving {
     Vertex_handle at;
   };
   std::unordered_map<int, Failed_punch> failed_punches_;
-  std::vector<std::uint8_t> reached_;  // per cell: reached by a search of cuts_off_small_piece
+  std::optional<Skin_check> checked_skin_;  // the flood's skin, when it passed the check
+  std::vector<std::uint8_t> reached_;       // per cell: reached by a search of cuts_off_small_piece
   std::vector<std::array<int, 2>> link_;
   std::vector<std::pair<int, int>> link_ends_;
   std::vector<Cell_handle> outer_left_;    // judged outer and in the solid after the first carve

@@ -16,6 +16,7 @@
 //                   filled (left_off_samples.hpp, gap_filling.hpp)
 #pragma once
 
+#include <optional>
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
@@ -30,9 +31,12 @@
 
 namespace sculpt {
 
+// Returns the surface's check as a closed 2-manifold through every sample when the carving made
+// it (its flood stood), for the topology stage.
 template <class Traits>
-void run_robust_method(typename Traits::Triangulation& triangulation,
-                       Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
+std::optional<Skin_check> run_robust_method(typename Traits::Triangulation& triangulation,
+                                            Reconstruction<Traits::dimension>& result,
+                                            Stage_clock& clock) {
   clock.start("labelling");
   label_poles_by_confidence(result, clock);
   count_labels(result);
@@ -42,7 +46,7 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
       clock.start("surface");
       result.surface =
           open_curves(triangulation, result.sites, static_cast<int>(result.sample_count()));
-      return;
+      return std::nullopt;
     }
   }
   if (inserts_poles(Method::robust, result.options.kind, Traits::dimension)) {
@@ -51,7 +55,7 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
       open_borders({result.sites.begin(), result.sites.begin() + result.sample_count()}, result,
                    clock);
     }
-    return;
+    return std::nullopt;
   }
 
   clock.start("carving");
@@ -65,6 +69,7 @@ void run_robust_method(typename Traits::Triangulation& triangulation,
   carving.collect_solid();
   clock.start("surface");
   carving.collect_surface();
+  return carving.checked_skin();
 }
 
 }  // namespace sculpt
