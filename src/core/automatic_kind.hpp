@@ -19,11 +19,12 @@
 // result unless the bordered one is cleaner; a sheet, a part scanned from one side, a shell
 // with holes has hundreds, and a bordered result with few defects.
 //
-// The last condition keeps a result that is a 2-manifold from being traded for one that is not:
+// The last condition keeps a result from being traded for one with more defects:
 // a CAD mesh's flat faces hold few vertices, so big facets there look like caps over openings,
 // and the bordered rule cuts holes into them with pinched vertices and samples left off around
 // (CGAL's couplingdown: closed, genus 9 as the mesh, against 15 loops, 17 non-manifold vertices
-// and 2 samples off; anchor, man, oblong likewise). Noise is allowed its due: a hole it tears
+// and 2 samples off; anchor likewise; man and oblong, whose closed results leave 18 and 1
+// samples off, had 64 and 26 defects bordered). Noise is allowed its due: a hole it tears
 // can leave a pinch beside it, one defect per torn loop (a cap with noise of 5% of its spacing:
 // 3 loops, 1 torn, 1 non-manifold vertex, stays bordered).
 //
@@ -51,6 +52,13 @@ namespace sculpt {
 // is over ρ = 3 spacings in radius, with a rim of some 19 samples or more).
 template <int D>
 inline constexpr std::size_t facets_capping_an_opening = D == 2 ? 1 : 2;
+
+// Whether `spanning` facets over openings are enough to have capped one. If not, keeps_bordered
+// cannot keep a bordered result (it needs an opening capped by that many), so none is made.
+template <int D>
+bool caps_an_opening(std::size_t spanning) {
+  return spanning >= facets_capping_an_opening<D>;
+}
 
 inline std::size_t defects(const Statistics& stats) {
   return stats.non_manifold_ridges + stats.non_manifold_vertices + stats.unused_samples;
@@ -117,9 +125,7 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
   const auto now = std::chrono::steady_clock::now();
   const double choice_seconds = std::chrono::duration<double>(now - choosing).count();
   const double closed_seconds = std::chrono::duration<double>(now - started).count();
-  // Too few facets over openings to have capped one: the bordered result could not be kept
-  // (keeps_bordered), so it is not made.
-  const bool closed_stands = spanning < facets_capping_an_opening<D>;
+  const bool closed_stands = !caps_an_opening<D>(spanning);
   report(1.0, closed_stands ? 1.0 : 0.5);
   const auto add_choice_stage = [&] {
     auto& stats = closed_result.stats;

@@ -8,10 +8,13 @@
 
 namespace sculpt {
 
-// Fills the topology fields of `stats` (boundary_ridges ... unused_samples, facets).
+struct Skin_check;
+
+// Fills the topology fields of `stats` (boundary_ridges ... unused_samples, facets). `checked`,
+// when given, is the facets' check_closed_skin, already made.
 template <int D>
 void measure_topology(std::size_t sample_count, const std::vector<Facet<D>>& facets,
-                      Statistics& stats);
+                      Statistics& stats, const Skin_check* checked = nullptr);
 
 // The same, always by counting every ridge (measure_topology takes a shortcut for closed
 // 2-manifolds through every sample; the tests hold the two to the same numbers).

@@ -72,7 +72,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   find_poles<Traits>(triangulation, result, clock);
   result.stats.poles = result.poles.poles.size();
 
-  // A method whose surface passed check_closed_skin says so: its topology follows from that.
+  // A method whose surface passed check_closed_skin hands the check on, not to make it twice.
   std::optional<Skin_check> checked_skin;
   switch (options.method) {
     case Method::paper:
@@ -122,14 +122,9 @@ Reconstruction<Traits::dimension> reconstruct_with(
   clock.start("topology");
   result.stats.surface_vertices = result.surface_vertices.size();
   // A result that does not interpolate is measured on its own vertices (all of them used).
-  if (checked_skin) {
-    closed_skin_topology<Traits::dimension>(samples.size(), result.surface.size(), *checked_skin,
-                                            result.stats);
-  } else {
-    measure_topology<Traits::dimension>(
-        result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
-        result.stats);
-  }
+  measure_topology<Traits::dimension>(
+      result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
+      result.stats, checked_skin ? &*checked_skin : nullptr);
   undo_normalisation<Traits::dimension>(result, normalisation, samples);
   clock.finish();
   return result;

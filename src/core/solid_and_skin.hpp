@@ -22,6 +22,15 @@ void collect_solid(const typename Traits::Triangulation& triangulation, In_solid
   }
 }
 
+// The facet of `cell` opposite its vertex i, its sites facing away from the cell.
+template <class Traits>
+Facet<Traits::dimension> facet_facing_out(typename Traits::Cell_handle cell, int i) {
+  Facet<Traits::dimension> facet;
+  for (int j = 0; j < Traits::dimension; ++j)
+    facet[j] = cell->vertex(Traits::facet_vertex[i][j])->info();
+  return facet;
+}
+
 template <class Traits, class In_solid>
 void collect_skin(const typename Traits::Triangulation& triangulation, In_solid&& in_solid,
                   Reconstruction<Traits::dimension>& result) {
@@ -31,9 +40,7 @@ void collect_skin(const typename Traits::Triangulation& triangulation, In_solid&
     for (int i = 0; i <= D; ++i) {
       const auto neighbour = cell->neighbor(i);
       if (!triangulation.is_infinite(neighbour) && in_solid(neighbour)) continue;
-      Facet<D> facet;
-      for (int j = 0; j < D; ++j) facet[j] = cell->vertex(Traits::facet_vertex[i][j])->info();
-      result.surface.push_back(facet);
+      result.surface.push_back(facet_facing_out<Traits>(cell, i));
     }
   }
 }

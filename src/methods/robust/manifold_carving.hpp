@@ -75,8 +75,13 @@ class Manifold_carving {
         outside_cells_at_(sample_count_, 0) {}
 
   void run() {
-    start_from_hull();
-    if (result_.options.carve_by_flood && flood_stands_for_carving()) return;
+    if (result_.options.carve_by_flood) {
+      std::vector<Cell_handle> outside_hull;
+      start_from_hull(&outside_hull);
+      if (flood_stands_for_carving(std::move(outside_hull))) return;
+    } else {
+      start_from_hull();
+    }
     carve_outer_cells();
     for (auto cell : Traits::finite_cells(triangulation_)) {
       if (!is_outside(cell) && judged_outer(cell)) outer_left_.push_back(cell);
@@ -124,8 +129,8 @@ class Manifold_carving {
   // A group removal must not cut off a piece of the solid with fewer cells.
   static constexpr std::size_t small_piece = 256;
 
-  // A facet of the skin: facet i of the solid cell numbered c, key (D + 1) c + i (the cells of a
-  // triangulation that fits in memory number far fewer than 2^32 / 4), its sites facing out.
+  // A facet of the skin: facet i of the solid cell numbered c, key (D + 1) c + i, its sites
+  // facing out.
   struct Skin_facet {
     std::uint32_t key;
     Facet<D> sites;
@@ -178,13 +183,17 @@ class Manifold_carving {
     clock_.report(reported_);
   }
 
-  void start_from_hull() {
-    hull_outside_.clear();
+  // The solid is the hull: every all-sample cell. `outside_cells`, when given, receives the cells
+  // outside it (the infinite ones too).
+  void start_from_hull(std::vector<Cell_handle>* outside_cells = nullptr) {
+    if (outside_cells) {
+      Traits::incident_cells(triangulation_, triangulation_.infinite_vertex(), *outside_cells);
+    }
     for (auto cell : Traits::finite_cells(triangulation_)) {
       bool all_samples = true;
       for (int i = 0; i <= D; ++i) all_samples = all_samples && is_sample(cell->vertex(i));
       outside_[cell->info()] = !all_samples;
-      if (!all_samples) hull_outside_.push_back(cell);
+      if (!all_samples && outside_cells) outside_cells->push_back(cell);
       for (int i = 0; i <= D; ++i) {
         if (!is_sample(cell->vertex(i))) continue;
         ++(all_samples ? solid_cells_at_ : outside_cells_at_)[cell->vertex(i)->info()];
@@ -244,17 +253,14 @@ class Manifold_carving {
     if (!stamp_.empty()) stamp_around(cell);
   }
 
-  // A removal stamps the vertices of the cell and of its neighbours: a vertex's stamp moves
-  // whenever a cell around it changes, or a cell next to one of those, which is all that its
-  // manifold test (manifold_at) and its count of solid cells read.
+  // A removal stamps the cell's vertices: a vertex's stamp moves whenever a cell around it
+  // changes. That is all a vertex's manifold test (manifold_at) and its count of solid cells read
+  // (the neighbour across a facet at v is around v too); a punch at a cell reads the cell's
+  // neighbours, each sharing all but one of its vertices, and the cells around one of its
+  // vertices or edges.
   void stamp_around(Cell_handle cell) {
     ++tick_;
-    for (int i = 0; i <= D; ++i) {
-      stamp_[cell->vertex(i)->info()] = tick_;
-      const Cell_handle neighbour = cell->neighbor(i);
-      if (triangulation_.is_infinite(neighbour)) continue;
-      for (int j = 0; j <= D; ++j) stamp_[neighbour->vertex(j)->info()] = tick_;
-    }
+    for (int i = 0; i <= D; ++i) stamp_[cell->vertex(i)->info()] = tick_;
   }
   bool unchanged_since(Vertex_handle v, std::uint32_t tick) const {
     return stamp_[v->info()] <= tick;
@@ -291,7 +297,7 @@ class Manifold_carving {
 
   // The shortcut (see the top): flood the outer cells from the outside, depth first, and keep
   // the result if it is where the carving was going; else undo it.
-  bool flood_stands_for_carving() {
+  bool flood_stands_for_carving(std::vector<Cell_handle> outside_hull) {
     // The cells of the outer poles, for the pocket test of flood_is_the_carving: found in
     // this pass, which meets the cells in the order they are numbered.
     std::vector<int> pole_cells;
@@ -312,14 +318,15 @@ class Manifold_carving {
     // inner, which the flood never removes, or between the hull's outside and a cell the flood
     // left. Not a second pass over every solid cell's neighbours (on a 300k random torus, 3.5M
     // of them: 0.36 s).
+    // (Keyed by 32 bits: beyond 2^32 / (D + 1) cells, some 50M samples, collect_skin instead.)
+    const bool keys_fit = (D + 1) * result_.delaunay.cell_count <= UINT32_MAX;
     std::vector<Skin_facet> skin;
+    if (keys_fit) skin.reserve((D == 3 ? 2 : 1) * std::size_t(sample_count_) + 64);  // closed
     const auto on_skin = [&](Cell_handle solid, Cell_handle outside) {
+      if (!keys_fit) return;
       const int i = solid->index(outside);
-      Skin_facet facet{static_cast<std::uint32_t>((D + 1) * std::size_t(solid->info()) + i),
-                       Facet<D>{}};
-      for (int j = 0; j < D; ++j)
-        facet.sites[j] = solid->vertex(Traits::facet_vertex[i][j])->info();
-      skin.push_back(facet);
+      skin.push_back({static_cast<std::uint32_t>((D + 1) * std::size_t(solid->info()) + i),
+                      facet_facing_out<Traits>(solid, i)});
     };
     bool sample_left_off = false;  // the carving never removes a sample's last solid cell
     const auto flood = [&](Cell_handle cell) {
@@ -333,22 +340,22 @@ class Manifold_carving {
       if (outer_pole_cells.size() == pole_cells.size()) break;
       if (cell->info() == pole_cells[outer_pole_cells.size()]) outer_pole_cells.push_back(cell);
     }
-    // The flood starts at the outer cells on the hull's skin (found from the few cells outside
-    // the hull), in the order the cells are numbered, and goes depth first from each. Where it
-    // ends does not depend on the order: every outer cell the outside reaches through outer
-    // cells (the order of the events does).
-    std::vector<Cell_handle> skin_cells;
-    for (Cell_handle outside : hull_outside_) {
+    // The flood starts at the outer cells on the hull's skin (found from the cells outside the
+    // hull, far fewer than the solid's), in the order the cells are numbered, and goes depth
+    // first from each. Where it ends does not depend on the order: every outer cell the outside
+    // reaches through outer cells (the order of the events does).
+    std::vector<Cell_handle> starts;
+    for (Cell_handle outside : outside_hull) {
       for (int i = 0; i <= D; ++i) {
-        if (!is_outside(outside->neighbor(i))) skin_cells.push_back(outside->neighbor(i));
+        if (!is_outside(outside->neighbor(i))) starts.push_back(outside->neighbor(i));
       }
     }
     const auto by_number = [](Cell_handle a, Cell_handle b) { return a->info() < b->info(); };
-    std::sort(skin_cells.begin(), skin_cells.end(), by_number);
-    skin_cells.erase(std::unique(skin_cells.begin(), skin_cells.end()), skin_cells.end());
+    std::sort(starts.begin(), starts.end(), by_number);
+    starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
     const double cells = static_cast<double>(result_.delaunay.cell_count);
     std::size_t reported = 0;
-    for (Cell_handle start : skin_cells) {
+    for (Cell_handle start : starts) {
       if (sample_left_off) break;
       if (is_outside(start) || !judged_outer(start)) continue;
       flood(start);
@@ -370,15 +377,16 @@ class Manifold_carving {
         }
       }
     }
-    std::vector<Cell_handle>().swap(skin_cells);  // memory peaks in the skin check, below
-    for (Cell_handle outside : hull_outside_) {
+    std::vector<Cell_handle>().swap(starts);  // memory peaks in the skin check, below
+    for (Cell_handle outside : outside_hull) {
       for (int i = 0; i <= D && !sample_left_off; ++i) {
         if (!is_outside(outside->neighbor(i))) on_skin(outside->neighbor(i), outside);
       }
     }
+    std::vector<Cell_handle>().swap(outside_hull);
     // Every outer pole's cell met in the pass (else the pocket test would miss some: undone).
     if (!sample_left_off && outer_pole_cells.size() == pole_cells.size() &&
-        flood_is_the_carving(outer_pole_cells, skin)) {
+        flood_is_the_carving(outer_pole_cells, keys_fit ? &skin : nullptr)) {
       result_.stats.carved_by_flood = true;
       return true;
     }
@@ -400,27 +408,33 @@ class Manifold_carving {
   // change nothing; it opens one as a cavity only if it holds the outer poles of most of its
   // samples, so it is enough to judge the cells of the outer poles still in the solid. (Not
   // looking for the other pockets, the flood counts no outer cell kept.)
+  // `skin` is the skin the flood collected (none: collect it now).
   bool flood_is_the_carving(const std::vector<Cell_handle>& outer_pole_cells,
-                            std::vector<Skin_facet>& skin) {
+                            std::vector<Skin_facet>* skin) {
     for (int s = 0; s < sample_count_; ++s) {
       if (solid_cells_at_[s] == 0 || outside_cells_at_[s] == 0) return false;
     }
     for (Cell_handle cell : outer_pole_cells) {
       if (!is_outside(cell) && judged_outer(cell)) return false;
     }
-    // In collect_skin's order: by cell, then by facet.
-    std::sort(skin.begin(), skin.end(),
-              [](const Skin_facet& a, const Skin_facet& b) { return a.key < b.key; });
     result_.surface.clear();
-    result_.surface.reserve(skin.size());
-    for (const Skin_facet& facet : skin) result_.surface.push_back(facet.sites);
-    std::vector<Skin_facet>().swap(skin);
+    if (skin) {  // in collect_skin's order: by cell, then by facet
+      std::sort(skin->begin(), skin->end(),
+                [](const Skin_facet& a, const Skin_facet& b) { return a.key < b.key; });
+      result_.surface.reserve(skin->size());
+      for (const Skin_facet& facet : *skin) result_.surface.push_back(facet.sites);
+      std::vector<Skin_facet>().swap(*skin);
+    } else {
+      sculpt::collect_skin<Traits>(
+          triangulation_, [&](Cell_handle cell) { return !is_outside(cell); }, result_);
+    }
     const Skin_check check = check_closed_skin<D>(sample_count_, result_.surface);
-    if (check.closed_manifold_through_all) checked_skin_ = check;
     // A piece of k samples, all on its skin, has at least k - D cells: one of more than
     // small_piece + D samples is no piece a group removal refuses to cut off.
-    return check.closed_manifold_through_all &&
-           (check.pieces == 1 || check.smallest_piece > small_piece + D);
+    const bool stands = check.closed_manifold_through_all &&
+                        (check.pieces == 1 || check.smallest_piece > small_piece + D);
+    if (stands) checked_skin_ = check;
+    return stands;
   }
 
   void carve_queue() {
@@ -803,8 +817,7 @@ class Manifold_carving {
   std::vector<std::uint8_t> reached_;       // per cell: reached by a search of cuts_off_small_piece
   std::vector<std::array<int, 2>> link_;
   std::vector<std::pair<int, int>> link_ends_;
-  std::vector<Cell_handle> outer_left_;    // judged outer and in the solid after the first carve
-  std::vector<Cell_handle> hull_outside_;  // the finite cells outside the hull (not all-sample)
+  std::vector<Cell_handle> outer_left_;  // judged outer and in the solid after the first carve
   std::vector<Cell_handle> stack_;
   std::vector<int> group_mark_;  // per cell: the outer group that last reached it
   int group_counter_ = 0;

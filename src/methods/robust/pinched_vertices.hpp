@@ -160,7 +160,9 @@ struct Span {
 
 // Whether `triangles` (all at v) make one fan: each pair of them joined by a chain of triangles
 // sharing an edge at v, that is a vertex other than v. A quick test before the fans are built:
-// most vertices are not pinched. `around` is scratch space.
+// most vertices are not pinched. (The few that are build their fans as before, whose order
+// decides ties between fans: a partition found here would come in another order.) `around` is
+// scratch space.
 inline bool one_fan(const std::vector<Facet<3>>& surface, int v, const std::vector<int>& triangles,
                     std::vector<std::pair<int, int>>& around) {
   // (vertex other than v, triangle's place in `triangles`), sorted: triangles sharing a vertex
