@@ -244,6 +244,16 @@ TEST(Point_reader, LineEndsByteOrderMarksAndLastLinesWithoutNewline) {
   EXPECT_EQ(io::read_points_from_memory(bom + "1 2 3\n", ".xyz").points.size(), 1u);
 }
 
+TEST(Point_reader, CgalPointsWithNormalsAreTheirPoints) {
+  // .pwn, as CGAL's data ships it: "x y z nx ny nz"; the normals are not samples.
+  const auto set =
+      io::read_points(write_file("sphere.pwn", "2.5 0.4 -9.6 0.28 0.04 -0.96\n1 2 3 0 0 1\n"));
+  EXPECT_EQ(set.dimension, 3);
+  EXPECT_EQ(set.points, (std::vector<Point<3>>{{2.5, 0.4, -9.6}, {1, 2, 3}}));
+  EXPECT_THROW(io::read_points_from_memory("1 2\n3 4\n", ".pwn"), io::Error)
+      << "a point with two coordinates is no 3D point";
+}
+
 TEST(Point_reader, PlyAsciiIntegersWrittenAsDecimalsAndFloatRange) {
   const std::string header =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

@@ -195,8 +195,8 @@ int main(int argc, char** argv) {
   Reconstruct_arguments args;
   auto* reconstruct = app.add_subcommand(
       "reconstruct", "Reconstruct a curve (2D points) or surface (3D points) from a point file");
-  auto* input = reconstruct->add_option("input", args.input,
-                                        "Points: .xyz .pts .txt .csv .xy .p2d .ply .off .obj .stl");
+  auto* input = reconstruct->add_option(
+      "input", args.input, "Points: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl");
   auto* example = reconstruct->add_option("--example", args.example,
                                           "Use a built-in example instead (see `sculpt examples`)");
   input->excludes(example);

@@ -22,15 +22,16 @@ Point_set read_format(Byte_input& input, const std::string& extension) {
   } else if (extension == ".xy" || extension == ".p2d") {
     set = read_text_points(input, 2);
   } else {
-    set = read_text_points(input, extension == ".xyz" ? 3 : 0);
+    // .pwn (CGAL's points with normals): "x y z nx ny nz", read as .xyz, normals left out.
+    set = read_text_points(input, extension == ".xyz" || extension == ".pwn" ? 3 : 0);
   }
   if (set.points.empty()) throw Error(input.name() + " holds no points");
   return set;
 }
 
 bool known_extension(const std::string& extension) {
-  for (const char* known :
-       {".off", ".obj", ".ply", ".stl", ".xy", ".p2d", ".xyz", ".pts", ".txt", ".csv", ""}) {
+  for (const char* known : {".off", ".obj", ".ply", ".stl", ".xy", ".p2d", ".xyz", ".pwn", ".pts",
+                            ".txt", ".csv", ""}) {
     if (extension == known) return true;
   }
   return false;
@@ -52,7 +53,7 @@ Point_set read_points(const std::string& path, std::uint64_t limit) {
   const std::string extension = extension_of(path);
   if (!known_extension(extension)) {
     throw Error("unknown point format '" + printable(extension) + "' of '" + printable(path, 1000) +
-                "' (known: .xyz .pts .txt .csv .xy .p2d .ply .off .obj .stl)");
+                "' (known: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl)");
   }
   Byte_input input = Byte_input::open_file(path, limit);
   return read_format(input, extension);

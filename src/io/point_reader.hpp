@@ -1,6 +1,7 @@
 // Reading samples: the vertices of a point or mesh file, whatever its format.
-//   text:   .xyz .pts .txt .xy .p2d .csv  ("x y [z]" per line; `#` comments, a leading word such
-//           as `p` or `v`, a count header, commas and extra columns are tolerated)
+//   text:   .xyz .pwn .pts .txt .xy .p2d .csv  ("x y [z]" per line; `#` comments, a leading word
+//           such as `p` or `v`, a count header, commas and extra columns, as the normals of
+//           CGAL's .pwn, are tolerated)
 //   meshes: .ply (ascii or binary, any scalar type) .off (and COFF, NOFF, STOFF, 4OFF, nOFF)
 //           .obj (a point cloud of `v` lines too) .stl (ascii or binary)
 // The readers are Sculpt's own (src/io/readers), written to survive any bytes: every count is

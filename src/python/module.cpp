@@ -419,8 +419,8 @@ PYBIND11_MODULE(_sculpt, m) {
         return points_array(frontend::load_input(path.string(), "", dimension, merge_duplicates));
       },
       py::arg("path"), py::arg("dimension") = 0, py::arg("merge_duplicates") = false,
-      "The points of a file (.xyz .pts .txt .csv .xy .p2d .ply .off .obj .stl; a mesh gives its "
-      "vertices) as an (n, 2) or (n, 3) float64 array. dimension=2 or 3 forces it (a flat 3D "
+      "The points of a file (.xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl; a mesh gives "
+      "its vertices) as an (n, 2) or (n, 3) float64 array. dimension=2 or 3 forces it (a flat 3D "
       "file becomes 2D points); merge_duplicates drops points that repeat an earlier one.");
   m.def(
       "merge_duplicates",

@@ -7,7 +7,7 @@
 
 namespace sculpt::io {
 
-// "x y [z]" per line (.xyz .pts .txt .csv .xy .p2d); forced_dimension 2 or 3, or 0 for the
+// "x y [z]" per line (.xyz .pwn .pts .txt .csv .xy .p2d); forced_dimension 2 or 3, or 0 for the
 // file's own (the column count of its first point line).
 Point_set read_text_points(Byte_input& input, int forced_dimension);
 Point_set read_ply(Byte_input& input);  // ascii, binary little and big endian
