@@ -70,15 +70,11 @@ class Manifold_carving {
         judge_(judge),
         clock_(clock),
         sample_count_(static_cast<int>(result.sample_count())),
-        outside_(result.delaunay.cell_count, 0),
-        solid_cells_at_(sample_count_, 0),
-        outside_cells_at_(sample_count_, 0) {}
+        outside_(result.delaunay.cell_count, 0) {}
 
   void run() {
     if (result_.options.carve_by_flood) {
-      std::vector<Cell_handle> outside_hull;
-      start_from_hull(&outside_hull);
-      if (flood_stands_for_carving(std::move(outside_hull))) return;
+      if (flood_stands_for_carving(mark_outside_hull())) return;
     } else {
       start_from_hull();
     }
@@ -185,20 +181,48 @@ class Manifold_carving {
 
   // The solid is the hull: every all-sample cell. `outside_cells`, when given, receives the cells
   // outside it (the infinite ones too).
-  void start_from_hull(std::vector<Cell_handle>* outside_cells = nullptr) {
-    if (outside_cells) {
-      Traits::incident_cells(triangulation_, triangulation_.infinite_vertex(), *outside_cells);
-    }
+  void start_from_hull() {
+    solid_cells_at_.assign(sample_count_, 0);
+    outside_cells_at_.assign(sample_count_, 0);
     for (auto cell : Traits::finite_cells(triangulation_)) {
       bool all_samples = true;
       for (int i = 0; i <= D; ++i) all_samples = all_samples && is_sample(cell->vertex(i));
       outside_[cell->info()] = !all_samples;
-      if (!all_samples && outside_cells) outside_cells->push_back(cell);
       for (int i = 0; i <= D; ++i) {
         if (!is_sample(cell->vertex(i))) continue;
         ++(all_samples ? solid_cells_at_ : outside_cells_at_)[cell->vertex(i)->info()];
       }
     }
+  }
+
+  // The flood's start: the cells outside the hull, marked so, and returned: the infinite ones
+  // and those with a box corner among their vertices. Found around the corners, the hull's
+  // vertices, not in a pass over every cell; the flood keeps no count of cells per sample (its
+  // skin check finds a sample left off), so only an undone flood pays for start_from_hull.
+  std::vector<Cell_handle> mark_outside_hull() {
+    std::vector<Cell_handle> outside;
+    Traits::incident_cells(triangulation_, triangulation_.infinite_vertex(), outside);
+    std::vector<Vertex_handle> corners;
+    for (Cell_handle cell : outside) {
+      for (int i = 0; i <= D; ++i) {
+        const Vertex_handle v = cell->vertex(i);
+        // (A sample can lie on the hull too, on a box face of factor 1.)
+        if (!triangulation_.is_infinite(v) && !is_sample(v)) corners.push_back(v);
+      }
+    }
+    std::sort(corners.begin(), corners.end());
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    std::vector<Cell_handle> around;
+    for (Vertex_handle corner : corners) {
+      around.clear();
+      Traits::incident_cells(triangulation_, corner, around);
+      for (Cell_handle cell : around) {
+        if (triangulation_.is_infinite(cell) || outside_[cell->info()]) continue;
+        outside_[cell->info()] = 1;
+        outside.push_back(cell);
+      }
+    }
+    return outside;
   }
 
   int outside_facets(Cell_handle cell, int opposite[]) const {
@@ -328,12 +352,9 @@ class Manifold_carving {
       skin.push_back({static_cast<std::uint32_t>((D + 1) * std::size_t(solid->info()) + i),
                       facet_facing_out<Traits>(solid, i)});
     };
-    bool sample_left_off = false;  // the carving never removes a sample's last solid cell
     const auto flood = [&](Cell_handle cell) {
-      remove(cell, judged_reason(cell));
-      for (int i = 0; i <= D; ++i) {
-        sample_left_off = sample_left_off || solid_cells_at_[cell->vertex(i)->info()] == 0;
-      }
+      outside_[cell->info()] = 1;
+      record_removal(cell, judged_reason(cell));
       stack.push_back(cell);
     };
     for (auto cell : Traits::finite_cells(triangulation_)) {
@@ -356,17 +377,16 @@ class Manifold_carving {
     const double cells = static_cast<double>(result_.delaunay.cell_count);
     std::size_t reported = 0;
     for (Cell_handle start : starts) {
-      if (sample_left_off) break;
       if (is_outside(start) || !judged_outer(start)) continue;
       flood(start);
-      while (!stack.empty() && !sample_left_off) {
+      while (!stack.empty()) {
         if (judge_.judged() >= reported + 262144) {
           reported = judge_.judged();
           report(double(reported) / cells);
         }
         const Cell_handle cell = stack.back();
         stack.pop_back();
-        for (int i = 0; i <= D && !sample_left_off; ++i) {
+        for (int i = 0; i <= D; ++i) {
           const Cell_handle neighbour = cell->neighbor(i);
           if (is_outside(neighbour)) continue;
           if (judged_outer(neighbour)) {
@@ -379,13 +399,13 @@ class Manifold_carving {
     }
     std::vector<Cell_handle>().swap(starts);  // memory peaks in the skin check, below
     for (Cell_handle outside : outside_hull) {
-      for (int i = 0; i <= D && !sample_left_off; ++i) {
+      for (int i = 0; i <= D; ++i) {
         if (!is_outside(outside->neighbor(i))) on_skin(outside->neighbor(i), outside);
       }
     }
     std::vector<Cell_handle>().swap(outside_hull);
     // Every outer pole's cell met in the pass (else the pocket test would miss some: undone).
-    if (!sample_left_off && outer_pole_cells.size() == pole_cells.size() &&
+    if (outer_pole_cells.size() == pole_cells.size() &&
         flood_is_the_carving(outer_pole_cells, keys_fit ? &skin : nullptr)) {
       result_.stats.carved_by_flood = true;
       return true;
@@ -394,14 +414,13 @@ class Manifold_carving {
     removed_ = 0;
     result_.carving.events.clear();
     result_.surface.clear();
-    std::fill(solid_cells_at_.begin(), solid_cells_at_.end(), 0);
-    std::fill(outside_cells_at_.begin(), outside_cells_at_.end(), 0);
     start_from_hull();
     return false;
   }
 
-  // The cheap tests first: a sample on no solid cell or buried, an outer cell left; then the
-  // skin, which is the result's surface if the flood stands.
+  // The cheap test first, an outer cell left; then the skin, which is the result's surface if the
+  // flood stands. (Its check, a closed 2-manifold through every sample, finds a sample the flood
+  // left on no solid cell, or buried: on no skin facet either way.)
   //
   // Every solid cell on the skin was judged inner (the flood judged all it touched), so an outer
   // cell left lies in a pocket enclosed by the solid, judged or not. Pockets the carving keeps
@@ -411,9 +430,6 @@ class Manifold_carving {
   // `skin` is the skin the flood collected (none: collect it now).
   bool flood_is_the_carving(const std::vector<Cell_handle>& outer_pole_cells,
                             std::vector<Skin_facet>* skin) {
-    for (int s = 0; s < sample_count_; ++s) {
-      if (solid_cells_at_[s] == 0 || outside_cells_at_[s] == 0) return false;
-    }
     for (Cell_handle cell : outer_pole_cells) {
       if (!is_outside(cell) && judged_outer(cell)) return false;
     }
@@ -799,8 +815,10 @@ class Manifold_carving {
   std::vector<std::uint8_t> queued_;   // per cell: an entry of it is in the queue
   std::size_t removed_ = 0;            // cells removed (the events, when they are kept)
   double reported_ = 0;                // the carving's progress so far
-  std::vector<int> solid_cells_at_;    // per sample: incident cells still in the solid
-  std::vector<int> outside_cells_at_;  // per sample: incident cells outside
+  // Per sample (counted by start_from_hull, not by a flood): incident cells still in the solid,
+  // and outside.
+  std::vector<int> solid_cells_at_;
+  std::vector<int> outside_cells_at_;
   std::priority_queue<Entry> queue_;
   std::vector<Cell_handle> star_, piece_, large_pieces_;
   std::vector<Vertex_handle> group_vertices_;
