@@ -131,6 +131,10 @@ class Cell_judge {
     return memo;
   }
 
+  // Whether the cell numbered so has been judged, and if so whether outer: no handle needed.
+  bool known(int number) const { return verdicts_[number] != unjudged; }
+  bool known_outer(int number) const { return known(number) && verdicts_[number] != 0; }
+
   // How many cells have been judged so far.
   std::size_t judged() const { return judged_; }
 

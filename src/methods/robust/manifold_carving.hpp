@@ -109,6 +109,11 @@ class Manifold_carving {
 
   // Stage 7: the cells left in the solid.
   void collect_solid() const {
+    if (!result_.options.keep_solid) {  // counted from the flags: no pass over the cells
+      result_.stats.solid_cells = static_cast<std::size_t>(
+          std::count(outside_.begin(), outside_.end(), std::uint8_t{0}));
+      return;
+    }
     sculpt::collect_solid<Traits>(
         triangulation_, [&](Cell_handle cell) { return !is_outside(cell); }, result_);
   }
@@ -322,8 +327,7 @@ class Manifold_carving {
   // The shortcut (see the top): flood the outer cells from the outside, depth first, and keep
   // the result if it is where the carving was going; else undo it.
   bool flood_stands_for_carving(std::vector<Cell_handle> outside_hull) {
-    // The cells of the outer poles, for the pocket test of flood_is_the_carving: found in
-    // this pass, which meets the cells in the order they are numbered.
+    // The cells of the outer poles, by number, for the pocket test of flood_is_the_carving.
     std::vector<int> pole_cells;
     const auto& poles = result_.poles;
     for (int s = 0; s < sample_count_; ++s) {
@@ -334,7 +338,6 @@ class Manifold_carving {
     }
     std::sort(pole_cells.begin(), pole_cells.end());
     pole_cells.erase(std::unique(pole_cells.begin(), pole_cells.end()), pole_cells.end());
-    std::vector<Cell_handle> outer_pole_cells;
     // A cell is removed when it is found, so none is found twice; the stack holds removed cells
     // whose neighbours are still to be looked at.
     std::vector<Cell_handle> stack;
@@ -357,10 +360,6 @@ class Manifold_carving {
       record_removal(cell, judged_reason(cell));
       stack.push_back(cell);
     };
-    for (auto cell : Traits::finite_cells(triangulation_)) {
-      if (outer_pole_cells.size() == pole_cells.size()) break;
-      if (cell->info() == pole_cells[outer_pole_cells.size()]) outer_pole_cells.push_back(cell);
-    }
     // The flood starts at the outer cells on the hull's skin (found from the cells outside the
     // hull, far fewer than the solid's), in the order the cells are numbered, and goes depth
     // first from each. Where it ends does not depend on the order: every outer cell the outside
@@ -404,9 +403,7 @@ class Manifold_carving {
       }
     }
     std::vector<Cell_handle>().swap(outside_hull);
-    // Every outer pole's cell met in the pass (else the pocket test would miss some: undone).
-    if (outer_pole_cells.size() == pole_cells.size() &&
-        flood_is_the_carving(outer_pole_cells, keys_fit ? &skin : nullptr)) {
+    if (flood_is_the_carving(pole_cells, keys_fit ? &skin : nullptr)) {
       result_.stats.carved_by_flood = true;
       return true;
     }
@@ -428,11 +425,27 @@ class Manifold_carving {
   // samples, so it is enough to judge the cells of the outer poles still in the solid. (Not
   // looking for the other pockets, the flood counts no outer cell kept.)
   // `skin` is the skin the flood collected (none: collect it now).
-  bool flood_is_the_carving(const std::vector<Cell_handle>& outer_pole_cells,
-                            std::vector<Skin_facet>* skin) {
-    for (Cell_handle cell : outer_pole_cells) {
-      if (!is_outside(cell) && judged_outer(cell)) return false;
+  // `pole_cells`: the outer poles' cells by number, in increasing order.
+  bool flood_is_the_carving(const std::vector<int>& pole_cells, std::vector<Skin_facet>* skin) {
+    // Most are outside now, or judged already; only the others are looked for, in a pass that
+    // meets the cells in the order they are numbered (none, as a rule, where the flood stands).
+    std::vector<int> unjudged;
+    for (int number : pole_cells) {
+      if (outside_[number]) continue;
+      if (judge_.known(number)) {
+        if (judge_.known_outer(number)) return false;
+      } else {
+        unjudged.push_back(number);
+      }
     }
+    std::size_t met = 0;
+    for (auto cell : Traits::finite_cells(triangulation_)) {
+      if (met == unjudged.size()) break;
+      if (cell->info() != unjudged[met]) continue;
+      ++met;
+      if (judged_outer(cell)) return false;
+    }
+    if (met != unjudged.size()) return false;  // (every cell is met: never)
     result_.surface.clear();
     if (skin) {  // in collect_skin's order: by cell, then by facet
       std::sort(skin->begin(), skin->end(),
