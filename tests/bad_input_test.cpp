@@ -35,6 +35,21 @@ TEST(Bad_input, NotFinite) {
 TEST(Bad_input, Duplicates) {
   EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {0, 1}, {1, 0}}).find("point 3 duplicates point 1"),
             std::string::npos);
+  // Found by the triangulation (the repeat adds no vertex), named as the sorted points name it:
+  // the first repeated point in their order, whatever the method and wherever the repeat lies.
+  const std::vector<Point<3>> repeats = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2},
+                                         {1, 1, 1}, {2, 0, 0}, {0, 0, 0}};
+  for (Method method : {Method::robust, Method::paper, Method::cocone}) {
+    Options options;
+    options.method = method;
+    EXPECT_NE(refusal<3>(repeats, options).find("point 6 duplicates point 0"), std::string::npos)
+        << to_string(method);
+  }
+  try {
+    reconstruct(repeats);
+    ADD_FAILURE() << "accepted";
+  } catch (const Duplicate_points&) {
+  }
 }
 
 TEST(Bad_input, DegenerateSets) {

@@ -66,6 +66,11 @@ Reconstruction<Traits::dimension> reconstruct_with(
   typename Traits::Triangulation triangulation;
   clock.start("delaunay");
   build_delaunay<Traits>(std::move(work), options, triangulation, result, clock);
+  if (triangulation.number_of_vertices() != result.sites.size()) {  // a site repeated
+    refuse_duplicates<Traits::dimension>(samples);
+    throw Input_error(
+        "a corner of the box falls on a sample (rounding): choose a larger box factor");
+  }
   result.stats.delaunay_cells = result.delaunay.cell_count;
 
   clock.start("poles");

@@ -110,8 +110,8 @@ class Manifold_carving {
   // Stage 7: the cells left in the solid.
   void collect_solid() const {
     if (!result_.options.keep_solid) {  // counted from the flags: no pass over the cells
-      result_.stats.solid_cells = static_cast<std::size_t>(
-          std::count(outside_.begin(), outside_.end(), std::uint8_t{0}));
+      result_.stats.solid_cells =
+          static_cast<std::size_t>(std::count(outside_.begin(), outside_.end(), std::uint8_t{0}));
       return;
     }
     sculpt::collect_solid<Traits>(
@@ -825,9 +825,9 @@ class Manifold_carving {
   const Stage_clock& clock_;
   int sample_count_;
   std::vector<std::uint8_t> outside_;
-  std::vector<std::uint8_t> queued_;   // per cell: an entry of it is in the queue
-  std::size_t removed_ = 0;            // cells removed (the events, when they are kept)
-  double reported_ = 0;                // the carving's progress so far
+  std::vector<std::uint8_t> queued_;  // per cell: an entry of it is in the queue
+  std::size_t removed_ = 0;           // cells removed (the events, when they are kept)
+  double reported_ = 0;               // the carving's progress so far
   // Per sample (counted by start_from_hull, not by a flood): incident cells still in the solid,
   // and outside.
   std::vector<int> solid_cells_at_;
