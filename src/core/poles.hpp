@@ -16,6 +16,7 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "prefetch.hpp"
 #include "stage_clock.hpp"
 
 namespace sculpt {
@@ -56,8 +57,21 @@ void find_poles(const typename Traits::Triangulation& triangulation,
   std::vector<Pole_cell> plus(n);
   const double cells = 2.0 * static_cast<double>(result.delaunay.cell_count);
   std::size_t done = 0;
-  for (auto cell : Traits::finite_cells(triangulation)) {
+  // The samples' entries lie anywhere in memory (in the input's order): those of the next cell
+  // are asked for while this cell's circumcentre is computed.
+  const auto prefetch_next = [&](auto at, auto end, const auto&... per_sample) {
+    if (++at == end) return;
+    const Cell_handle next = *at;
+    for (int i = 0; i <= D; ++i) {
+      const int s = next->vertex(i)->info();
+      if (s < n) (prefetch(&per_sample[s]), ...);
+    }
+  };
+  const auto finite = Traits::finite_cells(triangulation);
+  for (auto it = finite.begin(); it != finite.end(); ++it) {
+    const auto cell = *it;
     if (++done % 262144 == 0) clock.report(double(done) / cells);
+    prefetch_next(it, finite.end(), plus_radius2);
     const Cgal_point center = Traits::circumcenter(triangulation, cell);
     const double r2 = squared_radius(cell, center);
     for (int i = 0; i <= D; ++i) {
@@ -74,8 +88,10 @@ void find_poles(const typename Traits::Triangulation& triangulation,
   std::vector<double> minus_radius2(n, -1.0);
   std::vector<Cgal_point> minus_center(n);
   std::vector<Pole_cell> minus(n);
-  for (auto cell : Traits::finite_cells(triangulation)) {
+  for (auto it = finite.begin(); it != finite.end(); ++it) {
+    const auto cell = *it;
     if (++done % 262144 == 0) clock.report(double(done) / cells);
+    prefetch_next(it, finite.end(), minus_radius2, plus_center);
     const Cgal_point center = Traits::circumcenter(triangulation, cell);
     const double r2 = squared_radius(cell, center);
     for (int i = 0; i <= D; ++i) {

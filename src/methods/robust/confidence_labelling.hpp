@@ -28,6 +28,7 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/prefetch.hpp"
 #include "../../core/seeds.hpp"
 #include "../../core/stage_clock.hpp"
 
@@ -83,6 +84,11 @@ Pole_evidence pole_evidence(const Reconstruction<D>& result) {
   }
   const auto for_each_evidence = [&](auto&& use) {
     for (int p = 0; p < pole_count; ++p) {
+      if (p + 1 < pole_count) {  // the next pole's records, while this one's are read
+        for (int s : stage.poles[p + 1].sites) {
+          if (s < n) prefetch(&around[s]);
+        }
+      }
       const Point<D>& p_center = stage.poles[p].center;
       for (int s : stage.poles[p].sites) {
         if (s >= n) continue;  // a box corner
@@ -219,6 +225,12 @@ class Confidence_labelling {
                                   against.weight, long(stage_.events.size())});
     }
 
+    // The neighbours' labels and offers lie anywhere in memory: asked for together first.
+    for (int i = evidence_.offsets[pole]; i < evidence_.offsets[pole + 1]; ++i) {
+      const int other = evidence_.links[i].pole();
+      prefetch(&stage_.labels[other]);
+      prefetch(&offers_[other]);
+    }
     for (int i = evidence_.offsets[pole]; i < evidence_.offsets[pole + 1]; ++i) {
       const auto& link = evidence_.links[i];
       const int other = link.pole();

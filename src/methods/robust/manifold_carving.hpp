@@ -46,6 +46,7 @@
 #include "../../core/cells_around_edge.hpp"
 #include "../../core/circumball_query.hpp"
 #include "../../core/closed_skin_check.hpp"
+#include "../../core/prefetch.hpp"
 #include "../../core/solid_and_skin.hpp"
 #include "../../core/stage_clock.hpp"
 #include "cell_classification.hpp"
@@ -385,6 +386,8 @@ class Manifold_carving {
         }
         const Cell_handle cell = stack.back();
         stack.pop_back();
+        // The neighbours lie anywhere in memory: fetching them together, not one at a time.
+        for (int i = 0; i <= D; ++i) prefetch(&*cell->neighbor(i));
         for (int i = 0; i <= D; ++i) {
           const Cell_handle neighbour = cell->neighbor(i);
           if (is_outside(neighbour)) continue;
