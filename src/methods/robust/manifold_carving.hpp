@@ -185,8 +185,8 @@ class Manifold_carving {
     clock_.report(reported_);
   }
 
-  // The solid is the hull: every all-sample cell. `outside_cells`, when given, receives the cells
-  // outside it (the infinite ones too).
+  // The solid is the hull: every all-sample cell; each sample's cells in it and outside counted
+  // (the carving cell by cell reads the counts).
   void start_from_hull() {
     solid_cells_at_.assign(sample_count_, 0);
     outside_cells_at_.assign(sample_count_, 0);
@@ -212,7 +212,7 @@ class Manifold_carving {
     for (Cell_handle cell : outside) {
       for (int i = 0; i <= D; ++i) {
         const Vertex_handle v = cell->vertex(i);
-        // (A sample can lie on the hull too, on a box face of factor 1.)
+        // (A sample rounded onto a face of the box lies on the hull too.)
         if (!triangulation_.is_infinite(v) && !is_sample(v)) corners.push_back(v);
       }
     }
@@ -448,7 +448,6 @@ class Manifold_carving {
       ++met;
       if (judged_outer(cell)) return false;
     }
-    if (met != unjudged.size()) return false;  // (every cell is met: never)
     result_.surface.clear();
     if (skin) {  // in collect_skin's order: by cell, then by facet
       std::sort(skin->begin(), skin->end(),
