@@ -1,12 +1,21 @@
 // The methods CGAL computes for us, beside ours on the same stages: the Advancing Front keeps
 // its promise (a closed manifold on smooth dense samples, never a non-manifold edge), and the
-// alpha shape takes the smallest alpha that makes one solid holding every sample.
+// alpha shape takes the smallest alpha that makes one solid holding every sample (the alpha
+// CGAL's own search finds); the command line skips the shared stages neither reads.
+#include <CGAL/Alpha_shape_3.h>
+#include <CGAL/Alpha_shape_cell_base_3.h>
+#include <CGAL/Alpha_shape_vertex_base_3.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <map>
+#include <random>
 #include <set>
 
+#include "methods/cgal/optimal_alpha.hpp"
 #include "scene/scene.hpp"
 #include "scene_support.hpp"
 #include "shapes/shapes.hpp"
@@ -85,6 +94,68 @@ TEST(CgalMethods, TheAlphaShapeTakesTheRadiusItIsGiven) {
   EXPECT_NEAR(hull.stats.alpha, 1e3, 1e-9);
   options.alpha = -1;
   EXPECT_THROW(reconstruct(samples, options), Input_error);
+}
+
+// One sweep finds the alpha CGAL's binary search finds, for one piece and for more, on shapes
+// and on a random cloud (where the count of pieces goes up and down as alpha grows).
+TEST(CgalMethods, TheOptimalAlphaIsTheOneCgalsSearchFinds) {
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Cell_base = CGAL::Alpha_shape_cell_base_3<
+      Kernel, CGAL::Triangulation_cell_base_with_info_3<
+                  int, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>>;
+  using Tds =
+      CGAL::Triangulation_data_structure_3<CGAL::Alpha_shape_vertex_base_3<Kernel>, Cell_base>;
+  using Alpha_shape = CGAL::Alpha_shape_3<CGAL::Delaunay_triangulation_3<Kernel, Tds>>;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Point<3>> cloud(3000);
+  for (auto& p : cloud) p = {unit(random), unit(random), unit(random)};
+  for (const auto& [name, points] : std::vector<std::pair<const char*, std::vector<Point<3>>>>{
+           {"torso", shapes::torso(3000)}, {"torus", shapes::torus(2000)}, {"cloud", cloud}}) {
+    std::vector<Kernel::Point_3> cgal_points;
+    for (const auto& p : points) cgal_points.emplace_back(p[0], p[1], p[2]);
+    Alpha_shape shape(cgal_points.begin(), cgal_points.end(), 0, Alpha_shape::REGULARIZED);
+    for (std::size_t pieces : {1u, 2u, 5u}) {
+      SCOPED_TRACE(std::string(name) + ", pieces " + std::to_string(pieces));
+      const auto cgal = shape.find_optimal_alpha(pieces);
+      const auto ours = optimal_alpha_index(shape, pieces);
+      ASSERT_EQ(ours.has_value(), cgal != shape.alpha_end());
+      if (ours) {
+        EXPECT_EQ(*ours, static_cast<std::size_t>(cgal - shape.alpha_begin()));
+      }
+    }
+  }
+}
+
+// Neither the Advancing Front nor the alpha shape reads DT(S ∪ BBV) or the poles: a run that
+// keeps no triangulation (the command line) builds neither and gets the same surface, and still
+// refuses a repeated point (which the skipped triangulation would have found).
+TEST(CgalMethods, TheCommandLineSkipsTheSharedStagesTheyDoNotRead) {
+  const auto samples = shapes::sphere(1500);
+  const auto as_set = [](std::vector<Facet<3>> facets) {
+    for (auto& f : facets) std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    std::sort(facets.begin(), facets.end());
+    return facets;
+  };
+  for (Method method : {Method::advancing_front, Method::alpha_shape}) {
+    SCOPED_TRACE(to_string(method));
+    Options options = testing::with_method(method);
+    const auto viewer = reconstruct(samples, options);
+    EXPECT_GT(viewer.stats.delaunay_cells, 0u);
+    EXPECT_GT(viewer.stats.poles, 0u);
+    options.keep_triangulations = false;
+    const auto command_line = reconstruct(samples, options);
+    EXPECT_EQ(command_line.stats.delaunay_cells, 0u);
+    for (const auto& stage : command_line.stats.stages) {
+      EXPECT_NE(stage.name, "delaunay");
+      EXPECT_NE(stage.name, "poles");
+    }
+    EXPECT_EQ(command_line.sample_count(), samples.size());
+    EXPECT_EQ(as_set(command_line.surface), as_set(viewer.surface));
+    auto repeated = samples;
+    repeated.push_back(samples[17]);
+    EXPECT_THROW(reconstruct(repeated, options), Duplicate_points);
+  }
 }
 
 TEST(CgalMethods, BothReconstructSurfacesOnly) {

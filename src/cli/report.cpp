@@ -35,7 +35,9 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
           "{}x 2^{}",
           t[0] || t[1] || t[2] ? fmt::format("(p - ({:g}, {:g}, {:g})) ", t[0], t[1], t[2]) : "p ",
           stats.scale_exponent));
-  row("poles", stats.poles);
+  // Stages 1-2 are skipped by the methods through CGAL, which read neither (stage_plan.hpp).
+  const bool shared_stages = stats.delaunay_cells > 0;
+  if (shared_stages) row("poles", stats.poles);
   if (sculpts(stats.method)) {  // the crusts label no pole and build no solid
     row("convex poles", stats.convex_poles);
     row("inner / outer poles", fmt::format("{} / {}", stats.inner_poles, stats.outer_poles));
@@ -43,7 +45,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     row(paper ? "conflicts (poles / offers)" : "contradicted poles (poles / offers)",
         fmt::format("{} / {}", stats.conflicts, stats.conflict_offers));
   }
-  row("cells of DT(S+BBV)", stats.delaunay_cells);
+  if (shared_stages) row("cells of DT(S+BBV)", stats.delaunay_cells);
   if (inserted) {
     row(stats.kind == Surface_kind::closed ? "inserted poles (m - 2^D)"
                                            : "inserted poles (l - 2^D)",

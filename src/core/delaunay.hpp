@@ -79,13 +79,20 @@ void insert_in_spatial_order(typename Traits::Triangulation& triangulation,
   }
 }
 
+// The sites S ∪ BBV: the samples, then the box's corners.
+template <int D>
+void gather_sites(std::vector<Point<D>> samples, const Options& options,
+                  Reconstruction<D>& result) {
+  const auto corners = box_corners<D>(samples, options.box_factor);
+  result.sites = std::move(samples);
+  result.sites.insert(result.sites.end(), corners.begin(), corners.end());
+}
+
 template <class Traits>
 void build_delaunay(std::vector<Point<Traits::dimension>> samples, const Options& options,
                     typename Traits::Triangulation& triangulation,
                     Reconstruction<Traits::dimension>& result, const Stage_clock& clock) {
-  const auto corners = box_corners<Traits::dimension>(samples, options.box_factor);
-  result.sites = std::move(samples);
-  result.sites.insert(result.sites.end(), corners.begin(), corners.end());
+  gather_sites<Traits::dimension>(std::move(samples), options, result);
   insert_in_spatial_order<Traits>(triangulation, result.sites, 0, clock);
   number_cells<Traits>(triangulation, options.keep_triangulations, result.delaunay);
 }

@@ -64,18 +64,23 @@ Reconstruction<Traits::dimension> reconstruct_with(
   for (int k = 0; k < Traits::dimension; ++k) result.stats.translation[k] = normalisation.offset[k];
 
   typename Traits::Triangulation triangulation;
-  clock.start("delaunay");
-  build_delaunay<Traits>(std::move(work), options, triangulation, result, clock);
-  if (triangulation.number_of_vertices() != result.sites.size()) {  // a site repeated
-    refuse_duplicates<Traits::dimension>(samples);
-    throw Input_error(
-        "a corner of the box falls on a sample (rounding): choose a larger box factor");
-  }
-  result.stats.delaunay_cells = result.delaunay.cell_count;
+  if (builds_shared_stages(options)) {
+    clock.start("delaunay");
+    build_delaunay<Traits>(std::move(work), options, triangulation, result, clock);
+    if (triangulation.number_of_vertices() != result.sites.size()) {  // a site repeated
+      refuse_duplicates<Traits::dimension>(samples);
+      throw Input_error(
+          "a corner of the box falls on a sample (rounding): choose a larger box factor");
+    }
+    result.stats.delaunay_cells = result.delaunay.cell_count;
 
-  clock.start("poles");
-  find_poles<Traits>(triangulation, result, clock);
-  result.stats.poles = result.poles.poles.size();
+    clock.start("poles");
+    find_poles<Traits>(triangulation, result, clock);
+    result.stats.poles = result.poles.poles.size();
+  } else {
+    refuse_duplicates<Traits::dimension>(samples);  // no triangulation of ours finds them
+    gather_sites<Traits::dimension>(std::move(work), options, result);
+  }
 
   // A method whose surface passed check_closed_skin hands the check on, not to make it twice.
   std::optional<Skin_check> checked_skin;

@@ -2,8 +2,14 @@
 // the others: it grows a surface from a seed triangle of its own Delaunay triangulation,
 // adding at each border edge the candidate triangle of smallest radius that keeps the surface an
 // oriented 2-manifold, so it never makes a non-manifold edge but may leave holes. It builds its
-// triangulation itself (CGAL gives no way to hand it ours); stages 1 and 2 are still computed,
-// so that the viewer shows the same Delaunay triangulation for every method.
+// triangulation itself (CGAL gives no way to hand it ours); stages 1 and 2 are computed only
+// where triangulations are kept, so that the viewer shows the same Delaunay triangulation for
+// every method (stage_plan.hpp).
+//
+// CGAL's Advancing Front breaks some ties by memory address: on noisy input its surface can
+// change by a few triangles with the process's memory layout (measured on a noisy cap: 3 or 4
+// samples left off under different malloc settings, the same build), so the viewer's surface
+// and the command line's may differ there. Each is repeatable run to run.
 #pragma once
 
 #include <sculpt/sculpt.hpp>

@@ -3,21 +3,26 @@
 // serves the whole shape, so where the sampling is coarser than alpha the solid has holes, and
 // where alpha is larger than a thin part or a cavity, it fills them. Unless the user gives alpha,
 // we take the smallest whose solid is one piece holding every sample (CGAL's
-// find_optimal_alpha(1)), in REGULARIZED mode (no dangling faces).
+// find_optimal_alpha(1), computed as optimal_alpha.hpp does), in REGULARIZED mode (no dangling
+// faces). CGAL's alpha shape needs a triangulation of its own kind, of the samples alone; the
+// shared stages 1-2 are built only where the viewer keeps them (stage_plan.hpp).
 #pragma once
 
 #include <CGAL/Alpha_shape_3.h>
 #include <CGAL/Alpha_shape_cell_base_3.h>
 #include <CGAL/Alpha_shape_vertex_base_3.h>
 #include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <cmath>
+#include <cstddef>
 #include <sculpt/sculpt.hpp>
 #include <utility>
 #include <vector>
 
 #include "../../core/stage_clock.hpp"
+#include "optimal_alpha.hpp"
 #include "outward_orientation.hpp"
 
 namespace sculpt {
@@ -27,7 +32,10 @@ void run_alpha_shape_method(Reconstruction<3>& result, Stage_clock& clock) {
   using Kernel = typename Traits::Kernel;
   using Info_base = CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>;
   using Vertex_base = CGAL::Alpha_shape_vertex_base_3<Kernel, Info_base>;
-  using Cell_base = CGAL::Alpha_shape_cell_base_3<Kernel>;
+  // Numbered cells, for the search of the optimal alpha.
+  using Cell_base = CGAL::Alpha_shape_cell_base_3<
+      Kernel, CGAL::Triangulation_cell_base_with_info_3<
+                  int, Kernel, CGAL::Delaunay_triangulation_cell_base_3<Kernel>>>;
   using Tds = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
   using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
   using Alpha_shape = CGAL::Alpha_shape_3<Delaunay>;
@@ -45,12 +53,12 @@ void run_alpha_shape_method(Reconstruction<3>& result, Stage_clock& clock) {
     const double radius = std::ldexp(result.options.alpha, scale);
     shape.set_alpha(radius * radius);
   } else {
-    const auto optimal = shape.find_optimal_alpha(1);
-    if (optimal == shape.alpha_end()) {
+    const auto optimal = optimal_alpha_index(shape, 1);
+    if (!optimal) {
       clock.start("surface");  // as planned, and empty: no alpha gives one piece
       return;
     }
-    shape.set_alpha(*optimal);
+    shape.set_alpha(*(shape.alpha_begin() + static_cast<std::ptrdiff_t>(*optimal)));
   }
   result.stats.alpha = std::ldexp(std::sqrt(CGAL::to_double(shape.get_alpha())), -scale);
 

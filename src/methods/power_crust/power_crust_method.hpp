@@ -170,17 +170,27 @@ void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& verti
     }
     return vertex;
   };
-  // The faces in the order of their poles, so that a run's output does not depend on which cell
-  // CGAL's edge iterator reports an edge from (the lower address).
+  // The faces in the order of their poles; each is drawn the same from any cell around its edge.
+  // The separating edges are read off the finite cells, one copy from each cell around, then
+  // sorted and made unique: CGAL's edge iterator, which reports each edge once, walks around
+  // every edge of every cell to decide whether this cell reports it (bunny00: 0.2 s of 1.7).
   std::vector<std::pair<std::pair<int, int>, typename Regular::Edge>> separating;
-  for (auto edge = regular.finite_edges_begin(); edge != regular.finite_edges_end(); ++edge) {
-    const int a = edge->first->vertex(edge->second)->info();
-    const int b = edge->first->vertex(edge->third)->info();
-    bool inner_first = false;
-    if (separates(labels, a, b, inner_first)) separating.push_back({std::minmax(a, b), *edge});
+  for (auto cell : regular.finite_cell_handles()) {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i + 1; j < 4; ++j) {
+        const int a = cell->vertex(i)->info(), b = cell->vertex(j)->info();
+        bool inner_first = false;
+        if (separates(labels, a, b, inner_first)) {
+          separating.push_back({std::minmax(a, b), typename Regular::Edge(cell, i, j)});
+        }
+      }
+    }
   }
   std::sort(separating.begin(), separating.end(),
             [](const auto& x, const auto& y) { return x.first < y.first; });
+  separating.erase(std::unique(separating.begin(), separating.end(),
+                               [](const auto& x, const auto& y) { return x.first == y.first; }),
+                   separating.end());
   std::vector<typename Regular::Cell_handle> around;
   std::vector<int> ring;
   for (const auto& [poles_of_edge, edge] : separating) {
