@@ -4,10 +4,12 @@
 // the extraction's two steps are checked on small hand-made cases where the answer is known.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 
 #include "frontend/pseudo_code.hpp"
 #include "methods/cocone/cocone_method.hpp"
+#include "methods/extraction/edge_map.hpp"
 #include "methods/extraction/manifold_extraction.hpp"
 #include "scene/scene.hpp"
 #include "scene_support.hpp"
@@ -24,6 +26,37 @@ const std::vector<Point<3>> octahedron_vertices = {{1, 0, 0},  {-1, 0, 0}, {0, 1
                                                    {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
 const std::vector<Facet<3>> octahedron_faces = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
                                                 {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+
+// The edge map answers, for every edge of a set of triangles, which triangles have it (in
+// increasing order, either way round), and nothing for an edge no triangle has; checked against
+// a count made the slow way on a fan of many triangles about one edge and the octahedron.
+TEST(ManifoldExtraction, TheEdgeMapKnowsTheTrianglesOfEveryEdge) {
+  std::vector<Facet<3>> triangles = octahedron_faces;
+  for (int k = 0; k < 40; ++k) triangles.push_back({100, 101, 200 + k});  // 40 on one edge
+  const extraction_detail::Edge_map edges(triangles);
+  std::map<std::pair<int, int>, std::vector<int>> expected;
+  for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
+    for (int j = 0; j < 3; ++j) {
+      const int a = triangles[t][j], b = triangles[t][(j + 1) % 3];
+      expected[{std::min(a, b), std::max(a, b)}].push_back(t);
+    }
+  }
+  EXPECT_EQ(edges.edge_count(), expected.size());
+  std::set<int> numbers;
+  for (const auto& [edge, on] : expected) {
+    const auto [a, b] = edge;
+    const auto found = edges.on(b, a);
+    EXPECT_EQ(std::vector<int>(found.begin(), found.end()), on);
+    EXPECT_EQ(edges.index(a, b), edges.index(b, a));
+    numbers.insert(edges.index(a, b));
+  }
+  EXPECT_EQ(numbers.size(), expected.size());  // one number per edge, 0 .. count - 1
+  EXPECT_EQ(*numbers.begin(), 0);
+  EXPECT_EQ(*numbers.rbegin(), static_cast<int>(expected.size()) - 1);
+  EXPECT_EQ(edges.on(0, 1).size(), 0u);  // opposite vertices of the octahedron
+  EXPECT_EQ(edges.index(0, 1), -1);
+  EXPECT_EQ(edges.on(100, 101).size(), 40u);
+}
 
 TEST(ManifoldExtraction, TheWalkKeepsTheOuterBoundaryAndLeavesTheInside) {
   // The octahedron's faces and, inside it, the square through its equator's four vertices

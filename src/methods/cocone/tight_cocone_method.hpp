@@ -18,10 +18,10 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
+#include <cstdint>
 #include <deque>
-#include <map>
 #include <sculpt/sculpt.hpp>
-#include <set>
 #include <vector>
 
 #include "../../core/solid_and_skin.hpp"
@@ -33,32 +33,54 @@ namespace sculpt {
 namespace tight_cocone_detail {
 
 // Whether the triangles of `surface` around each sample make one closed fan: its link (the
-// edges opposite it) is a single cycle.
+// edges opposite it) is a single cycle, every link vertex on two link edges.
 inline std::vector<bool> have_umbrellas(int samples, const std::vector<Facet<3>>& surface) {
-  std::vector<std::vector<std::array<int, 2>>> link(samples);
+  // Each sample's link edges, both ways round, in one array by sample.
+  std::vector<int> first(samples + 1, 0);
   for (const auto& t : surface) {
-    for (int j = 0; j < 3; ++j) link[t[j]].push_back({t[(j + 1) % 3], t[(j + 2) % 3]});
+    for (int v : t) first[v + 1] += 2;
+  }
+  for (int s = 0; s < samples; ++s) first[s + 1] += first[s];
+  std::vector<std::pair<int, int>> ends(first.back());
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (const auto& t : surface) {
+      for (int j = 0; j < 3; ++j) {
+        const int a = t[(j + 1) % 3], b = t[(j + 2) % 3];
+        ends[fill[t[j]]++] = {a, b};
+        ends[fill[t[j]]++] = {b, a};
+      }
+    }
   }
   std::vector<bool> umbrella(samples, false);
   for (int s = 0; s < samples; ++s) {
-    const auto& edges = link[s];
-    if (edges.size() < 3) continue;
-    std::map<int, std::vector<int>> around;
-    for (const auto& [a, b] : edges) around[a].push_back(b), around[b].push_back(a);
-    bool cycle = std::all_of(around.begin(), around.end(),
-                             [](const auto& entry) { return entry.second.size() == 2; });
+    const auto begin = ends.begin() + first[s], end = ends.begin() + first[s + 1];
+    const std::size_t size = static_cast<std::size_t>(end - begin);
+    if (size < 2 * 3) continue;  // fewer than three link edges
+    std::sort(begin, end);
+    // Every link vertex has exactly two ends: its two neighbours in the cycle.
+    bool cycle = true;
+    for (std::size_t i = 0; i < size && cycle; i += 2) {
+      cycle = begin[i].first == begin[i + 1].first &&
+              (i + 2 == size || begin[i + 2].first != begin[i].first);
+    }
     if (!cycle) continue;
     // Walk the cycle from one vertex: it must come back having seen every vertex of the link.
-    int previous = around.begin()->first, current = around.begin()->second[0];
+    const auto next = [&](int at, int from) {
+      const auto it = std::lower_bound(begin, end, std::make_pair(at, INT_MIN));
+      return it->second == from ? (it + 1)->second : it->second;
+    };
+    const int start = begin->first;
+    const std::size_t vertices = size / 2;
+    int previous = start, current = begin->second;
     std::size_t steps = 1;
-    while (current != around.begin()->first && steps <= around.size()) {
-      const auto& next = around[current];
-      const int following = next[0] == previous ? next[1] : next[0];
+    while (current != start && steps <= vertices) {
+      const int following = next(current, previous);
       previous = current;
       current = following;
       ++steps;
     }
-    umbrella[s] = current == around.begin()->first && steps == around.size();
+    umbrella[s] = current == start && steps == vertices;
   }
   return umbrella;
 }
@@ -72,11 +94,6 @@ inline double squared_circumradius(const Point<3>& a, const Point<3>& b, const P
   return area2 > 0 ? dot(u, u) * dot(v, v) * dot(w, w) / (4 * area2) : INFINITY;
 }
 
-inline std::array<int, 3> sorted(std::array<int, 3> t) {
-  std::sort(t.begin(), t.end());
-  return t;
-}
-
 }  // namespace tight_cocone_detail
 
 template <class Traits>
@@ -88,18 +105,26 @@ void run_tight_cocone_method(const typename Traits::Triangulation& triangulation
   clock.start("peeling");
   const int n = static_cast<int>(result.sample_count());
   std::vector<bool> good = have_umbrellas(n, result.surface);
-  std::set<std::array<int, 3>> initial;
-  for (const auto& t : result.surface) initial.insert(sorted(t));
-  const auto facet_of = [&](auto cell, int i) {
-    std::array<int, 3> f;
-    for (int j = 0; j < 3; ++j) f[j] = cell->vertex(Traits::facet_vertex[i][j])->info();
-    return sorted(f);
-  };
   const auto is_good = [&](int site) { return site < n && good[site]; };
 
   std::vector<typename Traits::Triangulation::Vertex_handle> sample_vertex(n);
   for (auto vertex : triangulation.finite_vertex_handles()) {
     if (vertex->info() < n) sample_vertex[vertex->info()] = vertex;
+  }
+  // The co-cone's triangles, as the facets of the cells on both sides: bit i of a cell's entry
+  // for its facet i (every triangle of the co-cone is a Delaunay facet).
+  std::vector<std::uint8_t> in_initial(result.delaunay.cell_count, 0);
+  for (const auto& t : result.surface) {
+    typename Traits::Cell_handle cell;
+    int i = 0, j = 0, k = 0;
+    if (!triangulation.is_facet(sample_vertex[t[0]], sample_vertex[t[1]], sample_vertex[t[2]], cell,
+                                i, j, k)) {
+      continue;
+    }
+    const int facet = 6 - i - j - k;
+    const auto mirror = cell->neighbor(facet);
+    if (!triangulation.is_infinite(cell)) in_initial[cell->info()] |= 1u << facet;
+    if (!triangulation.is_infinite(mirror)) in_initial[mirror->info()] |= 1u << mirror->index(cell);
   }
   std::vector<char> outside;
   const auto peel = [&] {
@@ -142,7 +167,7 @@ void run_tight_cocone_method(const typename Traits::Triangulation& triangulation
           if (i == own) continue;  // the facet without the sample leaves its star
           const auto next = cell->neighbor(i);
           if (triangulation.is_infinite(next) || walked_about[next->info()] == sample) continue;
-          if (initial.count(facet_of(cell, i))) continue;  // its umbrella
+          if (in_initial[cell->info()] & (1u << i)) continue;  // its umbrella
           walked_about[next->info()] = sample;
           if (!outside[next->info()]) peel_cell(next);
           around.push_back(next);

@@ -27,44 +27,16 @@
 #include <deque>
 #include <memory>
 #include <sculpt/sculpt.hpp>
-#include <unordered_map>
-#include <unordered_set>
 #include <vector>
 
 #include "../../core/stage_clock.hpp"
+#include "edge_map.hpp"
 #include "ray_crossings.hpp"
 #include "vector3.hpp"
 
 namespace sculpt {
 
 namespace extraction_detail {
-
-inline std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
-// The triangles on every edge, by index into a list of triangles.
-class Edge_map {
- public:
-  explicit Edge_map(const std::vector<Facet<3>>& triangles) {
-    triangles_on_.reserve(triangles.size() * 2);
-    for (int t = 0; t < static_cast<int>(triangles.size()); ++t) {
-      for (int j = 0; j < 3; ++j) {
-        triangles_on_[edge_key(triangles[t][j], triangles[t][(j + 1) % 3])].push_back(t);
-      }
-    }
-  }
-  const std::vector<int>& on(int a, int b) const {
-    static const std::vector<int> none;
-    const auto found = triangles_on_.find(edge_key(a, b));
-    return found == triangles_on_.end() ? none : found->second;
-  }
-
- private:
-  std::unordered_map<std::uint64_t, std::vector<int>> triangles_on_;
-};
 
 // The angle, in [0, 2π), at which the half-plane of a triangle with edge (a, b) and third
 // vertex `apex` stands about that edge, measured from `start` (a unit vector perpendicular to the
@@ -127,20 +99,23 @@ inline std::vector<Facet<3>> prune_sharp_edges(const std::vector<Point<3>>& poin
   std::vector<char> removed(triangles.size(), 0);
   std::vector<Facet<3>> pruned;
 
-  const auto triangles_left_on = [&](int a, int b) {
-    std::vector<int> around;
+  // (Into buffers reused from one question to the next: the pruning asks millions.)
+  std::vector<int> around;
+  std::vector<double> angles;
+  const auto triangles_left_on = [&](int a, int b) -> const std::vector<int>& {
+    around.clear();
     for (int t : edges.on(a, b)) {
       if (!removed[t]) around.push_back(t);
     }
     return around;
   };
   // Whether the triangles on edge (a, b) all lie within a wedge narrower than 90 degrees.
-  const auto sharp_fold = [&](int a, int b, const std::vector<int>& around) {
-    if (around.size() < 2) return false;
-    const Edge_frame frame = frame_of(points, a, b, third_vertex(triangles[around[0]], a, b));
+  const auto sharp_fold = [&](int a, int b, const std::vector<int>& on_edge) {
+    if (on_edge.size() < 2) return false;
+    const Edge_frame frame = frame_of(points, a, b, third_vertex(triangles[on_edge[0]], a, b));
     if (frame.degenerate) return false;
-    std::vector<double> angles;
-    for (int t : around) {
+    angles.clear();
+    for (int t : on_edge) {
       angles.push_back(angle_about_edge(points, a, frame.axis, frame.start, frame.normal,
                                         third_vertex(triangles[t], a, b)));
     }
@@ -159,10 +134,10 @@ inline std::vector<Facet<3>> prune_sharp_edges(const std::vector<Point<3>>& poin
     bool free_edge = false, held_by_sheet = false;
     for (int j = 0; j < 3; ++j) {
       const int a = triangle[j], b = triangle[(j + 1) % 3];
-      const auto around = triangles_left_on(a, b);
-      if (sharp_fold(a, b, around)) return true;
-      free_edge = free_edge || around.size() == 1;
-      held_by_sheet = held_by_sheet || around.size() == 2;
+      const auto& left = triangles_left_on(a, b);
+      if (sharp_fold(a, b, left)) return true;
+      free_edge = free_edge || left.size() == 1;
+      held_by_sheet = held_by_sheet || left.size() == 2;
     }
     return free_edge && (rims == Rims::pruned || !held_by_sheet);
   };
@@ -226,13 +201,16 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
   std::vector<char> on_surface(points.size(), 0);
   std::vector<Facet<3>> surface;
 
-  // The directed edges of the triangles taken. An edge used once in each direction has its two
-  // triangles: no third can join it without using one direction twice.
-  std::unordered_set<std::uint64_t> used;
-  const auto directed = [](int from, int to) { return edge_key(from, to) * 2 + (from < to); };
+  // The directed edges of the triangles taken, a bit per direction of each edge (every triangle
+  // taken or tried is one of `triangles`, so its edges are numbered). An edge used once in each
+  // direction has its two triangles: no third can join it without using one direction twice.
+  std::vector<std::uint8_t> used(edges.edge_count(), 0);
+  const auto direction = [](int from, int to) { return from < to ? 1 : 2; };
   const auto take = [&](const Facet<3>& t) {
     surface.push_back(t);
-    for (int k = 0; k < 3; ++k) used.insert(directed(t[k], t[(k + 1) % 3]));
+    for (int k = 0; k < 3; ++k) {
+      used[edges.index(t[k], t[(k + 1) % 3])] |= direction(t[k], t[(k + 1) % 3]);
+    }
   };
 
   // The pieces walked so far, with their bounding boxes: a piece can hold a sample inside only
@@ -269,7 +247,7 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
   // slip through it to triangles inside and come back to the outer ones from behind.
   const auto fits = [&](const Facet<3>& t) {
     for (int k = 0; k < 3; ++k) {
-      if (used.count(directed(t[k], t[(k + 1) % 3]))) return false;
+      if (used[edges.index(t[k], t[(k + 1) % 3])] & direction(t[k], t[(k + 1) % 3])) return false;
     }
     return true;
   };
