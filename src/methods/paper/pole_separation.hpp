@@ -26,11 +26,7 @@ template <int D>
 class Pole_separation {
  public:
   Pole_separation(Reconstruction<D>& result, const Stage_clock& clock)
-      : poles_(result.poles),
-        stage_(result.propagation),
-        clock_(clock),
-        centers_(centers(poles_)),
-        tree_(centers_) {
+      : poles_(result.poles), stage_(result.propagation), clock_(clock), tree_(centers(poles_)) {
     stage_.labels.assign(poles_.poles.size(), Label::unlabelled);
   }
 
@@ -84,7 +80,6 @@ class Pole_separation {
   const Poles_stage<D>& poles_;
   Propagation_stage& stage_;
   const Stage_clock& clock_;
-  std::vector<Point<D>> centers_;  // the tree refers to these
   Pole_tree<D> tree_;
 };
 
