@@ -23,11 +23,13 @@
 
 namespace sculpt {
 
-
 // Stages 5-8, from labelled poles: OUP (UP) inserted or queried, then the solid and the surface.
+// (The paper's method inserts, as its authors did; the robust method, whose surfaces do not
+// depend on the numbering of the cells, rebuilds.)
 template <class Traits>
 void sculpt_with_poles(typename Traits::Triangulation& triangulation,
-                       Reconstruction<Traits::dimension>& result, Stage_clock& clock) {
+                       Reconstruction<Traits::dimension>& result, Stage_clock& clock,
+                       Sculpted_by way = Sculpted_by::insertion) {
   if (!builds_sculpted_delaunay(result.options)) {
     clock.start("queries");
     choose_inserted_poles(result);
@@ -43,7 +45,7 @@ void sculpt_with_poles(typename Traits::Triangulation& triangulation,
   }
   clock.start("insertion");
   choose_inserted_poles(result);
-  insert_poles<Traits>(triangulation, result, clock);
+  insert_poles<Traits>(triangulation, result, clock, way);
   result.stats.sculpted_cells = result.sculpted_delaunay.cell_count;
 
   clock.start("solid");

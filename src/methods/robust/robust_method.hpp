@@ -50,7 +50,7 @@ std::optional<Skin_check> run_robust_method(typename Traits::Triangulation& tria
     }
   }
   if (inserts_poles(Method::robust, result.options.kind, Traits::dimension)) {
-    sculpt_with_poles<Traits>(triangulation, result, clock);
+    sculpt_with_poles<Traits>(triangulation, result, clock, Sculpted_by::rebuilding);
     if constexpr (Traits::dimension == 3) {
       open_borders({result.sites.begin(), result.sites.begin() + result.sample_count()}, result,
                    clock);
