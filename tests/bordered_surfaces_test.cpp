@@ -77,6 +77,15 @@ Reconstruction<D> expect_automatic_keeps(const std::vector<Point<D>>& samples, S
   EXPECT_EQ(automatic.stats.kind, kind);
   EXPECT_TRUE(automatic.stats.kind_chosen_automatically);
   EXPECT_EQ(automatic.surface, asked.surface);
+  // Stages 1-2 as the asked-for run built them (a bordered attempt takes the closed one's).
+  EXPECT_EQ(automatic.stats.delaunay_cells, asked.stats.delaunay_cells);
+  EXPECT_EQ(automatic.delaunay.cells, asked.delaunay.cells);
+  EXPECT_EQ(automatic.sites, asked.sites);
+  EXPECT_EQ(automatic.poles.poles.size(), asked.poles.poles.size());
+  for (std::size_t p = 0; p < asked.poles.poles.size(); ++p) {
+    EXPECT_EQ(automatic.poles.poles[p].center, asked.poles.poles[p].center);
+    EXPECT_EQ(automatic.poles.poles[p].radius, asked.poles.poles[p].radius);
+  }
   return automatic;
 }
 
@@ -109,6 +118,11 @@ TEST_P(Bordered_surface, TheAutomaticKindKeepsTheBorders) {
   EXPECT_GT(automatic.stats.closed_spanning_facets, 0u);
   ASSERT_FALSE(automatic.stats.stages.empty());
   EXPECT_EQ(automatic.stats.stages.front().name, "closed attempt");
+  // Its Delaunay triangulation and poles were the closed attempt's, not built again.
+  for (const auto& stage : automatic.stats.stages) {
+    EXPECT_NE(stage.name, "delaunay");
+    EXPECT_NE(stage.name, "poles");
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Shapes, Bordered_surface, ::testing::ValuesIn(bordered_shapes()),

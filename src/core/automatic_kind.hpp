@@ -31,18 +31,21 @@
 // Only the robust method chooses (chooses_kind): the paper's method, as published, is told its
 // kind and takes automatic as closed, as do the methods without a bordered rule.
 //
-// Each attempt is a full reconstruction: the one not kept shows as a stage of its own ("closed
-// attempt" first, or "bordered attempt" last), the test for openings as "kind choice". The
+// Each attempt is a reconstruction of its own, but for stages 1-2, which the bordered attempt takes
+// over from the closed one (first_stages.hpp): the one not kept shows as a stage of its own
+// ("closed attempt" first, or "bordered attempt" last), the test for openings as "kind choice". The
 // overall progress gives each run half the bar (which is not known
 // in advance): a closed result kept jumps from one half to the end.
 #pragma once
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
 #include "exact_normalisation.hpp"
+#include "first_stages.hpp"
 #include "spanning_openings.hpp"
 
 namespace sculpt {
@@ -82,10 +85,11 @@ bool keeps_bordered(const Statistics& closed, std::size_t spanning, const Statis
          defects(bordered) <= defects(closed) + bordered.torn_loops;
 }
 
-// run(options) reconstructs with the given options (kind closed or bordered).
+// run(options, keep, given) reconstructs with the given options (kind closed or bordered),
+// leaving its first stages in `keep` and starting from `given` (first_stages.hpp) where not null.
 template <int D, class Run>
 Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
-  if (options.kind != Surface_kind::automatic) return run(options);
+  if (options.kind != Surface_kind::automatic) return run(options, nullptr, nullptr);
   // The options of one run, its overall progress mapped onto [from, to] of the caller's.
   const auto run_options = [&](Surface_kind kind, double from, double to) {
     Options resolved = options;
@@ -104,10 +108,15 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
       throw Cancelled();
     }
   };
-  if (!chooses_kind(options.method)) return run(run_options(Surface_kind::closed, 0.0, 1.0));
+  if (!chooses_kind(options.method)) {
+    return run(run_options(Surface_kind::closed, 0.0, 1.0), nullptr, nullptr);
+  }
   const Options closed = run_options(Surface_kind::closed, 0.0, 0.5);
   const auto started = std::chrono::steady_clock::now();
-  Reconstruction<D> closed_result = run(closed);
+  // Stages 1-2 of the closed attempt, for the bordered one (kept only if it can use them).
+  Normalised_coordinates<D> closed_coordinates;
+  const bool hands_on = starts_from_first_stages(run_options(Surface_kind::bordered, 0, 1), D);
+  Reconstruction<D> closed_result = run(closed, hands_on ? &closed_coordinates : nullptr, nullptr);
   closed_result.stats.kind_chosen_automatically = true;
 
   report(0.0, 0.5);
@@ -139,7 +148,11 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
   }
 
   const auto bordered_started = std::chrono::steady_clock::now();
-  Reconstruction<D> bordered_result = run(run_options(Surface_kind::bordered, 0.5, 1.0));
+  std::optional<First_stages<D>> first_stages;
+  if (hands_on) first_stages = first_stages_of(closed_result, std::move(closed_coordinates));
+  Reconstruction<D> bordered_result = run(run_options(Surface_kind::bordered, 0.5, 1.0), nullptr,
+                                          first_stages ? &*first_stages : nullptr);
+  first_stages.reset();
   if (!keeps_bordered<D>(closed_result.stats, spanning, bordered_result.stats)) {
     // Closed kept: the attempt's time shows as a stage of its own.
     const double attempt_seconds =

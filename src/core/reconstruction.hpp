@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "../methods/boissonnat/boissonnat_method.hpp"
@@ -23,6 +24,7 @@
 #include "delaunay.hpp"
 #include "exact_normalisation.hpp"
 #include "facet_topology.hpp"
+#include "first_stages.hpp"
 #include "input_checks.hpp"
 #include "poles.hpp"
 #include "seeds.hpp"
@@ -31,9 +33,14 @@
 
 namespace sculpt {
 
+// `keep`: where to leave the normalised coordinates of stages 1-2 for a later attempt on the same
+// samples; `given`: an earlier attempt's stages 1-2, started from when this run does not read the
+// first triangulation (first_stages.hpp).
 template <class Traits>
 Reconstruction<Traits::dimension> reconstruct_with(
-    const std::vector<Point<Traits::dimension>>& samples, const Options& options) {
+    const std::vector<Point<Traits::dimension>>& samples, const Options& options,
+    Normalised_coordinates<Traits::dimension>* keep = nullptr,
+    const First_stages<Traits::dimension>* given = nullptr) {
   Reconstruction<Traits::dimension> result;
   result.options = options;
   result.stats.dimension = Traits::dimension;
@@ -41,7 +48,19 @@ Reconstruction<Traits::dimension> reconstruct_with(
   result.stats.kind = options.kind;
   result.stats.samples = samples.size();
   Stage_clock clock(result.stats, result.options);
-  clock.plan(planned_stages(options, Traits::dimension));
+  const bool reuses = given && starts_from_first_stages(options, Traits::dimension);
+  {
+    auto stages = planned_stages(options, Traits::dimension);
+    if (reuses) {  // stages 1-2 are the given ones
+      stages.erase(std::remove_if(stages.begin(), stages.end(),
+                                  [](const char* stage) {
+                                    return std::string(stage) == "delaunay" ||
+                                           std::string(stage) == "poles";
+                                  }),
+                   stages.end());
+    }
+    clock.plan(stages);
+  }
 
   clock.start("checks");
   if (!reconstructs_in(options.method, Traits::dimension)) {
@@ -64,7 +83,9 @@ Reconstruction<Traits::dimension> reconstruct_with(
   for (int k = 0; k < Traits::dimension; ++k) result.stats.translation[k] = normalisation.offset[k];
 
   typename Traits::Triangulation triangulation;
-  if (builds_shared_stages(options)) {
+  if (reuses) {
+    start_from(*given, result);
+  } else if (builds_shared_stages(options)) {
     clock.start("delaunay");
     build_delaunay<Traits>(std::move(work), options, triangulation, result, clock);
     if (triangulation.number_of_vertices() != result.sites.size()) {  // a site repeated
@@ -135,6 +156,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   measure_topology<Traits::dimension>(
       result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
       result.stats, checked_skin ? &*checked_skin : nullptr);
+  if (keep) *keep = normalised_coordinates_of(result);
   undo_normalisation<Traits::dimension>(result, normalisation, samples);
   clock.finish();
   return result;
