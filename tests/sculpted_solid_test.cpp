@@ -9,6 +9,7 @@
 #include "core/delaunay.hpp"
 #include "core2d/traits_2.hpp"
 #include "core3d/traits_3.hpp"
+#include "methods/paper/pole_insertion.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -129,9 +130,10 @@ TEST(SculptedSolid, QueriesMatchInsertionOnCosphericalPoints) {
 }
 
 // The paper's bordered run inserts every labelled pole into DT(S ∪ BBV) and keeps the cells;
-// the same sites triangulated anew in one spatial order must give the same cells. Compared by
-// their corners' positions: poles at one point (cospherical cells have one circumcentre) are one
-// vertex, numbered as the last of them inserted, which differs between the two orders.
+// the same sites triangulated anew (Sculpted_by::rebuilding, from a triangulation of the samples
+// and corners, which it clears) must give the same cells. Compared by their corners' positions:
+// poles at one point (cospherical cells have one circumcentre) are one vertex, numbered as the
+// last of them inserted, which differs between the two orders.
 template <class Traits>
 void expect_rebuilding_matches_insertion(const std::vector<Point<Traits::dimension>>& samples) {
   constexpr int D = Traits::dimension;
@@ -141,11 +143,16 @@ void expect_rebuilding_matches_insertion(const std::vector<Point<Traits::dimensi
   options.keep_triangulations = true;
   const auto inserted = reconstruct(samples, options);
   ASSERT_GT(inserted.insertion.inserted_poles.size(), 0u);
-  typename Traits::Triangulation rebuilt;
+  auto rebuilt_result = inserted;
+  rebuilt_result.sculpted_delaunay = {};
   Statistics unused;
-  insert_in_spatial_order<Traits>(rebuilt, inserted.sites, 0, Stage_clock(unused, options));
-  Delaunay_stage<D> cells;
-  number_cells<Traits>(rebuilt, true, cells);
+  const Stage_clock clock(unused, options);
+  typename Traits::Triangulation rebuilt;
+  const std::vector<Point<D>> first_sites(inserted.sites.begin(),
+                                          inserted.sites.begin() + first_inserted_site(inserted));
+  insert_in_spatial_order<Traits>(rebuilt, first_sites, 0, clock);
+  insert_poles<Traits>(rebuilt, rebuilt_result, clock, Sculpted_by::rebuilding);
+  const Delaunay_stage<D>& cells = rebuilt_result.sculpted_delaunay;
   ASSERT_EQ(cells.cell_count, inserted.sculpted_delaunay.cell_count);
   const auto by_position = [&](const std::vector<Cell<D>>& numbered) {
     std::vector<std::array<Point<D>, D + 1>> corners;

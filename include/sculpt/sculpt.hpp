@@ -20,10 +20,11 @@
 //   3. seeds              convex poles (cells incident to a box corner) and the seed labels
 //   4. propagation        the ordered labelling events of the pole separation
 //   5. insertion          the poles inserted: OUP (closed) or UP (bordered)
-//   6. sculpted_delaunay  DT(S ∪ OUP), made by inserting those poles into the first DT; for a
-//                         closed surface with the skin rule and without keep_triangulations,
-//                         the solid is read off the first DT by circumball queries instead, and
-//                         this stays empty
+//   6. sculpted_delaunay  DT(S ∪ OUP), made by inserting those poles into the first DT (the
+//                         robust method builds DT(S ∪ BBV ∪ UP) anew from every site: the same
+//                         triangulation, numbered otherwise); for a closed surface with the skin
+//                         rule and without keep_triangulations, the solid is read off the first DT
+//                         by circumball queries instead, and this stays empty
 //   6b. carving           (robust) the all-sample cells removed, in order, with the reason
 //                         (kept with keep_triangulations; counted in the statistics always)
 //   7. solid              the cells whose vertices are all samples
@@ -118,7 +119,9 @@ struct Options {
   // pole (p+ or p-) of the given sample.
   int bordered_seed_sample = -1;
   // Keep the cells of both triangulations in the result (the viewer and the tests read them);
-  // the command line switches this off to save memory on large inputs.
+  // the command line switches this off to save memory on large inputs. Without it, the methods
+  // through CGAL (advancing-front, alpha-shape), which read neither, build no DT(S ∪ BBV) and no
+  // poles: their stages 1-2 are empty and counted 0.
   bool keep_triangulations = true;
   // Keep the solid's cells (stage 7; the statistics count them either way): the command line
   // keeps them only to write them (--solid).

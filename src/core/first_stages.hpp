@@ -4,10 +4,11 @@
 // triangulation itself (it builds DT(S ∪ BBV ∪ UP) anew from the sites, pole_insertion.hpp), only
 // the sites, the cells' count (and the cells, where the viewer keeps them) and the poles. On
 // noisy closed scans, where the bordered attempt runs and is dropped, the Delaunay triangulation
-// and the poles were a fifth of it.
+// and the poles were a fifth of it (a noisy torus of 20k points: 0.09 s of the attempt's 0.49).
 #pragma once
 
 #include <sculpt/sculpt.hpp>
+#include <utility>
 #include <vector>
 
 #include "stage_plan.hpp"
@@ -69,12 +70,12 @@ First_stages<D> first_stages_of(const Reconstruction<D>& result,
 }
 
 template <int D>
-void start_from(const First_stages<D>& stages, Reconstruction<D>& result) {
-  result.sites = stages.sites;
-  result.delaunay = stages.delaunay;
-  result.poles = stages.poles;
+void take_over(First_stages<D>&& stages, Reconstruction<D>& result) {
+  result.sites = std::move(stages.sites);
+  result.delaunay = std::move(stages.delaunay);
+  result.poles = std::move(stages.poles);
   result.stats.delaunay_cells = stages.delaunay_cells;
-  result.stats.poles = stages.poles.poles.size();
+  result.stats.poles = result.poles.poles.size();
 }
 
 }  // namespace sculpt

@@ -34,13 +34,13 @@
 namespace sculpt {
 
 // `keep`: where to leave the normalised coordinates of stages 1-2 for a later attempt on the same
-// samples; `given`: an earlier attempt's stages 1-2, started from when this run does not read the
-// first triangulation (first_stages.hpp).
+// samples; `given`: an earlier attempt's stages 1-2, taken over (moved from) when this run does
+// not read the first triangulation (first_stages.hpp).
 template <class Traits>
 Reconstruction<Traits::dimension> reconstruct_with(
     const std::vector<Point<Traits::dimension>>& samples, const Options& options,
     Normalised_coordinates<Traits::dimension>* keep = nullptr,
-    const First_stages<Traits::dimension>* given = nullptr) {
+    First_stages<Traits::dimension>* given = nullptr) {
   Reconstruction<Traits::dimension> result;
   result.options = options;
   result.stats.dimension = Traits::dimension;
@@ -76,15 +76,16 @@ Reconstruction<Traits::dimension> reconstruct_with(
   const Normalisation<Traits::dimension> normalisation =
       normalisation_of<Traits::dimension>(samples);
   // Checked even when nothing moves: a coordinate too small against the others is refused.
-  // The sites start as these (build_delaunay takes them over).
+  // The sites start as these (build_delaunay takes them over), unless they are given.
   std::vector<Point<Traits::dimension>> work =
-      normalised<Traits::dimension>(samples, normalisation);
+      reuses ? std::vector<Point<Traits::dimension>>{}
+             : normalised<Traits::dimension>(samples, normalisation);
   result.stats.scale_exponent = normalisation.exponent;
   for (int k = 0; k < Traits::dimension; ++k) result.stats.translation[k] = normalisation.offset[k];
 
   typename Traits::Triangulation triangulation;
   if (reuses) {
-    start_from(*given, result);
+    take_over(std::move(*given), result);
   } else if (builds_shared_stages(options)) {
     clock.start("delaunay");
     build_delaunay<Traits>(std::move(work), options, triangulation, result, clock);

@@ -551,7 +551,8 @@ alpha                alpha-shape: the radius, in the points' units; 0 chooses th
                      whose solid is one piece holding every sample (stats['alpha'] says which)
 bordered_seed_sample bordered: the sample whose convex pole seeds the labelling (-1: chosen)
 keep_triangulations  keep the cells of the triangulations (the stages' pictures need them);
-                     False computes as the command line does, with less memory
+                     False computes as the command line does, with less memory (and for
+                     advancing-front and alpha-shape, without DT(S + BBV) and the poles)
 merge_duplicates     drop points that repeat an earlier one (else sculpt.DuplicatePoints)
 progress             progress(stage, fraction) is called as each stage starts and ends (and
                      within the long ones); returning False cancels (sculpt.Cancelled)

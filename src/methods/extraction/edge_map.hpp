@@ -34,7 +34,8 @@ class Edge_map {
   explicit Edge_map(const std::vector<Facet<3>>& triangles) {
     std::size_t capacity = 16;
     shift_ = 60;
-    while (capacity < 3 * triangles.size()) capacity *= 2, --shift_;  // at most half full
+    // More slots than edge sides (3 a triangle), so probing always meets an empty one.
+    while (capacity <= 3 * triangles.size()) capacity *= 2, --shift_;
     mask_ = capacity - 1;
     slot_key_.assign(capacity, empty);
     slot_edge_.assign(capacity, -1);

@@ -1,6 +1,7 @@
 // Stages 5 and 6: choose the poles that sculpt (they become the last sites, after the samples
-// and the box corners), and insert them into the first triangulation,
-// as the paper's implementation does (section 6), which turns DT(S ∪ BBV) into DT(S ∪ OUP).
+// and the box corners), and insert them into the first triangulation, as the paper's
+// implementation does (section 6), which turns DT(S ∪ BBV) into DT(S ∪ OUP); or build that
+// triangulation anew from every site (Sculpted_by, below).
 //   closed:   OUP = the outer poles that are not convex (the box corners are already there);
 //   bordered: UP  = every labelled pole that is not convex, on either side (section 4).
 // Unlabelled poles have no side and are not inserted.

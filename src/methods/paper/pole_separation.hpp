@@ -26,7 +26,7 @@ template <int D>
 class Pole_separation {
  public:
   Pole_separation(Reconstruction<D>& result, const Stage_clock& clock)
-      : poles_(result.poles), stage_(result.propagation), clock_(clock), tree_(centers(poles_)) {
+      : poles_(result.poles), stage_(result.propagation), clock_(clock), tree_(poles_.poles) {
     stage_.labels.assign(poles_.poles.size(), Label::unlabelled);
   }
 
@@ -45,13 +45,6 @@ class Pole_separation {
   }
 
  private:
-  static std::vector<Point<D>> centers(const Poles_stage<D>& poles) {
-    std::vector<Point<D>> result;
-    result.reserve(poles.poles.size());
-    for (const auto& pole : poles.poles) result.push_back(pole.center);
-    return result;
-  }
-
   void offer(int pole, Label label, int source, Label_reason reason) {
     Label& current = stage_.labels[pole];
     if (current == label) return;

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <numeric>
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
@@ -24,13 +23,13 @@ class Pole_tree {
   // The centres are copied in the tree's order, each travelling with its pole while the medians
   // are found: a leaf's centres lie together, where reading them through the poles' numbers
   // jumped about memory (bunny00 subdivided, paper: the separation's searches 0.13 -> 0.09 s).
-  explicit Pole_tree(const std::vector<Point<D>>& centers) {
-    entries_.resize(centers.size());
-    for (std::size_t i = 0; i < centers.size(); ++i) {
-      entries_[i] = {centers[i], static_cast<int>(i)};
+  explicit Pole_tree(const std::vector<Pole<D>>& poles) {
+    entries_.resize(poles.size());
+    for (std::size_t i = 0; i < poles.size(); ++i) {
+      entries_[i] = {poles[i].center, static_cast<int>(i)};
     }
-    leaf_of_.assign(centers.size(), -1);
-    if (!centers.empty()) build(0, static_cast<int>(centers.size()), -1);
+    leaf_of_.assign(poles.size(), -1);
+    if (!poles.empty()) build(0, static_cast<int>(poles.size()), -1);
   }
 
   // Moves a pole from one label to another in the counts of its leaf and the leaf's ancestors.

@@ -7,8 +7,9 @@
 //   8.  surface     the facets between the solid and the outside
 // No pole is inserted: a cell judged outer is removed directly, so DT(S ∪ OUP) is never built.
 // Bordered curves (section 4, in 2D) join each sample to its nearest neighbours and end where the
-// samples end (open_curves.hpp). Bordered surfaces take the paper's insertion of UP and its
-// extraction rule, with the confidence labels, as candidates; the triangles spanning an opening
+// samples end (open_curves.hpp). Bordered surfaces take the paper's DT(S ∪ BBV ∪ UP) (built anew
+// from every site, not by insertion: pole_insertion.hpp) and its extraction rule, with the
+// confidence labels, as candidates; the triangles spanning an opening
 // go, and the rest is made a manifold (bordered_surface.hpp):
 //   6d. openings    the triangles wider than the samples' spacing there removed
 //   6e. pruning, walk  the manifold extraction of the candidates left
