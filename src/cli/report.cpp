@@ -50,10 +50,13 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     row(stats.kind == Surface_kind::closed ? "inserted poles (m - 2^D)"
                                            : "inserted poles (l - 2^D)",
         stats.inserted_poles);
+    // Bordered, every labelled pole goes in (UP), not only the outer ones (OUP).
+    const char* sculpted =
+        stats.kind == Surface_kind::closed ? "cells of DT(S+OUP)" : "cells of DT(S+UP)";
     if (stats.sculpted_cells > 0) {
-      row("cells of DT(S+OUP)", stats.sculpted_cells);
+      row(sculpted, stats.sculpted_cells);
     } else {
-      row("cells of DT(S+OUP)", "not built (queries)");
+      row(sculpted, "not built (queries)");
     }
   } else if (sculpts(stats.method)) {
     if (stats.carved_by_flood) {
