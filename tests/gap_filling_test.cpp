@@ -10,6 +10,7 @@
 #include <map>
 #include <random>
 #include <set>
+#include <stdexcept>
 #include <unordered_set>
 
 #include "test_support.hpp"
@@ -39,6 +40,35 @@ void expect_closed_and_oriented(const std::vector<Facet<3>>& triangles) {
 }
 
 const auto never_over_an_opening = [](const Facet<3>&) { return false; };
+
+// The edge tables the mending reads (key_table.hpp) answer as std::unordered_map would, through
+// many growths, for keys of edges both ways round.
+TEST(Gap_filling, TheEdgeTableAnswersAsAMapWould) {
+  Key_table<int> table;
+  std::map<std::uint64_t, int> expected;
+  std::mt19937 random(3);
+  std::uniform_int_distribution<int> vertex(0, 3000);
+  for (int k = 0; k < 20000; ++k) {
+    const int a = vertex(random), b = vertex(random);
+    const std::uint64_t key = k % 2 ? directed_key(a, b) : extraction_detail::edge_key(a, b);
+    ++table[key];
+    ++expected[key];
+  }
+  EXPECT_EQ(table.size(), expected.size());
+  for (const auto& [key, count] : expected) {
+    ASSERT_NE(table.find(key), nullptr);
+    EXPECT_EQ(table.at(key), count);
+    EXPECT_EQ(table.count(key), 1u);
+  }
+  const std::uint64_t absent = directed_key(5000, 5001);
+  EXPECT_EQ(table.find(absent), nullptr);
+  EXPECT_EQ(table.count(absent), 0u);
+  EXPECT_THROW(table.at(absent), std::out_of_range);
+  const Key_table<int> listed = {{directed_key(1, 2), 7}, {directed_key(2, 1), 9}};
+  EXPECT_EQ(listed.at(directed_key(1, 2)), 7);
+  EXPECT_EQ(listed.at(directed_key(2, 1)), 9);
+  EXPECT_EQ(listed.size(), 2u);
+}
 
 TEST(Gap_filling, ALoopIsFollowedInTheTrianglesDirection) {
   auto faces = octahedron_faces();

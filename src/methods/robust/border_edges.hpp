@@ -6,19 +6,20 @@
 
 #include <cstdint>
 #include <sculpt/sculpt.hpp>
-#include <unordered_map>
 #include <vector>
 
 #include "../extraction/manifold_extraction.hpp"
 #include "../extraction/vector3.hpp"
+#include "key_table.hpp"
 
 namespace sculpt {
 
 // How many triangles each edge is on, by extraction_detail::edge_key.
-using Edge_uses = std::unordered_map<std::uint64_t, int>;
+using Edge_uses = Key_table<int>;
 
 inline Edge_uses edge_uses(const std::vector<Facet<3>>& triangles) {
   Edge_uses uses;
+  uses.reserve(3 * triangles.size() / 2 + 16);  // a closed surface's edges, and some border
   for (const auto& t : triangles) {
     for (int j = 0; j < 3; ++j) ++uses[extraction_detail::edge_key(t[j], t[(j + 1) % 3])];
   }
@@ -33,7 +34,7 @@ inline std::uint64_t directed_key(int a, int b) {
 
 // Per directed edge a -> b of a triangle (directed_key), the triangle's third vertex. On an
 // oriented surface an edge's uses are those of its two directions.
-using Third_vertex = std::unordered_map<std::uint64_t, int>;
+using Third_vertex = Key_table<int>;
 
 // The end w of the border edge v -> w leaving the fan of triangles around v that the border edge
 // u -> v arrives in: around v from the triangle on u -> v, across one edge at v after another,
@@ -42,9 +43,9 @@ using Third_vertex = std::unordered_map<std::uint64_t, int>;
 inline int fan_end(const Third_vertex& third, int u, int v, std::size_t most) {
   int x = third.at(directed_key(u, v));
   for (std::size_t steps = 0; steps < most; ++steps) {
-    const auto next = third.find(directed_key(x, v));
-    if (next == third.end()) return x;
-    x = next->second;
+    const int* next = third.find(directed_key(x, v));
+    if (!next) return x;
+    x = *next;
   }
   return -1;
 }
