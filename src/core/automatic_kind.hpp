@@ -42,6 +42,7 @@
 #include <chrono>
 #include <optional>
 #include <sculpt/sculpt.hpp>
+#include <utility>
 #include <vector>
 
 #include "exact_normalisation.hpp"
@@ -114,9 +115,9 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
   const Options closed = run_options(Surface_kind::closed, 0.0, 0.5);
   const auto started = std::chrono::steady_clock::now();
   // Stages 1-2 of the closed attempt, for the bordered one (kept only if it can use them).
-  Normalised_coordinates<D> closed_coordinates;
+  Normalised_poles<D> closed_poles;
   const bool hands_on = starts_from_first_stages(run_options(Surface_kind::bordered, 0, 1), D);
-  Reconstruction<D> closed_result = run(closed, hands_on ? &closed_coordinates : nullptr, nullptr);
+  Reconstruction<D> closed_result = run(closed, hands_on ? &closed_poles : nullptr, nullptr);
   closed_result.stats.kind_chosen_automatically = true;
 
   report(0.0, 0.5);
@@ -149,7 +150,7 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
 
   const auto bordered_started = std::chrono::steady_clock::now();
   std::optional<First_stages<D>> first_stages;
-  if (hands_on) first_stages = first_stages_of(closed_result, std::move(closed_coordinates));
+  if (hands_on) first_stages = first_stages_of(closed_result, std::move(closed_poles));
   Reconstruction<D> bordered_result = run(run_options(Surface_kind::bordered, 0.5, 1.0), nullptr,
                                           first_stages ? &*first_stages : nullptr);
   first_stages.reset();

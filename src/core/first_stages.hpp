@@ -11,28 +11,25 @@
 #include <utility>
 #include <vector>
 
-#include "stage_plan.hpp"
-
 namespace sculpt {
 
-// What stages 1-2 leave, in the normalised coordinates the stages work in.
+// What stages 1-2 leave beside the sites (which the samples give again, the same: delaunay.hpp's
+// gather_sites), in the normalised coordinates the stages work in.
 template <int D>
 struct First_stages {
-  std::vector<Point<D>> sites;  // the samples, then the box's corners
   Delaunay_stage<D> delaunay;
   Poles_stage<D> poles;
-  std::size_t delaunay_cells = 0;
 };
 
-// What a finished run must leave for its first stages to be handed on: the coordinates its
-// result gives back in the input's units (the rest of stages 1-2 is in the result as it was).
-// Taken at the end of the run, not after stage 2, so that a run whose successor never comes
-// (a closed scan: no bordered attempt) holds no copy while its own stages work.
+// What a finished run must leave for its first stages to be handed on: its poles' centres and
+// radii as the stages computed them, which its result gives back in the input's units (the rest
+// of stages 1-2 is in the result as it was). Taken at the end of the run, not after stage 2, so
+// that a run whose successor never comes (a closed scan: no bordered attempt) holds no copy while
+// its own stages work.
 template <int D>
-struct Normalised_coordinates {
-  std::vector<Point<D>> sites;
-  std::vector<Point<D>> pole_centers;
-  std::vector<double> pole_radii;
+struct Normalised_poles {
+  std::vector<Point<D>> centers;
+  std::vector<double> radii;
 };
 
 // Whether a run with these options can start from another attempt's first stages instead of
@@ -44,37 +41,33 @@ inline bool starts_from_first_stages(const Options& options, int dimension) {
 }
 
 template <int D>
-Normalised_coordinates<D> normalised_coordinates_of(const Reconstruction<D>& result) {
-  Normalised_coordinates<D> kept;
-  kept.sites = result.sites;
-  kept.pole_centers.reserve(result.poles.poles.size());
-  kept.pole_radii.reserve(result.poles.poles.size());
+Normalised_poles<D> normalised_poles_of(const Reconstruction<D>& result) {
+  Normalised_poles<D> kept;
+  kept.centers.reserve(result.poles.poles.size());
+  kept.radii.reserve(result.poles.poles.size());
   for (const auto& pole : result.poles.poles) {
-    kept.pole_centers.push_back(pole.center);
-    kept.pole_radii.push_back(pole.radius);
+    kept.centers.push_back(pole.center);
+    kept.radii.push_back(pole.radius);
   }
   return kept;
 }
 
-// A finished run's first stages, from its result and the coordinates it left.
+// A finished run's first stages, from its result and the poles it left (freed here).
 template <int D>
-First_stages<D> first_stages_of(const Reconstruction<D>& result,
-                                Normalised_coordinates<D> coordinates) {
-  First_stages<D> stages{std::move(coordinates.sites), result.delaunay, result.poles,
-                         result.stats.delaunay_cells};
+First_stages<D> first_stages_of(const Reconstruction<D>& result, Normalised_poles<D> poles) {
+  First_stages<D> stages{result.delaunay, result.poles};
   for (std::size_t p = 0; p < stages.poles.poles.size(); ++p) {
-    stages.poles.poles[p].center = coordinates.pole_centers[p];
-    stages.poles.poles[p].radius = coordinates.pole_radii[p];
+    stages.poles.poles[p].center = poles.centers[p];
+    stages.poles.poles[p].radius = poles.radii[p];
   }
   return stages;
 }
 
 template <int D>
 void take_over(First_stages<D>&& stages, Reconstruction<D>& result) {
-  result.sites = std::move(stages.sites);
   result.delaunay = std::move(stages.delaunay);
   result.poles = std::move(stages.poles);
-  result.stats.delaunay_cells = stages.delaunay_cells;
+  result.stats.delaunay_cells = result.delaunay.cell_count;
   result.stats.poles = result.poles.poles.size();
 }
 

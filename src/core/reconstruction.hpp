@@ -33,13 +33,13 @@
 
 namespace sculpt {
 
-// `keep`: where to leave the normalised coordinates of stages 1-2 for a later attempt on the same
+// `keep`: where to leave the normalised poles of stages 1-2 for a later attempt on the same
 // samples; `given`: an earlier attempt's stages 1-2, taken over (moved from) when this run does
 // not read the first triangulation (first_stages.hpp).
 template <class Traits>
 Reconstruction<Traits::dimension> reconstruct_with(
     const std::vector<Point<Traits::dimension>>& samples, const Options& options,
-    Normalised_coordinates<Traits::dimension>* keep = nullptr,
+    Normalised_poles<Traits::dimension>* keep = nullptr,
     First_stages<Traits::dimension>* given = nullptr) {
   Reconstruction<Traits::dimension> result;
   result.options = options;
@@ -49,18 +49,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   result.stats.samples = samples.size();
   Stage_clock clock(result.stats, result.options);
   const bool reuses = given && starts_from_first_stages(options, Traits::dimension);
-  {
-    auto stages = planned_stages(options, Traits::dimension);
-    if (reuses) {  // stages 1-2 are the given ones
-      stages.erase(std::remove_if(stages.begin(), stages.end(),
-                                  [](const char* stage) {
-                                    return std::string(stage) == "delaunay" ||
-                                           std::string(stage) == "poles";
-                                  }),
-                   stages.end());
-    }
-    clock.plan(stages);
-  }
+  clock.plan(planned_stages(options, Traits::dimension, reuses));
 
   clock.start("checks");
   if (!reconstructs_in(options.method, Traits::dimension)) {
@@ -76,15 +65,15 @@ Reconstruction<Traits::dimension> reconstruct_with(
   const Normalisation<Traits::dimension> normalisation =
       normalisation_of<Traits::dimension>(samples);
   // Checked even when nothing moves: a coordinate too small against the others is refused.
-  // The sites start as these (build_delaunay takes them over), unless they are given.
+  // The sites start as these (build_delaunay or gather_sites takes them over).
   std::vector<Point<Traits::dimension>> work =
-      reuses ? std::vector<Point<Traits::dimension>>{}
-             : normalised<Traits::dimension>(samples, normalisation);
+      normalised<Traits::dimension>(samples, normalisation);
   result.stats.scale_exponent = normalisation.exponent;
   for (int k = 0; k < Traits::dimension; ++k) result.stats.translation[k] = normalisation.offset[k];
 
   typename Traits::Triangulation triangulation;
   if (reuses) {
+    gather_sites<Traits::dimension>(std::move(work), options, result);  // as the attempt did
     take_over(std::move(*given), result);
   } else if (builds_shared_stages(options)) {
     clock.start("delaunay");
@@ -157,7 +146,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   measure_topology<Traits::dimension>(
       result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
       result.stats, checked_skin ? &*checked_skin : nullptr);
-  if (keep) *keep = normalised_coordinates_of(result);
+  if (keep) *keep = normalised_poles_of(result);
   undo_normalisation<Traits::dimension>(result, normalisation, samples);
   clock.finish();
   return result;

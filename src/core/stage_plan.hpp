@@ -28,9 +28,13 @@ inline bool builds_shared_stages(const Options& options) {
 
 // The stages a run times, in order, known before it starts (the method's driver starts them;
 // tests/progress_test.cpp checks every method): what the overall progress runs across.
-inline std::vector<const char*> planned_stages(const Options& options, int dimension) {
+// `first_stages_given`: stages 1-2 come from an earlier attempt (first_stages.hpp).
+inline std::vector<const char*> planned_stages(const Options& options, int dimension,
+                                               bool first_stages_given = false) {
   std::vector<const char*> stages = {"checks"};
-  if (builds_shared_stages(options)) stages.insert(stages.end(), {"delaunay", "poles"});
+  if (builds_shared_stages(options) && !first_stages_given) {
+    stages.insert(stages.end(), {"delaunay", "poles"});
+  }
   const auto add = [&](std::initializer_list<const char*> more) {
     stages.insert(stages.end(), more.begin(), more.end());
   };

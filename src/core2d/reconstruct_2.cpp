@@ -7,8 +7,7 @@ namespace sculpt {
 
 Reconstruction<2> reconstruct(const std::vector<Point<2>>& samples, const Options& options) {
   return reconstruct_choosing_kind<2>(
-      options,
-      [&](const Options& resolved, Normalised_coordinates<2>* keep, First_stages<2>* given) {
+      options, [&](const Options& resolved, Normalised_poles<2>* keep, First_stages<2>* given) {
         return reconstruct_with<Traits_2>(samples, resolved, keep, given);
       });
 }

@@ -7,8 +7,7 @@ namespace sculpt {
 
 Reconstruction<3> reconstruct(const std::vector<Point<3>>& samples, const Options& options) {
   return reconstruct_choosing_kind<3>(
-      options,
-      [&](const Options& resolved, Normalised_coordinates<3>* keep, First_stages<3>* given) {
+      options, [&](const Options& resolved, Normalised_poles<3>* keep, First_stages<3>* given) {
         return reconstruct_with<Traits_3>(samples, resolved, keep, given);
       });
 }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "../../core/union_find.hpp"
+#include "../extraction/edge_map.hpp"
 
 namespace sculpt {
 
@@ -25,18 +26,15 @@ inline void orient_outward(const std::vector<Point<3>>& points, std::vector<Face
   // triangle), and whether every edge has one triangle on each side, used once each way round.
   std::vector<double> six_volume(points.size(), 0.0);
   std::vector<char> closed(points.size(), 1);
-  std::vector<std::uint64_t> directed_edges;  // from << 32 | to, sorted
+  using extraction_detail::directed_key;
+  std::vector<std::uint64_t> directed_edges;  // sorted
   directed_edges.reserve(3 * surface.size());
-  const auto key = [](int from, int to) {
-    return static_cast<std::uint64_t>(static_cast<std::uint32_t>(from)) << 32 |
-           static_cast<std::uint32_t>(to);
-  };
   for (const auto& t : surface) {
     const auto &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
     six_volume[root(t[0])] += a[0] * (b[1] * c[2] - b[2] * c[1]) -
                               a[1] * (b[0] * c[2] - b[2] * c[0]) +
                               a[2] * (b[0] * c[1] - b[1] * c[0]);
-    for (int k = 0; k < 3; ++k) directed_edges.push_back(key(t[k], t[(k + 1) % 3]));
+    for (int k = 0; k < 3; ++k) directed_edges.push_back(directed_key(t[k], t[(k + 1) % 3]));
   }
   std::sort(directed_edges.begin(), directed_edges.end());
   for (std::size_t e = 0; e < directed_edges.size(); ++e) {
@@ -44,7 +42,8 @@ inline void orient_outward(const std::vector<Point<3>>& points, std::vector<Face
     const int from = static_cast<int>(edge >> 32), to = static_cast<int>(edge & 0xffffffffu);
     const bool once = (e == 0 || directed_edges[e - 1] != edge) &&
                       (e + 1 == directed_edges.size() || directed_edges[e + 1] != edge);
-    if (!once || !std::binary_search(directed_edges.begin(), directed_edges.end(), key(to, from))) {
+    if (!once ||
+        !std::binary_search(directed_edges.begin(), directed_edges.end(), directed_key(to, from))) {
       closed[root(from)] = 0;
     }
   }

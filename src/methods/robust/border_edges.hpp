@@ -8,9 +8,9 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "../../core/key_table.hpp"
 #include "../extraction/manifold_extraction.hpp"
 #include "../extraction/vector3.hpp"
-#include "key_table.hpp"
 
 namespace sculpt {
 
@@ -26,11 +26,7 @@ inline Edge_uses edge_uses(const std::vector<Facet<3>>& triangles) {
   return uses;
 }
 
-// A key of the directed edge a -> b (edge_key is the undirected one).
-inline std::uint64_t directed_key(int a, int b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
+using extraction_detail::directed_key;
 
 // Per directed edge a -> b of a triangle (directed_key), the triangle's third vertex. On an
 // oriented surface an edge's uses are those of its two directions.

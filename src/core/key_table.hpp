@@ -1,8 +1,8 @@
-// A map from 64-bit keys (an edge's, directed or not: border_edges.hpp) to small values, in two
-// flat arrays with linear probing. The mending of a bordered surface asks it about every edge
-// of the surface, several times over; std::unordered_map made a node per edge (a noisy scan of
-// 20k points: 4% of the whole run in its inserts and finds). Nothing iterates over it, so its
-// order is no one's concern.
+// A map from 64-bit keys (an edge's, directed or not: extraction/edge_map.hpp) to small values,
+// in two flat arrays with linear probing. The manifold extraction and the mending of a bordered
+// surface ask about every edge of a surface, several times over; std::unordered_map made a node
+// per edge (a noisy scan of 20k points: 4% of the whole run in the mending's inserts and finds).
+// It cannot be iterated over, so no result depends on its order.
 #pragma once
 
 #include <cstdint>
