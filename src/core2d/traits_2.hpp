@@ -11,6 +11,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <sculpt/sculpt.hpp>
+#include <utility>
 #include <vector>
 
 #include "../core/exact_circumcentre.hpp"
@@ -30,8 +31,9 @@ struct Traits_2 {
   using Tds = CGAL::Triangulation_data_structure_2<Vertex_base, Face_base>;
   using Triangulation = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
   using Cell_handle = Triangulation::Face_handle;
-  using Spatial_sort_traits =
-      CGAL::Spatial_sort_traits_adapter_2<Kernel, CGAL::Pointer_property_map<Cgal_point>::type>;
+  // Sorts points paired with their site index (the pair's first member is the point).
+  using Spatial_sort_traits = CGAL::Spatial_sort_traits_adapter_2<
+      Kernel, CGAL::First_of_pair_property_map<std::pair<Cgal_point, int>>>;
 
   static Cgal_point to_cgal(const Point<2>& p) { return {p[0], p[1]}; }
   static Point<2> from_cgal(const Cgal_point& p) { return {p.x(), p.y()}; }

@@ -11,6 +11,7 @@
 
 #include <iterator>
 #include <sculpt/sculpt.hpp>
+#include <utility>
 #include <vector>
 
 #include "../core/exact_circumcentre.hpp"
@@ -32,8 +33,9 @@ struct Traits_3 {
   using Tds = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
   using Triangulation = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
   using Cell_handle = Triangulation::Cell_handle;
-  using Spatial_sort_traits =
-      CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Cgal_point>::type>;
+  // Sorts points paired with their site index (the pair's first member is the point).
+  using Spatial_sort_traits = CGAL::Spatial_sort_traits_adapter_3<
+      Kernel, CGAL::First_of_pair_property_map<std::pair<Cgal_point, int>>>;
 
   static Cgal_point to_cgal(const Point<3>& p) { return {p[0], p[1], p[2]}; }
   static Point<3> from_cgal(const Cgal_point& p) { return {p.x(), p.y(), p.z()}; }
