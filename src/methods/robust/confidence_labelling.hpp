@@ -182,6 +182,15 @@ class Confidence_labelling {
       if (priority != seed_priority && priority != confidence(pole)) {
         continue;  // a stale entry: the pole has been offered stronger evidence since
       }
+      // The pole most likely popped next: its label, offers and row of evidence, asked for
+      // while this one is labelled (the poles are popped in no order the memory likes).
+      // A 1M-point random torus: the stage 1.44-1.50 -> 1.26-1.27 s.
+      if (!queue_.empty()) {
+        const int next = queue_.top().pole;
+        prefetch(&stage_.labels[next]);
+        prefetch(&offers_[next]);
+        prefetch(evidence_.links.data() + evidence_.offsets[next]);
+      }
       label(pole);
       if (++popped % 65536 == 0) clock_.report(double(popped) / double(pole_count_));
     }
