@@ -262,6 +262,30 @@ TEST(Cli, BenchMeasuresEachJobInAProcessOfItsOwn) {
   EXPECT_FALSE(rows[1].contains("advancing_front"));                // a curve: no surface method
 }
 
+// A job judges its result against the input's mesh (the share of triangles reproduced) and
+// reads the mesh's topology: work the measured run would not do, timed apart and taken off the
+// process's time. Points without a mesh leave nothing to take off.
+TEST(Cli, BenchTakesOffTheTimeSpentJudgingResults) {
+  const auto mesh = output_path("judged-sphere.off"), json = output_path("judged.json");
+  ASSERT_EQ(run_sculpt("reconstruct --example sphere -q -o " + mesh).exit_code, 0);
+  const Command_result run =
+      run_sculpt("bench " + mesh + " --example sphere --methods robust --runs 1 --json " + json);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto rows = nlohmann::json::parse(read_file(json));
+  ASSERT_EQ(rows.size(), 2u);
+  const auto judging = [](const nlohmann::json& job) {
+    return double(job["evaluation"]["wall_seconds"]);
+  };
+  const auto& with_mesh = rows[0];
+  EXPECT_DOUBLE_EQ(double(with_mesh["methods"]["robust"]["reproduced"]), 1.0);
+  EXPECT_GT(judging(with_mesh["methods"]["robust"]), 0.0);
+  EXPECT_GT(judging(with_mesh["delaunay_only"]), 0.0);
+  EXPECT_GT(judging(with_mesh["advancing_front"]), 0.0);
+  const auto& without = rows[1];
+  EXPECT_EQ(judging(without["methods"]["robust"]), 0.0);
+  EXPECT_EQ(judging(without["delaunay_only"]), 0.0);
+}
+
 // A PNG's width and height, from its header.
 std::pair<int, int> png_size(const std::string& path) {
   const std::string bytes = read_file(path);

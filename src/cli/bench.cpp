@@ -78,9 +78,12 @@ nlohmann::json run_job_process(const std::vector<std::string>& arguments) {
   auto result = nlohmann::json::parse(text, nullptr, false);
   if (result.is_discarded()) return {{"error", "the measuring process wrote no JSON"}};
   const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  // Less the time the job spent judging its result (Evaluation_time).
+  const auto judging = result.value("evaluation", nlohmann::json::object());
   result["process"] = {
-      {"cpu_seconds", seconds(usage.ru_utime) + seconds(usage.ru_stime)},
-      {"wall_seconds", wall},
+      {"cpu_seconds",
+       seconds(usage.ru_utime) + seconds(usage.ru_stime) - judging.value("cpu_seconds", 0.0)},
+      {"wall_seconds", wall - judging.value("wall_seconds", 0.0)},
       {"peak_mib", result.value("own_peak_mib", double(usage.ru_maxrss) / 1024.0)}};
   return result;
 }
@@ -119,7 +122,8 @@ double own_stage_seconds(const nlohmann::json& stats) {
 void print_rows(const std::vector<nlohmann::json>& rows) {
   std::cout
       << "\nWhole process: CPU seconds and peak memory of a process that reads the input and "
-         "runs one job.\nx DT: against the process that reads the same input and builds "
+         "runs one job,\nless what it spends judging its result against the input's mesh.\nx DT: "
+         "against the process that reads the same input and builds "
          "CGAL's Delaunay triangulation of it.\nThe stage columns (and DT core) are wall-clock "
          "seconds inside the process.\n";
   std::cout << fmt::format("\n{:<20}{:>9}{:>17}{:>17}{:>8}{:>8}{:>8}{:>8}{:>8}{:>9}{:>7}{:>8}\n",
@@ -184,25 +188,62 @@ void print_rows(const std::vector<nlohmann::json>& rows) {
   }
 }
 
+// The CPU seconds (user + system) this process has used so far.
+double process_cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+// A job also judges what it made: the share of the input mesh's triangles reproduced, the
+// topology of the mesh and of CGAL's Advancing Front's result. The work being measured does none
+// of that (the Advancing Front does not check its result; Sculpt's own topology stage is part of
+// every method and stays in), so its time is recorded apart and taken off the process's
+// (run_job_process). Bunny00 subdivided: 0.022 s in the Delaunay's job, 0.054 in robust's,
+// 0.082 in the Advancing Front's.
+class Evaluation_time {
+ public:
+  template <class Work>
+  void measure(Work&& work) {
+    const double cpu = process_cpu_seconds();
+    const auto start = std::chrono::steady_clock::now();
+    work();
+    cpu_seconds_ += process_cpu_seconds() - cpu;
+    wall_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  nlohmann::json json() const {
+    return {{"cpu_seconds", cpu_seconds_}, {"wall_seconds", wall_seconds_}};
+  }
+
+ private:
+  double cpu_seconds_ = 0, wall_seconds_ = 0;
+};
+
 template <int D>
 nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::Input& input,
                           const Bench_job& job) {
   nlohmann::json out;
+  Evaluation_time evaluation;
   const auto add_reproduced = [&](const std::vector<Facet<D>>& facets) {
     if constexpr (D == 3) {
-      if (!input.reference_triangles.empty())
-        out["reproduced"] = triangles_reproduced(input.reference_triangles, facets);
+      if (input.reference_triangles.empty()) return;
+      evaluation.measure(
+          [&] { out["reproduced"] = triangles_reproduced(input.reference_triangles, facets); });
     }
   };
   if (job.job == "delaunay") {
     out["seconds"] = delaunay_seconds(points);
     if constexpr (D == 3) {
       if (!input.reference_triangles.empty()) {
-        const Statistics own = facet_topology(points.size(), input.reference_triangles);
-        out["reference"] = {{"triangles", input.reference_triangles.size()},
-                            {"euler_characteristic", own.euler_characteristic},
-                            {"components", own.components},
-                            {"boundary_loops", own.boundary_loops}};
+        evaluation.measure([&] {
+          const Statistics own = facet_topology(points.size(), input.reference_triangles);
+          out["reference"] = {{"triangles", input.reference_triangles.size()},
+                              {"euler_characteristic", own.euler_characteristic},
+                              {"components", own.components},
+                              {"boundary_loops", own.boundary_loops}};
+        });
       }
     }
   } else if (job.job == "advancing-front") {
@@ -211,7 +252,8 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
       const auto facets = cgal_advancing_front(points);
       const double seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const Statistics stats = facet_topology(points.size(), facets);
+      Statistics stats;
+      evaluation.measure([&] { stats = facet_topology(points.size(), facets); });
       Run_description run;
       run.input = input.description;
       out = report_json(stats, run);
@@ -239,6 +281,7 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
   out["samples"] = points.size();
   out["dimension"] = D;
   out["read_seconds"] = input.read_seconds;
+  out["evaluation"] = evaluation.json();
   return out;
 }
 
