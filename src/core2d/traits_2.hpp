@@ -9,6 +9,7 @@
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/property_map.h>
 
 #include <sculpt/sculpt.hpp>
 #include <utility>

@@ -8,6 +8,7 @@
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/property_map.h>
 
 #include <iterator>
 #include <sculpt/sculpt.hpp>
