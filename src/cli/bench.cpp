@@ -38,6 +38,12 @@ double own_peak_mib() {
   return 0;
 }
 
+// The CPU seconds (user + system) a resource usage records.
+double cpu_seconds(const rusage& usage) {
+  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 // Runs this executable as `sculpt bench-job ARGUMENTS...` and returns the JSON it prints, with
 // the process's CPU time (user + system), wall time and peak resident memory.
 nlohmann::json run_job_process(const std::vector<std::string>& arguments) {
@@ -77,12 +83,10 @@ nlohmann::json run_job_process(const std::vector<std::string>& arguments) {
   }
   auto result = nlohmann::json::parse(text, nullptr, false);
   if (result.is_discarded()) return {{"error", "the measuring process wrote no JSON"}};
-  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
   // Less the time the job spent judging its result (Evaluation_time).
   const auto judging = result.value("evaluation", nlohmann::json::object());
   result["process"] = {
-      {"cpu_seconds",
-       seconds(usage.ru_utime) + seconds(usage.ru_stime) - judging.value("cpu_seconds", 0.0)},
+      {"cpu_seconds", cpu_seconds(usage) - judging.value("cpu_seconds", 0.0)},
       {"wall_seconds", wall - judging.value("wall_seconds", 0.0)},
       {"peak_mib", result.value("own_peak_mib", double(usage.ru_maxrss) / 1024.0)}};
   return result;
@@ -192,8 +196,7 @@ void print_rows(const std::vector<nlohmann::json>& rows) {
 double process_cpu_seconds() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  const auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
-  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+  return cpu_seconds(usage);
 }
 
 // A job also judges what it made: the share of the input mesh's triangles reproduced, the

@@ -28,6 +28,11 @@ inline std::uint64_t directed_key(int a, int b) {
          static_cast<std::uint32_t>(b);
 }
 
+// How many edges a surface of this many triangles has, about: a closed one's, and some border.
+inline std::size_t expected_edge_count(std::size_t triangles) {
+  return 3 * triangles / 2 + 16;
+}
+
 class Edge_map {
  public:
   // The triangles of an edge, in increasing order.
@@ -40,7 +45,7 @@ class Edge_map {
   };
 
   explicit Edge_map(const std::vector<Facet<3>>& triangles) {
-    numbers_.reserve(3 * triangles.size() / 2 + 16);  // a closed surface's edges, and some border
+    numbers_.reserve(expected_edge_count(triangles.size()));
     // First the edges, numbered as met, and how many triangles each has; then the triangles in
     // their ranges.
     std::vector<int> count;

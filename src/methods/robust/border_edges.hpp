@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "../../core/key_table.hpp"
+#include "../extraction/edge_map.hpp"
 #include "../extraction/manifold_extraction.hpp"
 #include "../extraction/vector3.hpp"
 
@@ -19,7 +20,7 @@ using Edge_uses = Key_table<int>;
 
 inline Edge_uses edge_uses(const std::vector<Facet<3>>& triangles) {
   Edge_uses uses;
-  uses.reserve(3 * triangles.size() / 2 + 16);  // a closed surface's edges, and some border
+  uses.reserve(extraction_detail::expected_edge_count(triangles.size()));
   for (const auto& t : triangles) {
     for (int j = 0; j < 3; ++j) ++uses[extraction_detail::edge_key(t[j], t[(j + 1) % 3])];
   }
