@@ -9,6 +9,9 @@
 #include <set>
 #include <tuple>
 
+#include "core2d/traits_2.hpp"
+#include "core3d/traits_3.hpp"
+#include "methods/power_crust/power_crust_method.hpp"
 #include "scene_support.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
@@ -42,6 +45,56 @@ double diagonal(const std::vector<Point<D>>& points) {
     for (int k = 0; k < D; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
   }
   return std::sqrt(squared_distance<D>(lo, hi));
+}
+
+// The power diagram stage inserts the poles one at a time (to report progress) as CGAL's range
+// insertion does: the same regular triangulation, its vertices and cells (faces) in the same
+// order, each vertex knowing its pole. Hidden poles are inserted too (the samples of a shape
+// give nearly cospherical poles, where CGAL falls back on exact predicates).
+template <class Traits>
+void expect_power_diagram_in_cgals_order(const std::vector<Point<Traits::dimension>>& samples) {
+  constexpr int D = Traits::dimension;
+  using Kernel = typename Traits::Kernel;
+  using Regular = power_crust_detail::Regular<D, Kernel>;
+  const auto result = reconstruct(samples, testing::with_method(Method::power_crust));
+  ASSERT_GT(result.poles.poles.size(), 100u);
+  Statistics unused;
+  const Options options;
+  const Stage_clock clock(unused, options);
+  Regular stepwise;
+  power_crust_detail::build_power_diagram<Kernel>(stepwise, result, clock);
+  const auto weighted = power_crust_detail::weighted_poles<Kernel>(result);
+  const Regular at_once(weighted.begin(), weighted.end());
+  // Each cell (face) as the poles of its vertices, -1 for the infinite vertex, in order.
+  const auto cells = [](const Regular& regular) {
+    std::vector<int> poles;
+    const auto add = [&](auto cell) {
+      for (int i = 0; i <= D; ++i) {
+        poles.push_back(regular.is_infinite(cell->vertex(i)) ? -1 : cell->vertex(i)->info());
+      }
+    };
+    if constexpr (D == 3) {
+      for (auto cell : regular.all_cell_handles()) add(cell);
+    } else {
+      for (auto face : regular.all_face_handles()) add(face);
+    }
+    return poles;
+  };
+  std::vector<std::pair<typename Regular::Weighted_point, int>> ours, cgals;
+  for (auto v : stepwise.finite_vertex_handles()) {
+    ours.push_back({v->point(), v->info()});
+    EXPECT_EQ(weighted[v->info()].first, v->point()) << "a vertex knows its pole";
+  }
+  for (auto v : at_once.finite_vertex_handles()) cgals.push_back({v->point(), v->info()});
+  EXPECT_GT(ours.size(), weighted.size() / 2);
+  EXPECT_EQ(ours, cgals);
+  EXPECT_EQ(cells(stepwise), cells(at_once));
+}
+
+TEST(PowerCrust, ThePowerDiagramStageInsertsInCgalsOrder) {
+  expect_power_diagram_in_cgals_order<Traits_3>(shapes::bumpy_sphere(3000));
+  expect_power_diagram_in_cgals_order<Traits_3>(shapes::torus(2000));
+  expect_power_diagram_in_cgals_order<Traits_2>(shapes::star(300).samples);
 }
 
 TEST(PowerCrust, ClosedOutwardManifoldsOfTheShapesGenus) {

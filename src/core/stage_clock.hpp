@@ -24,14 +24,15 @@ inline double usual_weight(const char* stage) {
   static const struct {
     const char* name;
     double weight;
-  } weights[] = {
-      {"checks", 0.02},    {"delaunay", 1.0},     {"poles", 0.3},     {"seeds", 0.01},
-      {"labelling", 0.3},  {"propagation", 0.3},  {"queries", 0.3},   {"insertion", 0.5},
-      {"carving", 0.5},    {"solid", 0.05},       {"surface", 0.05},  {"topology", 0.05},
-      {"voronoi", 0.3},    {"crust", 2.0},        {"filtering", 0.3}, {"pruning", 0.5},
-      {"walk", 0.5},       {"mending", 0.05},     {"cocone", 1.0},    {"undersampling", 0.2},
-      {"peeling", 0.5},    {"power-crust", 10.0}, {"sculpting", 1.0}, {"advancing-front", 5.0},
-      {"alpha-shape", 5.0}};
+  } weights[] = {{"checks", 0.02},         {"delaunay", 1.0},      {"poles", 0.3},
+                 {"seeds", 0.01},          {"labelling", 0.3},     {"propagation", 0.3},
+                 {"queries", 0.3},         {"insertion", 0.5},     {"carving", 0.5},
+                 {"solid", 0.05},          {"surface", 0.05},      {"topology", 0.05},
+                 {"voronoi", 0.3},         {"crust", 2.0},         {"filtering", 0.3},
+                 {"pruning", 0.5},         {"walk", 0.5},          {"mending", 0.05},
+                 {"cocone", 1.0},          {"undersampling", 0.2}, {"peeling", 0.5},
+                 {"power diagram", 7.0},   {"power-crust", 2.5},   {"sculpting", 1.0},
+                 {"advancing-front", 5.0}, {"alpha-shape", 5.0}};
   for (const auto& w : weights) {
     if (std::strcmp(w.name, stage) == 0) return w.weight;
   }

@@ -75,7 +75,7 @@ inline std::vector<const char*> planned_stages(const Options& options, int dimen
       add({"cocone", "undersampling", "pruning", "walk", "peeling", "solid", "surface"});
       break;
     case Method::power_crust:
-      add({"seeds", "labelling", "power-crust"});
+      add({"seeds", "labelling", "power diagram", "power-crust"});
       break;
     case Method::advancing_front:
       add({"advancing-front"});

@@ -1,8 +1,9 @@
 // The power crust of Amenta, Choi and Kolluri (2001), for closed curves and surfaces:
 //   for each sample s: p+(s), p-(s) <- its poles, each with its polar ball   (stage 2, shared)
 //   label the poles inner or outer, most confident first                      (ACK 2001, sec. 5)
-//   PD <- the power diagram of the poles, pole p weighted by r(p)^2
-//   crust <- the faces of PD between the cell of an inner and of an outer pole
+//   PD <- the power diagram of the poles, pole p weighted by r(p)^2          (stage "power
+//   diagram") crust <- the faces of PD between the cell of an inner and of an outer pole
+//   ("power-crust")
 // The union of the inner polar balls approximates the solid and the outer ones its complement;
 // where an inner and an outer power cell meet is the surface. Its vertices are the power
 // diagram's (the weighted circumcentres of the regular triangulation's cells), not the samples:
@@ -20,10 +21,14 @@
 #include <CGAL/Regular_triangulation_3.h>
 #include <CGAL/Regular_triangulation_face_base_2.h>
 #include <CGAL/Regular_triangulation_vertex_base_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 
 #include <algorithm>
 #include <array>
@@ -109,18 +114,95 @@ Point<D> weighted_circumcentre(const std::array<Weighted, D + 1>& cell, const Po
   return rounded;
 }
 
-// The poles as weighted points (centre, squared radius), each with its index: `make` builds a
-// CGAL weighted point of the dimension from a centre and a weight.
-template <class Weighted, int D, class Make>
-std::vector<std::pair<Weighted, int>> weighted_poles(const Reconstruction<D>& result, Make&& make) {
+// CGAL's regular triangulations whose vertices know their poles (and cells, faces in 2D, a
+// number of their own).
+template <class Kernel>
+using Regular_3 = CGAL::Regular_triangulation_3<
+    Kernel, CGAL::Triangulation_data_structure_3<
+                CGAL::Triangulation_vertex_base_with_info_3<
+                    int, Kernel, CGAL::Regular_triangulation_vertex_base_3<Kernel>>,
+                CGAL::Triangulation_cell_base_with_info_3<
+                    int, Kernel, CGAL::Regular_triangulation_cell_base_3<Kernel>>>>;
+template <class Kernel>
+using Regular_2 = CGAL::Regular_triangulation_2<
+    Kernel, CGAL::Triangulation_data_structure_2<
+                CGAL::Triangulation_vertex_base_with_info_2<
+                    int, Kernel, CGAL::Regular_triangulation_vertex_base_2<Kernel>>,
+                CGAL::Triangulation_face_base_with_info_2<
+                    int, Kernel, CGAL::Regular_triangulation_face_base_2<Kernel>>>>;
+template <int D, class Kernel>
+using Regular = std::conditional_t<D == 3, Regular_3<Kernel>, Regular_2<Kernel>>;
+
+// The poles as weighted points (centre, squared radius), each with its index.
+template <class Kernel, int D>
+auto weighted_poles(const Reconstruction<D>& result) {
+  using Weighted = typename Regular<D, Kernel>::Weighted_point;
   const auto& poles = result.poles.poles;
   std::vector<std::pair<Weighted, int>> weighted;
   weighted.reserve(poles.size());
   for (std::size_t p = 0; p < poles.size(); ++p) {
-    weighted.push_back(
-        {make(poles[p].center, poles[p].radius * poles[p].radius), static_cast<int>(p)});
+    const Point<D>& c = poles[p].center;
+    const double weight = poles[p].radius * poles[p].radius;
+    if constexpr (D == 3) {
+      weighted.push_back({Weighted(typename Kernel::Point_3(c[0], c[1], c[2]), weight), int(p)});
+    } else {
+      weighted.push_back({Weighted(typename Kernel::Point_2(c[0], c[1]), weight), int(p)});
+    }
   }
   return weighted;
+}
+
+// The power diagram's dual: the regular triangulation of the poles, pole p weighted by r(p)^2,
+// its vertices knowing their poles. The poles are inserted one at a time, as CGAL's insertion of
+// a range with infos does it (sorted in space the same way, each located from the last one
+// inserted, a hidden pole from the cell that hides it), so that the stage can report progress:
+// it is most of the method's time (bunny00: 0.96 s of 1.29; poles of one sample have equal power
+// at it, so CGAL's predicates often fall back on exact arithmetic). The triangulation is the same
+// and numbered the same as the range insertion's.
+template <class Kernel, int D>
+void build_power_diagram(Regular<D, Kernel>& regular, const Reconstruction<D>& result,
+                         const Stage_clock& clock) {
+  using Triangulation = Regular<D, Kernel>;
+  using Bare = std::conditional_t<D == 3, typename Kernel::Point_3, typename Kernel::Point_2>;
+  const auto weighted = weighted_poles<Kernel>(result);
+  std::vector<Bare> bare;
+  bare.reserve(weighted.size());
+  for (const auto& [point, pole] : weighted) bare.push_back(point.point());
+  std::vector<std::size_t> order(weighted.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  using Bare_of_index = typename CGAL::Pointer_property_map<Bare>::type;
+  using Sort_traits =
+      std::conditional_t<D == 3, CGAL::Spatial_sort_traits_adapter_3<Kernel, Bare_of_index>,
+                         CGAL::Spatial_sort_traits_adapter_2<Kernel, Bare_of_index>>;
+  CGAL::spatial_sort(order.begin(), order.end(), Sort_traits(CGAL::make_property_map(bare)));
+  if constexpr (D == 3) {
+    typename Triangulation::Cell_handle hint;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (k % 4096 == 0) clock.report(double(k) / double(order.size()));
+      const auto& [point, pole] = weighted[order[k]];
+      typename Triangulation::Locate_type type;
+      int li, lj;
+      const auto cell = regular.locate(point, type, li, lj, hint);
+      const auto vertex = regular.insert(point, type, cell, li, lj);
+      if (vertex == typename Triangulation::Vertex_handle()) {
+        hint = cell;  // hidden
+      } else {
+        vertex->info() = pole;
+        hint = vertex->cell();
+      }
+    }
+  } else {
+    typename Triangulation::Face_handle hint;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (k % 4096 == 0) clock.report(double(k) / double(order.size()));
+      const auto& [point, pole] = weighted[order[k]];
+      const auto vertex = regular.insert(point, hint);
+      if (vertex != typename Triangulation::Vertex_handle()) {  // else hidden: the hint stays
+        vertex->info() = pole;
+        hint = vertex->face();
+      }
+    }
+  }
 }
 
 // Whether the edge between two poles separates an inner cell from an outer one; `inner_first`
@@ -136,22 +218,13 @@ inline bool separates(const std::vector<Label>& labels, int a, int b, bool& inne
 // triangulation from an inner to an outer pole, the polygon of the weighted circumcentres of
 // the cells around it, fanned into triangles facing from the inner pole to the outer one.
 template <class Kernel>
-void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& vertices,
-                   std::vector<Facet<3>>& faces, std::size_t& unbounded_faces) {
-  using Vertex_base = CGAL::Triangulation_vertex_base_with_info_3<
-      int, Kernel, CGAL::Regular_triangulation_vertex_base_3<Kernel>>;
-  using Cell_base =
-      CGAL::Triangulation_cell_base_with_info_3<int, Kernel,
-                                                CGAL::Regular_triangulation_cell_base_3<Kernel>>;
-  using Tds = CGAL::Triangulation_data_structure_3<Vertex_base, Cell_base>;
-  using Regular = CGAL::Regular_triangulation_3<Kernel, Tds>;
+void power_faces_3(Regular_3<Kernel>& regular, const Reconstruction<3>& result,
+                   std::vector<Point<3>>& vertices, std::vector<Facet<3>>& faces,
+                   std::size_t& unbounded_faces, const Stage_clock& clock) {
+  using Regular = Regular_3<Kernel>;
   using Weighted = typename Kernel::Weighted_point_3;
 
   const auto& labels = result.propagation.labels;
-  const auto weighted = weighted_poles<Weighted>(result, [](const Point<3>& c, double weight) {
-    return Weighted(typename Kernel::Point_3(c[0], c[1], c[2]), weight);
-  });
-  Regular regular(weighted.begin(), weighted.end());
   // Cells numbered in the container's order, which does not depend on addresses; each gets its
   // crust vertex when first used.
   int cells = 0;
@@ -204,7 +277,9 @@ void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& verti
                    separating.end());
   std::vector<typename Regular::Cell_handle> around;
   std::vector<int> ring;
-  for (const auto& [poles_of_edge, edge] : separating) {
+  for (std::size_t k = 0; k < separating.size(); ++k) {
+    if (k % 16384 == 0) clock.report(double(k) / double(separating.size()));
+    const auto& edge = separating[k].second;
     const auto u = edge.first->vertex(edge.second), v = edge.first->vertex(edge.third);
     bool inner_first = false;
     separates(labels, u->info(), v->info(), inner_first);
@@ -263,22 +338,13 @@ void power_faces_3(const Reconstruction<3>& result, std::vector<Point<3>>& verti
 // dual to a segment between the weighted circumcentres of its two faces, directed with the
 // inner pole on its left (a closed curve then runs counterclockwise around what it encloses).
 template <class Kernel>
-void power_faces_2(const Reconstruction<2>& result, std::vector<Point<2>>& vertices,
-                   std::vector<Facet<2>>& faces, std::size_t& unbounded_faces) {
-  using Vertex_base = CGAL::Triangulation_vertex_base_with_info_2<
-      int, Kernel, CGAL::Regular_triangulation_vertex_base_2<Kernel>>;
-  using Face_base =
-      CGAL::Triangulation_face_base_with_info_2<int, Kernel,
-                                                CGAL::Regular_triangulation_face_base_2<Kernel>>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vertex_base, Face_base>;
-  using Regular = CGAL::Regular_triangulation_2<Kernel, Tds>;
+void power_faces_2(Regular_2<Kernel>& regular, const Reconstruction<2>& result,
+                   std::vector<Point<2>>& vertices, std::vector<Facet<2>>& faces,
+                   std::size_t& unbounded_faces, const Stage_clock&) {
+  using Regular = Regular_2<Kernel>;
   using Weighted = typename Kernel::Weighted_point_2;
 
   const auto& labels = result.propagation.labels;
-  const auto weighted = weighted_poles<Weighted>(result, [](const Point<2>& c, double weight) {
-    return Weighted(typename Kernel::Point_2(c[0], c[1]), weight);
-  });
-  Regular regular(weighted.begin(), weighted.end());
   int faces_counted = 0;
   for (auto face : regular.all_face_handles()) face->info() = faces_counted++;
   std::vector<int> vertex_of_face(faces_counted, -1);
@@ -342,14 +408,18 @@ void run_power_crust_method(Reconstruction<Traits::dimension>& result, Stage_clo
   label_poles_by_confidence(result, clock);
   count_labels(result);
 
+  clock.start("power diagram");
+  using Kernel = typename Traits::Kernel;
+  power_crust_detail::Regular<D, Kernel> regular;
+  power_crust_detail::build_power_diagram<Kernel>(regular, result, clock);
   clock.start("power-crust");
   std::size_t unbounded = 0;
   if constexpr (D == 3) {
-    power_crust_detail::power_faces_3<typename Traits::Kernel>(result, result.surface_vertices,
-                                                               result.surface, unbounded);
+    power_crust_detail::power_faces_3<Kernel>(regular, result, result.surface_vertices,
+                                              result.surface, unbounded, clock);
   } else {
-    power_crust_detail::power_faces_2<typename Traits::Kernel>(result, result.surface_vertices,
-                                                               result.surface, unbounded);
+    power_crust_detail::power_faces_2<Kernel>(regular, result, result.surface_vertices,
+                                              result.surface, unbounded, clock);
   }
   result.stats.unbounded_power_faces = unbounded;
 }
