@@ -183,12 +183,12 @@ TEST(SculptedSolid, RebuildingGivesTheTriangulationInsertionGives) {
 
 // Stage 1 inserts step by step (for its progress) what CGAL's range insertion inserts at once,
 // in the same order: the vertices, in the triangulation's own order, are the same points.
-template <class Traits, class Plain>
+template <class Traits, class Plain, class Stepwise = typename Traits::Triangulation>
 void expect_cgal_insertion_order(const std::vector<Point<Traits::dimension>>& sites) {
   Statistics unused;
   const Options options;
   const Stage_clock clock(unused, options);
-  typename Traits::Triangulation stepwise;
+  Stepwise stepwise;
   insert_in_spatial_order<Traits>(stepwise, sites, 0, clock);
   std::vector<typename Traits::Cgal_point> points;
   for (const auto& site : sites) points.push_back(Traits::to_cgal(site));
@@ -209,6 +209,23 @@ TEST(SculptedSolid, TheDelaunayStageInsertsInCgalsOrder) {
   expect_cgal_insertion_order<Traits_3, CGAL::Delaunay_triangulation_3<Traits_3::Kernel>>(
       cube_lattice(6));
   expect_cgal_insertion_order<Traits_2, CGAL::Delaunay_triangulation_2<Traits_2::Kernel>>(
+      shapes::star(200).samples);
+}
+
+// The crusts insert the samples and the Voronoi vertices into a triangulation of their own
+// (vertices with infos, cells without) the same way.
+TEST(SculptedSolid, TheCrustsTriangulationsInsertInCgalsOrder) {
+  using Kernel = Traits_3::Kernel;
+  using Crust_3 =
+      CGAL::Delaunay_triangulation_3<Kernel,
+                                     CGAL::Triangulation_data_structure_3<
+                                         CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>>>;
+  expect_cgal_insertion_order<Traits_3, CGAL::Delaunay_triangulation_3<Kernel>, Crust_3>(
+      shapes::hemisphere(3000));
+  using Crust_2 = CGAL::Delaunay_triangulation_2<
+      Traits_2::Kernel, CGAL::Triangulation_data_structure_2<
+                            CGAL::Triangulation_vertex_base_with_info_2<int, Traits_2::Kernel>>>;
+  expect_cgal_insertion_order<Traits_2, CGAL::Delaunay_triangulation_2<Traits_2::Kernel>, Crust_2>(
       shapes::star(200).samples);
 }
 

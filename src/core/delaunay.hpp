@@ -61,8 +61,10 @@ void number_cells(typename Traits::Triangulation& triangulation, bool keep_cells
 // insertion reads them in order (bunny00 subdivided, the stage: 0.57 -> 0.55 s; the insertion
 // alone now takes CGAL's own range insertion's time).
 // The order is the same either way: the sort compares the same points in the same positions.
-template <class Traits>
-void insert_in_spatial_order(typename Traits::Triangulation& triangulation,
+// (The triangulation may be another than the method's first, with vertices of its own: the
+// crust's of the samples and the Voronoi vertices.)
+template <class Traits, class Triangulation = typename Traits::Triangulation>
+void insert_in_spatial_order(Triangulation& triangulation,
                              const std::vector<Point<Traits::dimension>>& sites, std::size_t first,
                              const Stage_clock& clock) {
   std::vector<std::pair<typename Traits::Cgal_point, int>> sorted;
@@ -71,7 +73,7 @@ void insert_in_spatial_order(typename Traits::Triangulation& triangulation,
     sorted.emplace_back(Traits::to_cgal(sites[i]), static_cast<int>(i));
   }
   CGAL::spatial_sort(sorted.begin(), sorted.end(), typename Traits::Spatial_sort_traits());
-  typename Traits::Triangulation::Vertex_handle hint;
+  typename Triangulation::Vertex_handle hint;
   for (std::size_t k = 0; k < sorted.size(); ++k) {
     if (k % 16384 == 0) clock.report(double(k) / double(sorted.size()));
     hint = Traits::insert_near(triangulation, sorted[k].first, hint);

@@ -39,10 +39,14 @@ struct Traits_2 {
   static Cgal_point to_cgal(const Point<2>& p) { return {p[0], p[1]}; }
   static Point<2> from_cgal(const Cgal_point& p) { return {p.x(), p.y()}; }
 
-  // Inserts p, locating it from the faces around `near` (none: from anywhere).
-  static Triangulation::Vertex_handle insert_near(Triangulation& t, const Cgal_point& p,
-                                                  Triangulation::Vertex_handle near) {
-    return t.insert(p, near == Triangulation::Vertex_handle() ? Cell_handle() : near->face());
+  // Inserts p into a Delaunay triangulation (this one, or another with vertices of its own),
+  // locating it from the faces around `near` (none: from anywhere).
+  template <class Any_triangulation = Triangulation>
+  static typename Any_triangulation::Vertex_handle insert_near(
+      Any_triangulation& t, const Cgal_point& p, typename Any_triangulation::Vertex_handle near) {
+    using Face_handle = typename Any_triangulation::Face_handle;
+    return t.insert(
+        p, near == typename Any_triangulation::Vertex_handle() ? Face_handle() : near->face());
   }
 
   static auto finite_cells(const Triangulation& t) { return t.finite_face_handles(); }

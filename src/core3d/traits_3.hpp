@@ -41,9 +41,11 @@ struct Traits_3 {
   static Cgal_point to_cgal(const Point<3>& p) { return {p[0], p[1], p[2]}; }
   static Point<3> from_cgal(const Cgal_point& p) { return {p.x(), p.y(), p.z()}; }
 
-  // Inserts p, locating it from the cells around `near` (none: from anywhere).
-  static Triangulation::Vertex_handle insert_near(Triangulation& t, const Cgal_point& p,
-                                                  Triangulation::Vertex_handle near) {
+  // Inserts p into a Delaunay triangulation (this one, or another with vertices of its own),
+  // locating it from the cells around `near` (none: from anywhere).
+  template <class Any_triangulation = Triangulation>
+  static typename Any_triangulation::Vertex_handle insert_near(
+      Any_triangulation& t, const Cgal_point& p, typename Any_triangulation::Vertex_handle near) {
     return t.insert(p, near);
   }
 

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/delaunay.hpp"
 #include "../../core/stage_clock.hpp"
 #include "nn_crust.hpp"
 
@@ -32,20 +33,19 @@ void run_crust_method(const typename Traits::Triangulation& triangulation,
   clock.start("voronoi");
   const int n = static_cast<int>(result.sample_count());
   auto& crust = result.crust;
-  std::vector<std::pair<typename Traits::Cgal_point, int>> sites;
+  // The samples, then the Voronoi vertices: each vertex knows its index in that list.
+  std::vector<Point<2>> sites(result.sites.begin(), result.sites.begin() + n);
   sites.reserve(n + result.delaunay.cell_count);
-  for (int s = 0; s < n; ++s) sites.push_back({Traits::to_cgal(result.sites[s]), s});
   for (auto cell : Traits::finite_cells(triangulation)) {
-    const auto center = Traits::circumcenter(triangulation, cell);
-    sites.push_back({center, n + static_cast<int>(crust.voronoi_vertices.size())});
-    crust.voronoi_vertices.push_back(Traits::from_cgal(center));
+    crust.voronoi_vertices.push_back(Traits::from_cgal(Traits::circumcenter(triangulation, cell)));
+    sites.push_back(crust.voronoi_vertices.back());
   }
 
   clock.start("crust");
-  // Range insertion sorts spatially; a Voronoi vertex repeated (four cocircular samples) is one
-  // vertex.
+  // Inserted as CGAL's range insertion would (spatially sorted), reporting progress; a Voronoi
+  // vertex repeated (four cocircular samples) is one vertex.
   Crust_triangulation with_voronoi;
-  with_voronoi.insert(sites.begin(), sites.end());
+  insert_in_spatial_order<Traits>(with_voronoi, sites, 0, clock);
   crust.delaunay.cell_count = with_voronoi.number_of_faces();
   if (result.options.keep_triangulations) {
     for (auto face : with_voronoi.finite_face_handles()) {

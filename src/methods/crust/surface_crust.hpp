@@ -20,6 +20,7 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/delaunay.hpp"
 #include "../../core/stage_clock.hpp"
 #include "../cocone/cocone_method.hpp"
 #include "../extraction/manifold_extraction.hpp"
@@ -75,15 +76,17 @@ void run_surface_crust_method(const typename Traits::Triangulation& /*stage_1*/,
   clock.start("crust");
   const int n = static_cast<int>(result.sample_count());
   auto& crust = result.crust;
-  std::vector<std::pair<typename Traits::Cgal_point, int>> sites;
+  // The samples, then the poles: each vertex knows its index in that list. Inserted as CGAL's
+  // range insertion would, reporting progress (the stage is a Delaunay triangulation of about
+  // three times the samples).
+  std::vector<Point<3>> sites(result.sites.begin(), result.sites.begin() + n);
   sites.reserve(n + result.poles.poles.size());
-  for (int s = 0; s < n; ++s) sites.push_back({Traits::to_cgal(result.sites[s]), s});
   for (const auto& pole : result.poles.poles) {
-    sites.push_back({Traits::to_cgal(pole.center), static_cast<int>(sites.size())});
+    sites.push_back(pole.center);
     crust.voronoi_vertices.push_back(pole.center);
   }
   Crust_triangulation with_poles;
-  with_poles.insert(sites.begin(), sites.end());
+  insert_in_spatial_order<Traits>(with_poles, sites, 0, clock);
   crust.delaunay.cell_count = with_poles.number_of_finite_cells();
   if (result.options.keep_triangulations) {
     for (auto cell : with_poles.finite_cell_handles()) {
