@@ -16,6 +16,7 @@
 // joins two finite circumcentres.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <sculpt/sculpt.hpp>
 #include <vector>
@@ -76,10 +77,15 @@ void run_cocone_method(const typename Traits::Triangulation& triangulation,
   for (auto cell : Traits::finite_cells(triangulation)) {
     circumcentres[cell->info()] = Traits::from_cgal(Traits::circumcenter(triangulation, cell));
   }
-  // Every triangle between samples, with its Voronoi edge and the co-cones that edge meets.
+  // Every triangle between samples: its Voronoi edge widens its vertices' cells and is kept, with
+  // the co-cones it meets, if it meets one.
   std::vector<Cocone_triangle> triangles;
+  std::vector<double> width(n, 0.0);
+  const double facets = 2.0 * static_cast<double>(result.delaunay.cell_count);  // about
+  std::size_t visited = 0;
   for (auto facet = triangulation.finite_facets_begin(); facet != triangulation.finite_facets_end();
        ++facet) {
+    if (++visited % 262144 == 0) clock.report(std::min(1.0, double(visited) / facets));
     const auto& [cell, opposite] = *facet;
     const auto other = cell->neighbor(opposite);
     if (triangulation.is_infinite(cell) || triangulation.is_infinite(other)) continue;
@@ -90,18 +96,21 @@ void run_cocone_method(const typename Traits::Triangulation& triangulation,
       all_samples = all_samples && t.samples[j] < n;
     }
     if (!all_samples) continue;
-    t.from = circumcentres[cell->info()];
-    t.to = circumcentres[other->info()];
+    const Point<3>& from = circumcentres[cell->info()];
+    const Point<3>& to = circumcentres[other->info()];
+    widen_by_voronoi_edge(result, vectors, t.samples, from, to, width);
+    bool meets_one = false;
     for (int j = 0; j < 3; ++j) {
       const int v = t.samples[j];
-      t.meets_cocone[j] = segment_meets_cocone(result.sites[v], vectors[v], t.from, t.to);
+      t.meets_cocone[j] = segment_meets_cocone(result.sites[v], vectors[v], from, to);
+      meets_one = meets_one || t.meets_cocone[j];
     }
-    triangles.push_back(t);
+    if (meets_one) triangles.push_back(t);
   }
   circumcentres = {};
 
   clock.start("undersampling");
-  const std::vector<bool> undersampled = undersampled_samples(result, vectors, triangles);
+  const std::vector<bool> undersampled = undersampled_samples(result, vectors, width, triangles);
   for (int s = 0; s < n; ++s) {
     if (undersampled[s]) result.candidates.undersampled.push_back(s);
   }

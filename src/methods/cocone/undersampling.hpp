@@ -35,38 +35,48 @@ inline constexpr double thin_cell_ratio = 1 / 1.2;
 // Neighbours' normals (unoriented) agree within this angle.
 inline constexpr double normal_agreement_angle = M_PI / 3;
 
-// What the detection needs to know about one Delaunay triangle between samples: its vertices,
-// the two ends of its Voronoi edge, and whether that edge meets each vertex's co-cone.
+// A Delaunay triangle between samples whose Voronoi edge meets the co-cone of at least one of its
+// vertices (which, for each vertex): the co-cone's candidates, and its neighbour relation. The
+// others are never chosen and make no neighbours, so they are not kept (16 bytes a triangle,
+// where keeping every triangle with its Voronoi edge took 64: bunny00 subdivided, 2.1M of them).
 struct Cocone_triangle {
   Facet<3> samples;
-  Point<3> from, to;
   std::array<bool, 3> meets_cocone;
 };
 
-// Returns, per sample, whether it is undersampled.
+// The width r(p) of each sample's Voronoi cell, grown one Voronoi edge at a time: where the edge
+// from `from` to `to`, dual to a triangle of the samples in `samples`, crosses the plane through
+// each of them normal to its v(p). `width` starts at 0 for every sample.
+inline void widen_by_voronoi_edge(const Reconstruction<3>& result,
+                                  const std::vector<std::array<double, 3>>& normals,
+                                  const Facet<3>& samples, const Point<3>& from, const Point<3>& to,
+                                  std::vector<double>& width) {
+  using namespace extraction_detail;
+  for (int j = 0; j < 3; ++j) {
+    const int p = samples[j];
+    const Point<3>& at = result.sites[p];
+    const double a = dot(minus(from, at), normals[p]);
+    const double b = dot(minus(to, at), normals[p]);
+    if ((a > 0) == (b > 0) || a == b) continue;  // on one side of the plane
+    const double s = a / (a - b);
+    Point<3> crossing;
+    for (int k = 0; k < 3; ++k) crossing[k] = from[k] + s * (to[k] - from[k]);
+    const Vector d = minus(crossing, at);
+    width[p] = std::max(width[p], std::sqrt(dot(d, d)));
+  }
+}
+
+// Returns, per sample, whether it is undersampled, from the widths of the Voronoi cells
+// (widen_by_voronoi_edge over every Voronoi edge dual to a triangle of samples) and the triangles
+// whose Voronoi edge meets a co-cone.
 inline std::vector<bool> undersampled_samples(const Reconstruction<3>& result,
                                               const std::vector<std::array<double, 3>>& normals,
+                                              const std::vector<double>& width,
                                               const std::vector<Cocone_triangle>& triangles) {
   using namespace extraction_detail;
   const int n = static_cast<int>(result.sample_count());
   const auto& stage = result.poles;
 
-  // The width: where each Voronoi edge of p crosses the plane through p normal to v(p).
-  std::vector<double> width(n, 0);
-  for (const auto& t : triangles) {
-    for (int j = 0; j < 3; ++j) {
-      const int p = t.samples[j];
-      const Point<3>& at = result.sites[p];
-      const double a = dot(minus(t.from, at), normals[p]);
-      const double b = dot(minus(t.to, at), normals[p]);
-      if ((a > 0) == (b > 0) || a == b) continue;  // on one side of the plane
-      const double s = a / (a - b);
-      Point<3> crossing;
-      for (int k = 0; k < 3; ++k) crossing[k] = t.from[k] + s * (t.to[k] - t.from[k]);
-      const Vector d = minus(crossing, at);
-      width[p] = std::max(width[p], std::sqrt(dot(d, d)));
-    }
-  }
   std::vector<bool> thin(n, false);
   for (int p = 0; p < n; ++p) {
     double height = INFINITY;
