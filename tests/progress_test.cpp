@@ -2,7 +2,9 @@
 // all), and the overall fraction a caller sees only grows, from 0 to 1.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/stage_plan.hpp"
@@ -74,6 +76,28 @@ TEST(Progress, TheAutomaticKindFillsTheBarOnce) {
   check_automatic_progress<2>(shapes::open_arc(40).samples, Surface_kind::bordered);
   check_automatic_progress<3>(shapes::bumpy_sphere(600), Surface_kind::closed);
   check_automatic_progress<3>(shapes::hemisphere(1500), Surface_kind::bordered);
+}
+
+// The long stages of the peers report how far they are within the stage, not only at its start
+// and end: CGAL's triangulations built point by point (the crust's, the power diagram), and the
+// passes over the facets, triangles and cells after them.
+TEST(Progress, TheLongStagesOfThePeersFillTheirBars) {
+  const auto samples = shapes::sphere(40000);
+  for (const auto& [method, stages] : std::vector<std::pair<Method, std::vector<std::string>>>{
+           {Method::crust, {"crust", "pruning", "walk"}},
+           {Method::tight_cocone, {"cocone", "pruning", "walk", "peeling"}},
+           {Method::power_crust, {"power diagram", "power-crust"}}}) {
+    Options options = testing::with_method(method);
+    std::set<std::string> reported_within;
+    options.progress = [&](const Progress& p) {
+      if (p.fraction > 0 && p.fraction < 1) reported_within.insert(p.stage);
+      return true;
+    };
+    reconstruct(samples, options);
+    for (const auto& stage : stages) {
+      EXPECT_TRUE(reported_within.count(stage)) << to_string(method) << ": " << stage;
+    }
+  }
 }
 
 }  // namespace

@@ -179,13 +179,20 @@ void run_tight_cocone_method(const typename Traits::Triangulation& triangulation
       for (int i = 0; i < 4; ++i) box = box || cell->vertex(i)->info() >= n;
       if (box) peel_cell(cell);
     }
+    // How far: the good samples reached, each once (all of them on a closed surface).
+    const double good_samples = static_cast<double>(std::count(good.begin(), good.end(), true));
+    std::size_t popped = 0, reached_samples = 0;
     while (!front.empty()) {
+      if (++popped % 65536 == 0 && good_samples > 0) {
+        clock.report(std::min(1.0, double(reached_samples) / good_samples));
+      }
       const auto cell = front.front();
       front.pop_front();
       for (int i = 0; i < 4; ++i) {
         const int site = cell->vertex(i)->info();
         if (!is_good(site) || visited[site]) continue;
         visited[site] = true;
+        ++reached_samples;
         mark_about(cell, site);
       }
       for (int i = 0; i < 4; ++i) {
