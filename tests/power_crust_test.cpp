@@ -49,15 +49,15 @@ double diagonal(const std::vector<Point<D>>& points) {
 
 // The power diagram stage inserts the poles one at a time (to report progress) as CGAL's range
 // insertion does: the same regular triangulation, its vertices and cells (faces) in the same
-// order, each vertex knowing its pole. Hidden poles are inserted too (the samples of a shape
-// give nearly cospherical poles, where CGAL falls back on exact predicates).
+// order, each vertex knowing its pole. (The poles of a shape's samples are nearly cospherical:
+// CGAL falls back on exact predicates there, and the noisy sphere has more such ties.)
 template <class Traits>
 void expect_power_diagram_in_cgals_order(const std::vector<Point<Traits::dimension>>& samples) {
   constexpr int D = Traits::dimension;
   using Kernel = typename Traits::Kernel;
   using Regular = power_crust_detail::Regular<D, Kernel>;
   const auto result = reconstruct(samples, testing::with_method(Method::power_crust));
-  ASSERT_GT(result.poles.poles.size(), 100u);
+  EXPECT_GT(result.poles.poles.size(), 100u);
   Statistics unused;
   const Options options;
   const Stage_clock clock(unused, options);
@@ -94,6 +94,7 @@ void expect_power_diagram_in_cgals_order(const std::vector<Point<Traits::dimensi
 TEST(PowerCrust, ThePowerDiagramStageInsertsInCgalsOrder) {
   expect_power_diagram_in_cgals_order<Traits_3>(shapes::bumpy_sphere(3000));
   expect_power_diagram_in_cgals_order<Traits_3>(shapes::torus(2000));
+  expect_power_diagram_in_cgals_order<Traits_3>(shapes::noisy_sphere(3000, 0.3));
   expect_power_diagram_in_cgals_order<Traits_2>(shapes::star(300).samples);
 }
 

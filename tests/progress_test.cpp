@@ -82,7 +82,7 @@ TEST(Progress, TheAutomaticKindFillsTheBarOnce) {
 // and end: CGAL's triangulations built point by point (the crust's, the power diagram), and the
 // passes over the facets, triangles and cells after them.
 TEST(Progress, TheLongStagesOfThePeersFillTheirBars) {
-  const auto samples = shapes::sphere(40000);
+  const auto samples = shapes::sphere(12000);
   for (const auto& [method, stages] : std::vector<std::pair<Method, std::vector<std::string>>>{
            {Method::crust, {"crust", "pruning", "walk"}},
            {Method::tight_cocone, {"cocone", "pruning", "walk", "peeling"}},
@@ -90,6 +90,7 @@ TEST(Progress, TheLongStagesOfThePeersFillTheirBars) {
     Options options = testing::with_method(method);
     std::set<std::string> reported_within;
     options.progress = [&](const Progress& p) {
+      EXPECT_TRUE(p.fraction >= 0 && p.fraction <= 1) << p.stage << " " << p.fraction;
       if (p.fraction > 0 && p.fraction < 1) reported_within.insert(p.stage);
       return true;
     };

@@ -183,12 +183,12 @@ TEST(SculptedSolid, RebuildingGivesTheTriangulationInsertionGives) {
 
 // Stage 1 inserts step by step (for its progress) what CGAL's range insertion inserts at once,
 // in the same order: the vertices, in the triangulation's own order, are the same points.
-template <class Traits, class Plain, class Stepwise = typename Traits::Triangulation>
+template <class Traits, class Plain>
 void expect_cgal_insertion_order(const std::vector<Point<Traits::dimension>>& sites) {
   Statistics unused;
   const Options options;
   const Stage_clock clock(unused, options);
-  Stepwise stepwise;
+  typename Traits::Triangulation stepwise;
   insert_in_spatial_order<Traits>(stepwise, sites, 0, clock);
   std::vector<typename Traits::Cgal_point> points;
   for (const auto& site : sites) points.push_back(Traits::to_cgal(site));
@@ -212,21 +212,63 @@ TEST(SculptedSolid, TheDelaunayStageInsertsInCgalsOrder) {
       shapes::star(200).samples);
 }
 
-// The crusts insert the samples and the Voronoi vertices into a triangulation of their own
-// (vertices with infos, cells without) the same way.
+// The crusts insert the samples and the Voronoi vertices (or poles) into a triangulation of their
+// own, vertices with infos and cells without, by the same stepwise insertion: it must give what
+// CGAL's range insertion with infos gives, repeated points included (the Voronoi vertices of a
+// lattice repeat: two triangles of each square share a circumcentre). Vertices with their
+// indices and cells as their vertices' indices, in order.
+template <class Traits, class Crust>
+void expect_crust_insertion_order(const std::vector<Point<Traits::dimension>>& samples) {
+  constexpr int D = Traits::dimension;
+  typename Traits::Triangulation first;
+  for (const auto& s : samples) Traits::insert_near(first, Traits::to_cgal(s), {});
+  std::vector<Point<D>> sites = samples;
+  for (auto cell : Traits::finite_cells(first)) {
+    sites.push_back(Traits::from_cgal(Traits::circumcenter(first, cell)));
+  }
+  Statistics unused;
+  const Options options;
+  const Stage_clock clock(unused, options);
+  Crust stepwise;
+  insert_in_spatial_order<Traits>(stepwise, sites, 0, clock);
+  std::vector<std::pair<typename Traits::Cgal_point, int>> pairs;
+  for (std::size_t i = 0; i < sites.size(); ++i) {
+    pairs.push_back({Traits::to_cgal(sites[i]), static_cast<int>(i)});
+  }
+  const Crust at_once(pairs.begin(), pairs.end());
+  const auto described = [](const Crust& t) {
+    std::vector<std::pair<typename Traits::Cgal_point, int>> vertices;
+    for (auto v : t.finite_vertex_handles()) vertices.push_back({v->point(), v->info()});
+    std::vector<int> cells;
+    const auto add = [&](auto cell) {
+      for (int i = 0; i <= D; ++i) {
+        cells.push_back(t.is_infinite(cell->vertex(i)) ? -1 : cell->vertex(i)->info());
+      }
+    };
+    if constexpr (D == 3) {
+      for (auto cell : t.all_cell_handles()) add(cell);
+    } else {
+      for (auto face : t.all_face_handles()) add(face);
+    }
+    return std::make_pair(vertices, cells);
+  };
+  EXPECT_EQ(described(stepwise), described(at_once));
+  EXPECT_LT(stepwise.number_of_vertices(), sites.size()) << "repeated points are one vertex";
+}
+
 TEST(SculptedSolid, TheCrustsTriangulationsInsertInCgalsOrder) {
   using Kernel = Traits_3::Kernel;
-  using Crust_3 =
-      CGAL::Delaunay_triangulation_3<Kernel,
-                                     CGAL::Triangulation_data_structure_3<
-                                         CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>>>;
-  expect_cgal_insertion_order<Traits_3, CGAL::Delaunay_triangulation_3<Kernel>, Crust_3>(
-      shapes::hemisphere(3000));
-  using Crust_2 = CGAL::Delaunay_triangulation_2<
-      Traits_2::Kernel, CGAL::Triangulation_data_structure_2<
-                            CGAL::Triangulation_vertex_base_with_info_2<int, Traits_2::Kernel>>>;
-  expect_cgal_insertion_order<Traits_2, CGAL::Delaunay_triangulation_2<Traits_2::Kernel>, Crust_2>(
-      shapes::star(200).samples);
+  expect_crust_insertion_order<
+      Traits_3, CGAL::Delaunay_triangulation_3<
+                    Kernel, CGAL::Triangulation_data_structure_3<
+                                CGAL::Triangulation_vertex_base_with_info_3<int, Kernel>>>>(
+      cube_lattice(6));
+  expect_crust_insertion_order<
+      Traits_2, CGAL::Delaunay_triangulation_2<
+                    Traits_2::Kernel,
+                    CGAL::Triangulation_data_structure_2<
+                        CGAL::Triangulation_vertex_base_with_info_2<int, Traits_2::Kernel>>>>(
+      square_lattice(12));
 }
 
 TEST(SculptedSolid, QueriesMatchInsertionOnCurves) {

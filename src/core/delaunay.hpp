@@ -61,8 +61,9 @@ void number_cells(typename Traits::Triangulation& triangulation, bool keep_cells
 // insertion reads them in order (bunny00 subdivided, the stage: 0.57 -> 0.55 s; the insertion
 // alone now takes CGAL's own range insertion's time).
 // The order is the same either way: the sort compares the same points in the same positions.
-// (The triangulation may be another than the method's first, with vertices of its own: the
-// crust's of the samples and the Voronoi vertices.)
+// The triangulation may be of another type than the method's first: the crusts' (the samples
+// with the Voronoi vertices, or with the poles). A repeated point is one vertex, knowing the
+// index of its last copy in the sorted order, as with CGAL's range insertion.
 template <class Traits, class Triangulation = typename Traits::Triangulation>
 void insert_in_spatial_order(Triangulation& triangulation,
                              const std::vector<Point<Traits::dimension>>& sites, std::size_t first,

@@ -183,7 +183,7 @@ void run_tight_cocone_method(const typename Traits::Triangulation& triangulation
     const double good_samples = static_cast<double>(std::count(good.begin(), good.end(), true));
     std::size_t popped = 0, reached_samples = 0;
     while (!front.empty()) {
-      if (++popped % 65536 == 0 && good_samples > 0) {
+      if (++popped % 16384 == 0 && good_samples > 0) {
         clock.report(std::min(1.0, double(reached_samples) / good_samples));
       }
       const auto cell = front.front();

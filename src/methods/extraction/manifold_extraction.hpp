@@ -95,10 +95,10 @@ enum class Rims { pruned, kept };
 using Progress_report = std::function<void(double)>;
 
 namespace extraction_detail {
-// Every 65,536 steps of `total`, reports how far `done` is.
+// Every 16,384 steps of `total`, reports how far `done` is.
 inline void report_every_so_often(const Progress_report& progress, std::size_t done,
                                   std::size_t total) {
-  if (progress && done % 65536 == 0 && total > 0) {
+  if (progress && done % 16384 == 0 && total > 0) {
     progress(std::min(1.0, double(done) / double(total)));
   }
 }
