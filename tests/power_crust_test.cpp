@@ -65,21 +65,6 @@ void expect_power_diagram_in_cgals_order(const std::vector<Point<Traits::dimensi
   power_crust_detail::build_power_diagram<Kernel>(stepwise, result, clock);
   const auto weighted = power_crust_detail::weighted_poles<Kernel>(result);
   const Regular at_once(weighted.begin(), weighted.end());
-  // Each cell (face) as the poles of its vertices, -1 for the infinite vertex, in order.
-  const auto cells = [](const Regular& regular) {
-    std::vector<int> poles;
-    const auto add = [&](auto cell) {
-      for (int i = 0; i <= D; ++i) {
-        poles.push_back(regular.is_infinite(cell->vertex(i)) ? -1 : cell->vertex(i)->info());
-      }
-    };
-    if constexpr (D == 3) {
-      for (auto cell : regular.all_cell_handles()) add(cell);
-    } else {
-      for (auto face : regular.all_face_handles()) add(face);
-    }
-    return poles;
-  };
   std::vector<std::pair<typename Regular::Weighted_point, int>> ours, cgals;
   for (auto v : stepwise.finite_vertex_handles()) {
     ours.push_back({v->point(), v->info()});
@@ -88,7 +73,8 @@ void expect_power_diagram_in_cgals_order(const std::vector<Point<Traits::dimensi
   for (auto v : at_once.finite_vertex_handles()) cgals.push_back({v->point(), v->info()});
   EXPECT_GT(ours.size(), weighted.size() / 2);
   EXPECT_EQ(ours, cgals);
-  EXPECT_EQ(cells(stepwise), cells(at_once));
+  EXPECT_EQ(testing::cells_as_vertex_infos<D>(stepwise),
+            testing::cells_as_vertex_infos<D>(at_once));
 }
 
 TEST(PowerCrust, ThePowerDiagramStageInsertsInCgalsOrder) {

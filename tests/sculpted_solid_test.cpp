@@ -239,18 +239,7 @@ void expect_crust_insertion_order(const std::vector<Point<Traits::dimension>>& s
   const auto described = [](const Crust& t) {
     std::vector<std::pair<typename Traits::Cgal_point, int>> vertices;
     for (auto v : t.finite_vertex_handles()) vertices.push_back({v->point(), v->info()});
-    std::vector<int> cells;
-    const auto add = [&](auto cell) {
-      for (int i = 0; i <= D; ++i) {
-        cells.push_back(t.is_infinite(cell->vertex(i)) ? -1 : cell->vertex(i)->info());
-      }
-    };
-    if constexpr (D == 3) {
-      for (auto cell : t.all_cell_handles()) add(cell);
-    } else {
-      for (auto face : t.all_face_handles()) add(face);
-    }
-    return std::make_pair(vertices, cells);
+    return std::make_pair(vertices, testing::cells_as_vertex_infos<D>(t));
   };
   EXPECT_EQ(described(stepwise), described(at_once));
   EXPECT_LT(stepwise.number_of_vertices(), sites.size()) << "repeated points are one vertex";

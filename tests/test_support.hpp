@@ -134,4 +134,23 @@ inline void expect_closed_manifold(const Reconstruction<3>& r, long euler_charac
   }
 }
 
+// Every cell of a CGAL triangulation (face in 2D) whose vertices carry an int info, in the
+// container's order, as its vertices' infos (-1 for the infinite vertex): two triangulations
+// built alike give the same list.
+template <int D, class Triangulation>
+std::vector<int> cells_as_vertex_infos(const Triangulation& t) {
+  std::vector<int> infos;
+  const auto add = [&](auto cell) {
+    for (int i = 0; i <= D; ++i) {
+      infos.push_back(t.is_infinite(cell->vertex(i)) ? -1 : cell->vertex(i)->info());
+    }
+  };
+  if constexpr (D == 3) {
+    for (auto cell : t.all_cell_handles()) add(cell);
+  } else {
+    for (auto face : t.all_face_handles()) add(face);
+  }
+  return infos;
+}
+
 }  // namespace sculpt::testing
