@@ -58,9 +58,8 @@ void expect_power_diagram_in_cgals_order(const std::vector<Point<Traits::dimensi
   using Regular = power_crust_detail::Regular<D, Kernel>;
   const auto result = reconstruct(samples, testing::with_method(Method::power_crust));
   EXPECT_GT(result.poles.poles.size(), 100u);
-  Statistics unused;
-  const Options options;
-  const Stage_clock clock(unused, options);
+  const testing::Silent_clock silent;
+  const Stage_clock& clock = silent.clock;
   Regular stepwise;
   power_crust_detail::build_power_diagram<Kernel>(stepwise, result, clock);
   const auto weighted = power_crust_detail::weighted_poles<Kernel>(result);

@@ -185,9 +185,8 @@ TEST(SculptedSolid, RebuildingGivesTheTriangulationInsertionGives) {
 // in the same order: the vertices, in the triangulation's own order, are the same points.
 template <class Traits, class Plain>
 void expect_cgal_insertion_order(const std::vector<Point<Traits::dimension>>& sites) {
-  Statistics unused;
-  const Options options;
-  const Stage_clock clock(unused, options);
+  const testing::Silent_clock silent;
+  const Stage_clock& clock = silent.clock;
   typename Traits::Triangulation stepwise;
   insert_in_spatial_order<Traits>(stepwise, sites, 0, clock);
   std::vector<typename Traits::Cgal_point> points;
@@ -226,9 +225,8 @@ void expect_crust_insertion_order(const std::vector<Point<Traits::dimension>>& s
   for (auto cell : Traits::finite_cells(first)) {
     sites.push_back(Traits::from_cgal(Traits::circumcenter(first, cell)));
   }
-  Statistics unused;
-  const Options options;
-  const Stage_clock clock(unused, options);
+  const testing::Silent_clock silent;
+  const Stage_clock& clock = silent.clock;
   Crust stepwise;
   insert_in_spatial_order<Traits>(stepwise, sites, 0, clock);
   std::vector<std::pair<typename Traits::Cgal_point, int>> pairs;

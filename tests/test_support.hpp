@@ -11,7 +11,16 @@
 #include <utility>
 #include <vector>
 
+#include "core/stage_clock.hpp"
+
 namespace sculpt::testing {
+
+// A stage clock that tells no one, for calling a stage's function on its own.
+struct Silent_clock {
+  Statistics stats;
+  Options options;
+  Stage_clock clock{stats, options};
+};
 
 // The default options with another method.
 inline Options with_method(Method method) {

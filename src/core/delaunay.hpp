@@ -76,7 +76,7 @@ void insert_in_spatial_order(Triangulation& triangulation,
   CGAL::spatial_sort(sorted.begin(), sorted.end(), typename Traits::Spatial_sort_traits());
   typename Triangulation::Vertex_handle hint;
   for (std::size_t k = 0; k < sorted.size(); ++k) {
-    if (k % 16384 == 0) clock.report(double(k) / double(sorted.size()));
+    clock.report_every(k, sorted.size(), 16384);
     hint = Traits::insert_near(triangulation, sorted[k].first, hint);
     hint->info() = sorted[k].second;
   }

@@ -79,6 +79,11 @@ class Stage_clock {
     if (!options_.progress(Progress{stage, fraction, overall(stage, fraction)})) throw Cancelled();
   }
   void report(double fraction) const { report(name_, fraction); }
+  // For a loop of `total` steps: every `every` steps, reports how far step `done` is (at most 1:
+  // a loop may take more steps than it expected).
+  void report_every(std::size_t done, std::size_t total, std::size_t every) const {
+    if (done % every == 0 && total > 0) report(std::min(1.0, double(done) / double(total)));
+  }
 
  private:
   // The planned stages before this one and this one's fraction, by weight; a stage outside

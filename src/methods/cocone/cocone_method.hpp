@@ -16,7 +16,6 @@
 // joins two finite circumcentres.
 #pragma once
 
-#include <algorithm>
 #include <cmath>
 #include <sculpt/sculpt.hpp>
 #include <vector>
@@ -81,11 +80,11 @@ void run_cocone_method(const typename Traits::Triangulation& triangulation,
   // the co-cones it meets, if it meets one.
   std::vector<Cocone_triangle> triangles;
   std::vector<double> width(n, 0.0);
-  const double expected_facets = 2.0 * static_cast<double>(result.delaunay.cell_count);
+  const std::size_t expected_facets = 2 * result.delaunay.cell_count;
   std::size_t visited = 0;
   for (auto facet = triangulation.finite_facets_begin(); facet != triangulation.finite_facets_end();
        ++facet) {
-    if (++visited % 65536 == 0) clock.report(std::min(1.0, double(visited) / expected_facets));
+    clock.report_every(++visited, expected_facets, 65536);
     const auto& [cell, opposite] = *facet;
     const auto other = cell->neighbor(opposite);
     if (triangulation.is_infinite(cell) || triangulation.is_infinite(other)) continue;

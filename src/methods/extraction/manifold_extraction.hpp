@@ -25,7 +25,6 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
-#include <functional>
 #include <memory>
 #include <sculpt/sculpt.hpp>
 #include <vector>
@@ -91,24 +90,11 @@ inline int third_vertex(const Facet<3>& t, int a, int b) {
 // How the pruning treats a triangle with an edge of its own.
 enum class Rims { pruned, kept };
 
-// Told, now and then, how far a long loop has come (a fraction, 0 to 1); none: not told.
-using Progress_report = std::function<void(double)>;
-
-namespace extraction_detail {
-// Every 16,384 steps of `total`, reports how far `done` is.
-inline void report_every_so_often(const Progress_report& progress, std::size_t done,
-                                  std::size_t total) {
-  if (progress && done % 16384 == 0 && total > 0) {
-    progress(std::min(1.0, double(done) / double(total)));
-  }
-}
-}  // namespace extraction_detail
-
 // Removes, repeatedly, the triangles on a sharp edge; returns the removed ones in order and
-// leaves the others in `triangles`.
+// leaves the others in `triangles`. `clock`, if given, is told how far it is.
 inline std::vector<Facet<3>> prune_sharp_edges(const std::vector<Point<3>>& points,
                                                std::vector<Facet<3>>& triangles, Rims rims,
-                                               const Progress_report& progress = {}) {
+                                               const Stage_clock* clock = nullptr) {
   using namespace extraction_detail;
   const Edge_map edges(triangles);
   std::vector<char> removed(triangles.size(), 0);
@@ -161,7 +147,7 @@ inline std::vector<Facet<3>> prune_sharp_edges(const std::vector<Point<3>>& poin
   for (int t = 0; t < static_cast<int>(triangles.size()); ++t) to_check[t] = t;
   std::size_t checked = 0;  // every triangle at least once, some again
   while (!to_check.empty()) {
-    report_every_so_often(progress, ++checked, triangles.size());
+    if (clock) clock->report_every(++checked, triangles.size(), 16384);
     const int t = to_check.front();
     to_check.pop_front();
     if (removed[t]) continue;
@@ -188,8 +174,8 @@ inline std::vector<Facet<3>> prune_sharp_edges(const std::vector<Point<3>>& poin
 // (or with rims kept at once, for a surface known to have borders). `rims` tells which ran.
 inline std::vector<Facet<3>> prune_candidates(const std::vector<Point<3>>& points,
                                               std::vector<Facet<3>>& triangles, Rims& rims,
-                                              const Progress_report& progress = {}) {
-  if (rims == Rims::kept) return prune_sharp_edges(points, triangles, Rims::kept, progress);
+                                              const Stage_clock* clock = nullptr) {
+  if (rims == Rims::kept) return prune_sharp_edges(points, triangles, Rims::kept, clock);
   const auto covered = [&](const std::vector<Facet<3>>& set) {
     std::vector<char> on(points.size(), 0);
     for (const auto& t : set) {
@@ -198,12 +184,12 @@ inline std::vector<Facet<3>> prune_candidates(const std::vector<Point<3>>& point
     return std::count(on.begin(), on.end(), 1);
   };
   std::vector<Facet<3>> kept = triangles;
-  auto pruned = prune_sharp_edges(points, kept, Rims::pruned, progress);
+  auto pruned = prune_sharp_edges(points, kept, Rims::pruned, clock);
   rims = Rims::pruned;
   if (covered(kept) < covered(triangles)) {
     rims = Rims::kept;
     kept = triangles;
-    pruned = prune_sharp_edges(points, kept, Rims::kept, progress);
+    pruned = prune_sharp_edges(points, kept, Rims::kept, clock);
   }
   triangles = std::move(kept);
   return pruned;
@@ -211,9 +197,10 @@ inline std::vector<Facet<3>> prune_candidates(const std::vector<Point<3>>& point
 
 // The outer boundary of the triangles' union, oriented outward: one walk per piece, each started
 // at the triangle of the piece's extreme sample (largest x) whose normal points most along x.
+// `clock`, if given, is told how far it is.
 inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& points,
                                                  const std::vector<Facet<3>>& triangles,
-                                                 const Progress_report& progress = {}) {
+                                                 const Stage_clock* clock = nullptr) {
   using namespace extraction_detail;
   const Edge_map edges(triangles);
   std::vector<char> taken(triangles.size(), 0);
@@ -227,7 +214,7 @@ inline std::vector<Facet<3>> walk_outer_boundary(const std::vector<Point<3>>& po
   const auto direction = [](int from, int to) { return from < to ? 1 : 2; };
   const auto take = [&](const Facet<3>& t) {
     surface.push_back(t);
-    report_every_so_often(progress, surface.size(), triangles.size());
+    if (clock) clock->report_every(surface.size(), triangles.size(), 16384);
     for (int k = 0; k < 3; ++k) {
       used[edges.index(t[k], t[(k + 1) % 3])] |= direction(t[k], t[(k + 1) % 3]);
     }
@@ -364,12 +351,11 @@ inline void extract_manifold(const std::vector<Point<3>>& samples, Reconstructio
   result.stats.candidate_facets = chosen.size();
   clock.start("pruning");
   std::vector<Facet<3>> kept = chosen;
-  const Progress_report progress = [&](double fraction) { clock.report(fraction); };
-  result.candidates.pruned = prune_candidates(samples, kept, rims, progress);
+  result.candidates.pruned = prune_candidates(samples, kept, rims, &clock);
   result.candidates.rims_kept = result.stats.rims_kept = rims == Rims::kept;
   result.stats.pruned_facets = result.candidates.pruned.size();
   clock.start("walk");
-  result.surface = walk_outer_boundary(samples, kept, progress);
+  result.surface = walk_outer_boundary(samples, kept, &clock);
 }
 
 }  // namespace sculpt

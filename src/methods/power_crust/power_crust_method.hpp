@@ -34,6 +34,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <numeric>
 #include <sculpt/sculpt.hpp>
 #include <type_traits>
 #include <utility>
@@ -170,7 +171,7 @@ void build_power_diagram(Regular<D, Kernel>& regular, const Reconstruction<D>& r
   bare.reserve(weighted.size());
   for (const auto& [point, pole] : weighted) bare.push_back(point.point());
   std::vector<std::size_t> order(weighted.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::iota(order.begin(), order.end(), std::size_t{0});
   using Bare_of_index = typename CGAL::Pointer_property_map<Bare>::type;
   using Sort_traits =
       std::conditional_t<D == 3, CGAL::Spatial_sort_traits_adapter_3<Kernel, Bare_of_index>,
@@ -179,7 +180,7 @@ void build_power_diagram(Regular<D, Kernel>& regular, const Reconstruction<D>& r
   if constexpr (D == 3) {
     typename Triangulation::Cell_handle hint;
     for (std::size_t k = 0; k < order.size(); ++k) {
-      if (k % 4096 == 0) clock.report(double(k) / double(order.size()));
+      clock.report_every(k, order.size(), 4096);
       const auto& [point, pole] = weighted[order[k]];
       typename Triangulation::Locate_type type;
       int li, lj;
@@ -195,7 +196,7 @@ void build_power_diagram(Regular<D, Kernel>& regular, const Reconstruction<D>& r
   } else {
     typename Triangulation::Face_handle hint;
     for (std::size_t k = 0; k < order.size(); ++k) {
-      if (k % 4096 == 0) clock.report(double(k) / double(order.size()));
+      clock.report_every(k, order.size(), 4096);
       const auto& [point, pole] = weighted[order[k]];
       const auto vertex = regular.insert(point, hint);
       // (CGAL returns a hidden pole as a hidden vertex in 2D; none only while it is empty.)
@@ -280,7 +281,7 @@ void power_faces_3(Regular_3<Kernel>& regular, const Reconstruction<3>& result,
   std::vector<typename Regular::Cell_handle> around;
   std::vector<int> ring;
   for (std::size_t k = 0; k < separating.size(); ++k) {
-    if (k % 4096 == 0) clock.report(double(k) / double(separating.size()));
+    clock.report_every(k, separating.size(), 4096);
     const auto& edge = separating[k].second;
     const auto u = edge.first->vertex(edge.second), v = edge.first->vertex(edge.third);
     bool inner_first = false;
