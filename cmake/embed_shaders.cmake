@@ -1,6 +1,6 @@
 # Writes OUTPUT, a C++ file that holds each GLSL file of SHADER_DIR as a string constant named
 # after it (points.vert -> points_vert), so the programs need no files at run time.
-file(GLOB shader_files "${SHADER_DIR}/*.vert" "${SHADER_DIR}/*.geom" "${SHADER_DIR}/*.frag")
+file(GLOB shader_files "${SHADER_DIR}/*.vert" "${SHADER_DIR}/*.frag")
 list(SORT shader_files)
 set(content "// Generated from shaders/ by cmake/embed_shaders.cmake: do not edit.\n")
 string(APPEND content "#include \"render/shader_sources.hpp\"\n\nnamespace sculpt::render::shaders {\n")

@@ -1,4 +1,3 @@
-#version 330 core
 in vec2 local;
 uniform vec4 color;
 uniform bool translucent;

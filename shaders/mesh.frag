@@ -1,4 +1,3 @@
-#version 330 core
 // Triangles lit by a headlight: flat shading from the screen-space derivatives of the position,
 // or smooth from vertex normals. Both sides are lit, so a bordered sheet shows from behind.
 in vec3 view_position;

@@ -1,4 +1,3 @@
-#version 330 core
 // Round points with a thin dark rim, so overlapping points stay apart. In 3D each is shaded as
 // a small sphere lit from the upper left of the viewer, so points read as lying in depth, and
 // its depth follows the sphere's front, so nearer points cover farther ones roundly.

@@ -1,4 +1,3 @@
-#version 330 core
 // Points with a size in pixels, whatever the zoom.
 layout(location = 0) in vec3 position;
 uniform mat4 view_projection;

@@ -1,4 +1,3 @@
-#version 330 core
 // Overlays (legend, title) in pixel coordinates, origin at the top left.
 layout(location = 0) in vec3 position;
 uniform vec2 viewport;

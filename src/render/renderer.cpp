@@ -14,7 +14,8 @@ namespace {
 
 GLuint compile(GLenum kind, const char* source) {
   const GLuint shader = glCreateShader(kind);
-  glShaderSource(shader, 1, &source, nullptr);
+  const char* parts[] = {shader_header, source};
+  glShaderSource(shader, 2, parts, nullptr);
   glCompileShader(shader);
   GLint ok = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -26,18 +27,13 @@ GLuint compile(GLenum kind, const char* source) {
   return shader;
 }
 
-GLuint link(const char* vertex, const char* geometry, const char* fragment) {
+GLuint link(const char* vertex, const char* fragment) {
   const GLuint program = glCreateProgram();
-  const GLuint shaders[3] = {compile(GL_VERTEX_SHADER, vertex),
-                             geometry ? compile(GL_GEOMETRY_SHADER, geometry) : 0,
+  const GLuint shaders[2] = {compile(GL_VERTEX_SHADER, vertex),
                              compile(GL_FRAGMENT_SHADER, fragment)};
-  for (GLuint s : shaders) {
-    if (s) glAttachShader(program, s);
-  }
+  for (GLuint s : shaders) glAttachShader(program, s);
   glLinkProgram(program);
-  for (GLuint s : shaders) {
-    if (s) glDeleteShader(s);
-  }
+  for (GLuint s : shaders) glDeleteShader(s);
   GLint ok = 0;
   glGetProgramiv(program, GL_LINK_STATUS, &ok);
   if (!ok) {
@@ -59,17 +55,20 @@ void set_color(GLuint program, const scene::Color& c) {
 }  // namespace
 
 struct Renderer::Programs {
-  GLuint points = link(shaders::points_vert, nullptr, shaders::points_frag);
-  GLuint lines = link(shaders::lines_vert, shaders::lines_geom, shaders::flat_frag);
-  GLuint mesh = link(shaders::mesh_vert, nullptr, shaders::mesh_frag);
-  GLuint balls = link(shaders::balls_vert, shaders::balls_geom, shaders::balls_frag);
-  GLuint screen = link(shaders::screen_vert, nullptr, shaders::flat_frag);
+  GLuint points = link(shaders::points_vert, shaders::points_frag);
+  GLuint lines = link(shaders::lines_vert, shaders::flat_frag);
+  GLuint mesh = link(shaders::mesh_vert, shaders::mesh_frag);
+  GLuint balls = link(shaders::balls_vert, shaders::balls_frag);
+  GLuint screen = link(shaders::screen_vert, shaders::flat_frag);
   ~Programs() {
     for (GLuint p : {points, lines, mesh, balls, screen}) glDeleteProgram(p);
   }
 };
 
 // A layer's vertex array: positions (location 0), normals (1) and radii (2) as it needs them.
+// Lines and balls are drawn as instances of a four-vertex strip, the shaders widening each into
+// a quad (WebGL has no geometry shaders): their attributes advance once per instance, a line's
+// two ends read from consecutive positions (locations 0 and 3).
 struct Renderer::Gpu_layer {
   GLuint array = 0;
   GLuint buffers[3] = {0, 0, 0};
@@ -102,15 +101,28 @@ void Renderer::set_scene(const scene::Scene& scene) {
     glGenVertexArrays(1, &gpu.array);
     glBindVertexArray(gpu.array);
     glGenBuffers(3, gpu.buffers);
+    const bool instanced =
+        layer.primitive == scene::Primitive::lines || layer.primitive == scene::Primitive::balls;
+    const auto pointer = [&](int location, int components, int stride, std::size_t offset) {
+      glEnableVertexAttribArray(location);
+      glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<const void*>(offset));
+      glVertexAttribDivisor(location, instanced ? 1 : 0);
+    };
     const auto attribute = [&](int location, GLuint buffer, const void* data, std::size_t bytes,
                                int components) {
       glBindBuffer(GL_ARRAY_BUFFER, buffer);
       glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
-      glEnableVertexAttribArray(location);
-      glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, 0, nullptr);
+      pointer(location, components, 0, 0);
     };
     attribute(0, gpu.buffers[0], layer.positions.data(),
               layer.positions.size() * sizeof(scene::Vec3), 3);
+    if (layer.primitive == scene::Primitive::lines) {
+      // A segment's start and end: every other position, from the first and from the second.
+      constexpr int segment = 2 * sizeof(scene::Vec3);
+      pointer(0, 3, segment, 0);
+      pointer(3, 3, segment, sizeof(scene::Vec3));
+    }
     if (gpu.has_normals) {
       attribute(1, gpu.buffers[1], layer.normals.data(), layer.normals.size() * sizeof(scene::Vec3),
                 3);
@@ -138,7 +150,9 @@ void Renderer::draw(const Camera& camera, int width, int height, const Draw_opti
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-  glEnable(GL_PROGRAM_POINT_SIZE);
+#ifndef __EMSCRIPTEN__
+  glEnable(GL_PROGRAM_POINT_SIZE);  // always on in OpenGL ES
+#endif
 
   const bool three = scene_.dimension == 3;
   if (three) {
@@ -220,7 +234,7 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
       glUniform2f(uniform(p, "viewport"), float(width), float(height));
       glUniform1f(uniform(p, "line_width"), info.size);
       set_color(p, info.color);
-      glDrawArrays(GL_LINES, 0, layer.count);
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, layer.count / 2);
       break;
     }
     case scene::Primitive::triangles: {
@@ -247,7 +261,7 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
       glUniform1f(uniform(p, "line_width"), info.size);
       set_color(p, info.color);
       glDepthMask(GL_FALSE);
-      glDrawArrays(GL_POINTS, 0, layer.count);
+      glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, layer.count);
       glDepthMask(GL_TRUE);
       break;
     }
