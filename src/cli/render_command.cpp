@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "frontend/command_line.hpp"
+#include "frontend/shot_renderer.hpp"
 #include "io/io_error.hpp"
 #include "io/point_reader.hpp"
 #include "scene/scene.hpp"

@@ -13,7 +13,7 @@
 #include "cgal_meshes.hpp"
 #include "frontend/input.hpp"
 #include "frontend/pseudo_code.hpp"
-#include "frontend/shots.hpp"
+#include "frontend/shot_renderer.hpp"
 #include "io/atomic_file.hpp"
 #include "io/io_error.hpp"
 

@@ -150,7 +150,7 @@ scene::Request request_of(const Shot& shot) {
 
 }  // namespace
 
-Picture draw_shot(render::Headless_renderer& renderer, const Shot& shot,
+Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* inline_camera) {
   const scene::Request request = request_of(shot);
   const auto [width, height] = parse_size(shot.size);
@@ -217,7 +217,7 @@ std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& r
 
 }  // namespace
 
-scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inline_camera) {
+void check_shot(const Shot& shot) {
   if (shot.output.empty()) throw io::Error("a shot has no output file");
   const bool animated = !shot.animate.empty();
   if (animated && shot.animate != "replay" && shot.animate != "stages")
@@ -230,14 +230,14 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
     throw io::Error(problem);
   io::check_output_folder(shot.output);  // before any work
   io::check_output_folder(shot.save_camera);
-  if (shot.input.empty() == shot.example.empty()) {
-    throw io::Error("a shot needs an input file or an example (one of them)");
-  }
   request_of(shot);  // an unknown stage or size fails before any work
   parse_size(shot.size);
-  const Any_reconstruction& shown = reconstruction(shot);
-  if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
-  if (animated) {
+}
+
+scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
+                        const Any_reconstruction& shown, const nlohmann::json* inline_camera) {
+  check_shot(shot);
+  if (!shot.animate.empty()) {
     std::vector<render::Image> images;
     scene::Scene last;
     // The replay follows the pole just labelled, as the viewer does (render::follow_point),
@@ -262,7 +262,7 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
         followed = render::to_json(*camera);
       }
       Picture picture =
-          draw_shot(*renderer_, frame, shown, followed.is_null() ? inline_camera : &followed);
+          draw_shot(renderer, frame, shown, followed.is_null() ? inline_camera : &followed);
       if (!camera) {
         camera = picture.camera;
         lower = render::to_glm(picture.scene.lower);
@@ -281,7 +281,7 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* inlin
     }
     return last;
   }
-  Picture picture = draw_shot(*renderer_, shot, shown, inline_camera);
+  Picture picture = draw_shot(renderer, shot, shown, inline_camera);
   if (!shot.save_camera.empty()) {
     io::Atomic_file file(shot.save_camera, false);
     file.stream() << render::to_json(picture.camera).dump(2) << '\n';
@@ -295,32 +295,6 @@ Any_reconstruction reconstruct_input(const Input& input, const Options& options)
   return std::visit(
       [&](const auto& points) -> Any_reconstruction { return reconstruct(points, options); },
       input.points);
-}
-
-const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
-  const std::string key = shot.input + "|" + shot.example + "|" + to_string(kind_of(shot)) + "|" +
-                          std::to_string(shot.dimension) + "|" + std::to_string(shot.box_factor) +
-                          "|" + shot.rule + "|" + shot.method + "|" + std::to_string(shot.alpha) +
-                          "|" + std::to_string(shot.merge_duplicates);
-  auto found = cache_.find(key);
-  if (found != cache_.end()) return found->second;
-  const frontend::Input input =
-      frontend::load_input(shot.input, shot.example, shot.dimension, shot.merge_duplicates);
-  Options options;
-  if (!parse_method(shot.method, options.method)) {
-    std::string names;
-    for (const char* name : method_names()) names += std::string(names.empty() ? "" : ", ") + name;
-    throw io::Error("no method '" + shot.method + "' (methods: " + names + ")");
-  }
-  if (!parse_rule(shot.rule, options.rule)) {
-    throw io::Error("no surface rule '" + shot.rule + "' (rules: auto, skin, extraction)");
-  }
-  // An example is reconstructed as its own kind, as in the viewer and the command line.
-  options.kind = kind_of(shot);
-  options.box_factor = shot.box_factor;
-  options.alpha = shot.alpha;
-  Any_reconstruction result = reconstruct_input(input, options);
-  return cache_.emplace(key, std::move(result)).first->second;
 }
 
 }  // namespace sculpt::frontend

@@ -1,5 +1,6 @@
-// Shots read from JSON, and a renderer of shots that reconstructs each input once however many
-// shots show it (`sculpt render`, `sculpt figures`).
+// Shots read from JSON, checked, and drawn from a reconstruction into pictures and animations
+// through any picture renderer: the headless one (frontend/shot_renderer.hpp: `sculpt render`,
+// `sculpt figures`) or the viewer's window (its exports, on the desktop and in the browser).
 #pragma once
 
 #include <map>
@@ -11,7 +12,7 @@
 
 #include "frontend/input.hpp"
 #include "frontend/shot.hpp"
-#include "render/headless.hpp"
+#include "render/picture_renderer.hpp"
 #include "scene/scene.hpp"
 
 namespace sculpt::frontend {
@@ -42,20 +43,18 @@ struct Picture {
   render::Image image;
 };
 // `camera`, if given, replaces the fitted camera. Throws io::Error with a one-line message.
-Picture draw_shot(render::Headless_renderer& renderer, const Shot& shot,
+Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr);
 
-class Shot_renderer {
- public:
-  // Renders a shot to its output PNG. `camera`, if given, replaces the fitted camera.
-  // Returns the scene that was drawn. Throws io::Error with a one-line message.
-  scene::Scene render(const Shot& shot, const nlohmann::json* camera = nullptr);
-  // The reconstruction a shot shows (made once per input and options).
-  const Any_reconstruction& reconstruction(const Shot& shot);
+// What can be known of a shot before any work: its output's format and folder, its stage, size
+// and animation. Throws io::Error with a one-line message.
+void check_shot(const Shot& shot);
 
- private:
-  std::map<std::string, Any_reconstruction> cache_;
-  std::unique_ptr<render::Headless_renderer> renderer_;
-};
+// Writes a shot of `reconstruction` to its output: a PNG, or an animated WebP of the replay or
+// the stages (shot.animate), all or nothing; the camera too where the shot asks (save_camera).
+// Returns the (last) scene drawn. Throws io::Error with a one-line message.
+scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
+                        const Any_reconstruction& reconstruction,
+                        const nlohmann::json* camera = nullptr);
 
 }  // namespace sculpt::frontend

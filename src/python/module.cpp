@@ -20,6 +20,7 @@
 #include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "frontend/shots.hpp"
+#include "render/headless.hpp"
 #include "frontend/statistics_json.hpp"
 #include "io/io_error.hpp"
 #include "io/output_set.hpp"

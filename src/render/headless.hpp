@@ -6,21 +6,20 @@
 
 #include <memory>
 
-#include "render/image.hpp"
-#include "render/renderer.hpp"
+#include "render/picture_renderer.hpp"
 
 namespace sculpt::render {
 
-class Headless_renderer {
+class Headless_renderer : public Picture_renderer {
  public:
   // Throws std::runtime_error if the module cannot be loaded or no GL 3.3 context can be made.
   Headless_renderer();
-  ~Headless_renderer();
+  ~Headless_renderer() override;
   Headless_renderer(const Headless_renderer&) = delete;
   Headless_renderer& operator=(const Headless_renderer&) = delete;
 
   Image render(const scene::Scene& scene, const Camera& camera, int width, int height,
-               const Draw_options& options = {});
+               const Draw_options& options = {}) override;
 
   const char* gl_renderer() const;  // e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
 

@@ -1,6 +1,6 @@
 // The headless rendering module: an OSMesa OpenGL 3.3 core context (Mesa's llvmpipe) drawing
-// into a 4x multisampled offscreen framebuffer, read back as an Image. Built as
-// libsculpt_osmesa.so and loaded by headless.cpp when a picture is first asked for.
+// into a 4x multisampled offscreen framebuffer (render/framebuffer.hpp), read back as an Image.
+// Built as libsculpt_osmesa.so and loaded by headless.cpp when a picture is first asked for.
 #include "render/offscreen.hpp"
 
 // gl.hpp first: osmesa.h includes GL/gl.h, which must see GL_GLEXT_PROTOTYPES.
@@ -8,6 +8,8 @@
 // clang-format off
 #include <GL/osmesa.h>
 // clang-format on
+
+#include "render/framebuffer.hpp"
 
 #include <cstdlib>
 #include <memory>
@@ -56,38 +58,6 @@ struct Osmesa_context {
   }
 };
 
-// A framebuffer of one or several samples with colour and depth renderbuffers.
-class Framebuffer {
- public:
-  Framebuffer(int width, int height, int samples) {
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glGenRenderbuffers(2, renderbuffers_);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[0]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_RGBA8, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                              renderbuffers_[0]);
-    glBindRenderbuffer(GL_RENDERBUFFER, renderbuffers_[1]);
-    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width, height);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                              renderbuffers_[1]);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-      throw std::runtime_error("cannot make a " + std::to_string(width) + "x" +
-                               std::to_string(height) + " offscreen framebuffer");
-    }
-  }
-  ~Framebuffer() {
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glDeleteRenderbuffers(2, renderbuffers_);
-    glDeleteFramebuffers(1, &framebuffer_);
-  }
-  GLuint id() const { return framebuffer_; }
-
- private:
-  GLuint framebuffer_ = 0;
-  GLuint renderbuffers_[2] = {0, 0};
-};
-
 class Osmesa_offscreen : public Offscreen_renderer {
  public:
   Osmesa_offscreen()
@@ -103,25 +73,9 @@ class Osmesa_offscreen : public Offscreen_renderer {
 
   Image render(const scene::Scene& scene, const Camera& camera, int width, int height,
                const Draw_options& options) override {
-    if (width <= 0 || height <= 0 || width > max_image_side || height > max_image_side) {
-      throw std::runtime_error("image size out of range: " + std::to_string(width) + "x" +
-                               std::to_string(height));
-    }
     context_->make_current();
-    const Framebuffer multisampled(width, height, 4);
-    const Framebuffer resolved(width, height, 0);
-    glBindFramebuffer(GL_FRAMEBUFFER, multisampled.id());
-    renderer_->set_scene(scene);
-    renderer_->draw(camera, width, height, options);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled.id());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved.id());
-    glBlitFramebuffer(0, 0, width, height, 0, 0, width, height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolved.id());
-
-    Image image = read_pixels(width, height);
+    Image image = draw_offscreen(*renderer_, scene, camera, width, height, options);
     renderer_->set_scene({});
-    if (glGetError() != GL_NO_ERROR)
-      throw std::runtime_error("OpenGL reported an error while rendering");
     return image;
   }
 

@@ -7,7 +7,6 @@
 #include <GLFW/glfw3.h>
 // clang-format on
 #include <imgui.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -18,7 +17,8 @@
 
 #include "frontend/explanations.hpp"
 #include "frontend/pseudo_code.hpp"
-#include "frontend/shot.hpp"
+#include "frontend/shots.hpp"
+#include "render/framebuffer.hpp"
 #include "io/atomic_file.hpp"
 #include "picking.hpp"
 #include "shapes/shapes.hpp"
@@ -838,85 +838,65 @@ bool Viewer::export_picture(const std::string& path, int width, int height) {
 
 bool Viewer::export_shot(const std::string& path, int width, int height, const std::string& animate,
                          int frames) {
-  // The figures' own renderer: `sculpt render`, next to this program, with this view's shot.
-  const auto self = std::filesystem::read_symlink("/proc/self/exe");
-  const auto sculpt = self.parent_path() / "sculpt";
   if (!reconstruction_) {
     message_ = "nothing to save yet";
     return false;
   }
   // The layers below are those of the stage on screen, even before a frame has drawn it.
   rebuild_scene();
-  // The shown reconstruction's input and options (not those chosen for the next run).
-  const Job_request& shown = shown_request_;
-  const Statistics& shown_stats =
-      std::visit([](const auto& r) -> const Statistics& { return r.stats; }, *reconstruction_);
-  nlohmann::json shot = {{"stage", scene::stage_id(request_.stage)},
-                         {"step", request_.step},
-                         {"focus_sample", request_.focus_sample},
-                         {"focus_pole", request_.focus_pole},
-                         {"wireframe", request_.wireframe},
-                         {"smooth", request_.smooth},
-                         {"ball_every", request_.ball_every},
-                         {"polar_balls", request_.polar_balls},
-                         {"neighbourhood", request_.neighbourhood && request_.focus_sample >= 0},
-                         // The kind kept (an automatic choice made explicit), so that
-                         // sculpt render draws the same reconstruction.
-                         {"bordered", shown_stats.kind == Surface_kind::bordered},
-                         {"closed", shown_stats.kind == Surface_kind::closed},
-                         {"box_factor", shown.options.box_factor},
-                         {"alpha", shown.options.alpha},
-                         {"rule", to_string(shown.options.rule)},
-                         {"method", to_string(shown.options.method)},
-                         {"dimension", shown.dimension},
-                         {"size", std::to_string(width) + "x" + std::to_string(height)},
-                         {"output", std::filesystem::absolute(path).string()}};
-  if (!animate.empty()) shot.update({{"animate", animate}, {"frames", frames}});
+  // The view on screen as a shot of the shown reconstruction, drawn by the figures' code into a
+  // framebuffer of this window's context.
+  frontend::Shot shot;
+  shot.stage = scene::stage_id(request_.stage);
+  shot.step = request_.step;
+  shot.focus_sample = request_.focus_sample;
+  shot.focus_pole = request_.focus_pole;
+  shot.wireframe = request_.wireframe;
+  shot.smooth = request_.smooth;
+  shot.ball_every = request_.ball_every;
+  shot.polar_balls = request_.polar_balls;
+  shot.neighbourhood = request_.neighbourhood && request_.focus_sample >= 0;
+  shot.size = std::to_string(width) + "x" + std::to_string(height);
+  shot.output = path;
+  if (!animate.empty()) {
+    shot.animate = animate;
+    shot.frames = frames;
+  }
   if (request_.clipped) {
     const scene::Clip& c = request_.clip;
     std::ostringstream clip;
     clip << c.position << ',' << c.azimuth << ',' << c.elevation << ',' << c.slab;
-    shot["clip"] = clip.str();
+    shot.clip = clip.str();
   }
+  nlohmann::json camera;
   if (camera_is_panel_camera_ && !panel_on_screen().empty()) {
     // The panel's framing, refitted to the picture's size as the gallery does.
     const frontend::Shot& panel = tour_.image().shot;
-    shot.update({{"zoom", panel.zoom}, {"yaw", panel.yaw}, {"pitch", panel.pitch}});
+    shot.zoom = panel.zoom;
+    shot.yaw = panel.yaw;
+    shot.pitch = panel.pitch;
   } else {
-    shot["camera"] = render::to_json(camera_);
-  }
-  if (!shown.example.empty()) shot["example"] = shown.example;
-  if (!shown.path.empty()) shot["input"] = std::filesystem::absolute(shown.path).string();
-  // Edited samples exist only here: `sculpt render` reads them from a file of their own.
-  const auto edited_points =
-      std::filesystem::temp_directory_path() / ("sculpt-view-" + std::to_string(getpid()) + ".xy");
-  if (shown.edited_points) {
-    try {
-      viewer::save_points(edited_points.string(), *shown.edited_points);
-    } catch (const std::exception& e) {
-      message_ = std::string("error: ") + e.what();
-      return false;
-    }
-    shot["input"] = edited_points.string();
-  }
-  std::vector<std::string> visible;
-  for (const auto& layer : renderer_->scene().layers) {
-    if (layer.id == "true-curve") continue;  // the viewer's own overlay: not a stage's layer
-    if (std::find(hidden_layers_.begin(), hidden_layers_.end(), layer.id) == hidden_layers_.end()) {
-      visible.push_back(layer.id);
-    }
+    camera = render::to_json(camera_);
   }
   // An animation shows other stages (or the replay's other steps): each its own layers.
-  if (animate.empty()) shot["layers"] = visible;
-  const auto shots = std::filesystem::temp_directory_path() /
-                     ("sculpt-view-" + std::to_string(getpid()) + ".json");
-  std::ofstream(shots) << nlohmann::json{{"shots", {shot}}}.dump();
-  const std::string command = sculpt.string() + " render --shots " + shots.string() + " 2>&1";
-  const int status = std::system(command.c_str());
-  std::filesystem::remove(shots);
-  std::filesystem::remove(edited_points);
-  message_ = status == 0 ? "saved " + path : "the picture could not be made (sculpt render failed)";
-  return status == 0;
+  if (animate.empty()) {
+    for (const auto& layer : renderer_->scene().layers) {
+      if (layer.id == "true-curve") continue;  // the viewer's own overlay: not a stage's layer
+      if (std::find(hidden_layers_.begin(), hidden_layers_.end(), layer.id) ==
+          hidden_layers_.end())
+        shot.layers.push_back(layer.id);
+    }
+  }
+  try {
+    if (!picture_renderer_) picture_renderer_ = std::make_unique<render::Context_picture_renderer>();
+    frontend::write_shot(*picture_renderer_, shot, *reconstruction_,
+                         camera.is_null() ? nullptr : &camera);
+  } catch (const std::exception& e) {
+    message_ = std::string("error: ") + e.what();
+    return false;
+  }
+  message_ = "saved " + path;
+  return true;
 }
 
 bool Viewer::save_camera(const std::string& path) {

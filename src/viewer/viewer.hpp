@@ -15,6 +15,7 @@
 #include "point_editor.hpp"
 #include "reconstruction_job.hpp"
 #include "render/camera.hpp"
+#include "render/picture_renderer.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 #include "tour.hpp"
@@ -137,10 +138,10 @@ class Viewer {
   // One frame: take a finished job, handle the mouse and keys, build the panels, draw.
   void frame(int width, int height, double seconds_since_last_frame);
 
-  // Headless snapshot through `sculpt render` (the figures' renderer), at a chosen size.
+  // A picture of the view (without the panel) at a chosen size, drawn as the figures are.
   bool export_picture(const std::string& path, int width, int height);
   // An animated WebP of the replay (at the propagation stage, in `frames` pictures) or else of
-  // the method's stages, through `sculpt render --animate`.
+  // the method's stages.
   bool export_animation(const std::string& path, int width, int height, int frames = 60);
   bool save_camera(const std::string& path);
   bool load_camera(const std::string& path);
@@ -150,8 +151,8 @@ class Viewer {
 
  private:
   bool pick(int index, bool sample);
-  // A picture, or an animation ("replay" or "stages", in `frames` pictures), of the view through
-  // `sculpt render`.
+  // A picture, or an animation ("replay" or "stages", in `frames` pictures), of the view: the
+  // shown reconstruction drawn into a framebuffer of the window's context.
   bool export_shot(const std::string& path, int width, int height, const std::string& animate,
                    int frames);
   // The stages of the shown reconstruction's method (or of the chosen one, before any).
@@ -215,6 +216,7 @@ class Viewer {
   const Labelling_event* latest_event() const;
 
   std::unique_ptr<render::Renderer> renderer_;
+  std::unique_ptr<render::Picture_renderer> picture_renderer_;  // exports, made at the first
   Reconstruction_job job_;
   Job_request last_request_;
   std::shared_ptr<const Any_reconstruction> reconstruction_;

@@ -1,0 +1,27 @@
+// A renderer of shots that reconstructs each input once however many shots show it, and draws
+// them headless (`sculpt render`, `sculpt figures`).
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+
+#include "frontend/shots.hpp"
+#include "render/headless.hpp"
+
+namespace sculpt::frontend {
+
+class Shot_renderer {
+ public:
+  // Renders a shot to its output PNG (or animation). `camera`, if given, replaces the fitted
+  // camera. Returns the scene that was drawn. Throws io::Error with a one-line message.
+  scene::Scene render(const Shot& shot, const nlohmann::json* camera = nullptr);
+  // The reconstruction a shot shows (made once per input and options).
+  const Any_reconstruction& reconstruction(const Shot& shot);
+
+ private:
+  std::map<std::string, Any_reconstruction> cache_;
+  std::unique_ptr<render::Headless_renderer> renderer_;
+};
+
+}  // namespace sculpt::frontend
