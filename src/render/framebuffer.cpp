@@ -1,9 +1,9 @@
 #include "render/framebuffer.hpp"
 
-#include "render/gl.hpp"
-
 #include <stdexcept>
 #include <string>
+
+#include "render/gl.hpp"
 
 namespace sculpt::render {
 
@@ -48,8 +48,8 @@ class Framebuffer {
 
 }  // namespace
 
-Image draw_offscreen(Renderer& renderer, const scene::Scene& scene, const Camera& camera,
-                     int width, int height, const Draw_options& options) {
+Image draw_offscreen(Renderer& renderer, const scene::Scene& scene, const Camera& camera, int width,
+                     int height, const Draw_options& options) {
   if (width <= 0 || height <= 0 || width > max_image_side || height > max_image_side) {
     throw std::runtime_error("image size out of range: " + std::to_string(width) + "x" +
                              std::to_string(height));

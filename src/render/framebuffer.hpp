@@ -12,8 +12,8 @@ namespace sculpt::render {
 // Draws `scene` with `renderer` (made in the current context) into an offscreen framebuffer of
 // width x height and reads it back; the scene stays uploaded to `renderer`. Throws
 // std::runtime_error for a size out of range or a framebuffer the context cannot make.
-Image draw_offscreen(Renderer& renderer, const scene::Scene& scene, const Camera& camera,
-                     int width, int height, const Draw_options& options);
+Image draw_offscreen(Renderer& renderer, const scene::Scene& scene, const Camera& camera, int width,
+                     int height, const Draw_options& options);
 
 // Pictures in the context that is current when it is made (the viewer's window), through a
 // renderer of its own, so the scene on screen stays as it is.

@@ -9,12 +9,12 @@
 #include <GL/osmesa.h>
 // clang-format on
 
-#include "render/framebuffer.hpp"
-
 #include <cstdlib>
 #include <memory>
 #include <stdexcept>
 #include <vector>
+
+#include "render/framebuffer.hpp"
 
 namespace sculpt::render {
 

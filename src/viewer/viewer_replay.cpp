@@ -1,15 +1,95 @@
-// The replay follows the action: the pole just labelled is kept in view (render::follow_point:
+// The replay of the pole labelling, event by event: the step shown, play and pause, its
+// controls. It follows the action: the pole just labelled is kept in view (render::follow_point:
 // near the shape the camera pans, keeping its zoom; a seed far out is framed with the shape),
 // and what lies outside the view (the pole just labelled when following is off, the outer seeds
 // far out by the box corners) gets an arrow at the edge pointing to it.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 
 #include "viewer.hpp"
+#include "viewer_internals.hpp"
 
 namespace sculpt::viewer {
+
+using namespace internals;
+
+void Viewer::set_step(long events) {
+  explore();
+  request_.step = events < 0 ? -1 : std::min(events, event_count());
+  scene_dirty_ = true;
+  follow_latest_event();
+}
+
+long Viewer::event_count() const {
+  if (!reconstruction_) return 0;
+  return std::visit([](const auto& r) { return long(r.propagation.events.size()); },
+                    *reconstruction_);
+}
+
+const Labelling_event* Viewer::latest_event() const {
+  if (!reconstruction_ || request_.stage != scene::Stage::propagation) return nullptr;
+  return std::visit(
+      [&](const auto& r) -> const Labelling_event* {
+        const long shown = request_.step < 0 ? long(r.propagation.events.size()) : request_.step;
+        return shown > 0 ? &r.propagation.events[shown - 1] : nullptr;
+      },
+      *reconstruction_);
+}
+
+bool Viewer::has_replay() const {
+  if (!reconstruction_) return false;
+  const Options& options = options_of(*reconstruction_);
+  return scene::has_stage(options.method, shown_dimension(), scene::Stage::propagation);
+}
+
+void Viewer::advance_playback(double seconds) {
+  if (!playing_ || request_.stage != scene::Stage::propagation) return;
+  playback_clock_ += seconds * events_per_second_;
+  const long steps = long(playback_clock_);
+  if (steps == 0) return;
+  playback_clock_ -= double(steps);
+  const long current = request_.step < 0 ? event_count() : request_.step;
+  if (current >= event_count()) {
+    playing_ = false;
+    return;
+  }
+  set_step(current + steps);
+}
+
+void Viewer::draw_propagation_controls() {
+  const long total = event_count();
+  int shown = int(request_.step < 0 ? total : request_.step);
+  if (ImGui::Button(playing_ ? "Pause" : "Play")) {
+    if (!playing_ && shown >= total) set_step(0);
+    playing_ = !playing_;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("<")) set_step(std::max(0, shown - 1));
+  ImGui::SameLine();
+  if (ImGui::Button(">")) set_step(shown + 1);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(150);
+  ImGui::SliderFloat("events/s", &events_per_second_, 1.0f, 2000.0f, "%.0f",
+                     ImGuiSliderFlags_Logarithmic);
+  if (ImGui::SliderInt("event", &shown, 0, int(total))) set_step(shown);
+  if (ImGui::Checkbox("follow the action", &follow_) && follow_) follow_latest_event();
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Pan to the pole just labelled whenever it leaves the view");
+  if (const Labelling_event* e = latest_event()) {
+    ImGui::Text("pole %d <- %s (%s", e->pole, to_string(e->label),
+                reason_name(e->reason, dimension_of(*reconstruction_)));
+    ImGui::SameLine(0, 0);
+    if (e->source >= 0) {
+      ImGui::Text(" of pole %d)", e->source);
+    } else {
+      ImGui::TextUnformatted(")");
+    }
+  }
+}
+
 std::vector<Viewer::Point_of_interest> Viewer::points_of_interest() const {
   std::vector<Point_of_interest> points;
   if (!reconstruction_) return points;
