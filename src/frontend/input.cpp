@@ -46,4 +46,10 @@ Input load_input(const std::string& path, const std::string& example, int forced
   return input;
 }
 
+Any_reconstruction reconstruct_input(const Input& input, const Options& options) {
+  return std::visit(
+      [&](const auto& points) -> Any_reconstruction { return reconstruct(points, options); },
+      input.points);
+}
+
 }  // namespace sculpt::frontend

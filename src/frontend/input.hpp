@@ -25,4 +25,10 @@ struct Input {
 Input load_input(const std::string& path, const std::string& example, int forced_dimension,
                  bool merge_duplicates = false);
 
+// A reconstruction of either dimension, as an input's points make it.
+using Any_reconstruction = std::variant<Reconstruction<2>, Reconstruction<3>>;
+
+// An input's points reconstructed, in their dimension.
+Any_reconstruction reconstruct_input(const Input& input, const Options& options);
+
 }  // namespace sculpt::frontend

@@ -291,10 +291,5 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
   return std::move(picture.scene);
 }
 
-Any_reconstruction reconstruct_input(const Input& input, const Options& options) {
-  return std::visit(
-      [&](const auto& points) -> Any_reconstruction { return reconstruct(points, options); },
-      input.points);
-}
 
 }  // namespace sculpt::frontend

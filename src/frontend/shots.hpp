@@ -30,11 +30,6 @@ std::string output_format_problem(const Shot& shot);
 // Reads a shot's fields from JSON (the names of Shot's members; "legend": false for no legend).
 Shot shot_from_json(const nlohmann::json& json);
 
-using Any_reconstruction = std::variant<Reconstruction<2>, Reconstruction<3>>;
-
-// An input's points reconstructed, in their dimension.
-Any_reconstruction reconstruct_input(const Input& input, const Options& options);
-
 // A picture of a stage of a reconstruction as a shot describes it (the shot's input, method and
 // output are not read): the scene drawn, the camera, the image.
 struct Picture {

@@ -96,11 +96,11 @@ void Viewer::start_job(Job_request request) {
   message_ = "reconstructing " + (request.edited_points     ? "the edited samples"
                                   : request.example.empty() ? request.path
                                                             : "example " + request.example);
-  job_.start(std::move(request));
+  job_->start(std::move(request));
 }
 
 void Viewer::take_finished_job() {
-  auto outcome = job_.take_outcome();
+  auto outcome = job_->take_outcome();
   if (!outcome) return;
   if (!outcome->error.empty()) {
     message_ = outcome->error == "cancelled" ? "cancelled" : "error: " + outcome->error;
@@ -262,7 +262,7 @@ void Viewer::frame(int width, int height, double seconds) {
   take_finished_job();
   // Edits made while a reconstruction ran: the newest points, once it has ended (a drag
   // reconstructs as fast as the reconstructions come, never queueing them).
-  if (edits_pending_ && editor_.active() && !job_.running() && !job_.outcome_waiting())
+  if (edits_pending_ && editor_.active() && !job_->running() && !job_->outcome_waiting())
     reconstruct_edits();
   advance_playback(seconds);
   advance_move_to_panel(seconds);

@@ -119,9 +119,9 @@ class Viewer {
   // A reconstruction runs, has ended and its result is not shown yet, or the view is still
   // moving to a tour panel.
   bool busy() const {
-    return job_.running() || job_.outcome_waiting() || moving_to_panel() || edits_pending_;
+    return job_->running() || job_->outcome_waiting() || moving_to_panel() || edits_pending_;
   }
-  void cancel() { job_.request_cancel(); }
+  void cancel() { job_->request_cancel(); }
   const std::string& message() const { return message_; }
   bool has_reconstruction() const { return reconstruction_ != nullptr; }
   // The shown reconstruction's dimension (0 before any), whether its method has a replay of the
@@ -147,7 +147,7 @@ class Viewer {
   bool load_camera(const std::string& path);
 
   bool wants_to_quit() const { return quit_; }
-  bool animating() const { return playing_ || job_.running(); }
+  bool animating() const { return playing_ || job_->running(); }
 
  private:
   bool pick(int index, bool sample);
@@ -217,7 +217,7 @@ class Viewer {
 
   std::unique_ptr<render::Renderer> renderer_;
   std::unique_ptr<render::Picture_renderer> picture_renderer_;  // exports, made at the first
-  Reconstruction_job job_;
+  std::unique_ptr<Reconstruction_job> job_ = make_reconstruction_job();
   Job_request last_request_;
   std::shared_ptr<const Any_reconstruction> reconstruction_;
   std::string description_;

@@ -24,7 +24,7 @@ bool Viewer::begin_editing() {
   }
   // While another input is being read and reconstructed, the samples on screen are not the
   // ones the next picture will show.
-  if (job_.running() || job_.outcome_waiting()) {
+  if (job_->running() || job_->outcome_waiting()) {
     message_ = "wait for the reconstruction to finish before editing";
     return false;
   }
@@ -221,7 +221,7 @@ bool Viewer::handle_editing_input(int width, int height) {
     }
     if (clicked && dragged >= 0) {
       // A click on a sample selects it, once the picture shows the points as edited.
-      if (!edits_pending_ && !job_.running()) pick_sample(dragged);
+      if (!edits_pending_ && !job_->running()) pick_sample(dragged);
       return true;
     }
     if (clicked) {

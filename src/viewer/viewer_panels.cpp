@@ -21,9 +21,9 @@ void Viewer::draw_panel(int height) {
   ImGui::Begin("Sculpt", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
   ImGui::TextWrapped("%s", message_.c_str());
-  if (job_.running()) {  // not while the view merely moves to a tour panel
+  if (job_->running()) {  // not while the view merely moves to a tour panel
     // Across the whole reconstruction, naming the stage it is in.
-    const auto status = job_.status();
+    const auto status = job_->status();
     const std::string label =
         status.stage + " (" + std::to_string(int(100 * status.overall)) + "%)";
     ImGui::ProgressBar(float(status.overall), ImVec2(-70, 0), label.c_str());
@@ -35,7 +35,7 @@ void Viewer::draw_panel(int height) {
     // can flip between methods on the same points.
     if (ImGui::Combo("method", &method_, method_names().data(),
                      static_cast<int>(method_names().size())) &&
-        !job_.running() &&
+        !job_->running() &&
         (!last_request_.path.empty() || !last_request_.example.empty() || editor_.active())) {
       rerun();
     }

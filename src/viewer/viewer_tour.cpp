@@ -116,13 +116,13 @@ void Viewer::show_tour_panel() {
   const std::string key = request_key(with_options(request));
   walk_stages_ = animate_ && reconstruction_ && key == request_key(shown_request_);
   if (reconstruction_ && key == request_key(shown_request_)) {
-    job_.abandon();  // a reconstruction for another panel is no longer wanted
+    job_->abandon();  // a reconstruction for another panel is no longer wanted
     move_to_panel_view();
     return;
   }
   for (const Recent& recent : recent_) {
     if (recent.key != key) continue;
-    job_.abandon();
+    job_->abandon();
     last_request_ = with_options(request);
     const auto reconstruction = recent.reconstruction;  // `recent` may not outlive show()
     show(reconstruction, recent.description);

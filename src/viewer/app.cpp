@@ -1,0 +1,97 @@
+// clang-format off
+// Our GL header first: it must be the first to include the platform's GL header.
+#include "render/gl.hpp"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+// clang-format on
+#include "app.hpp"
+
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <iostream>
+
+#include "platform/platform.hpp"
+#include "render/image.hpp"
+
+namespace sculpt::viewer {
+
+namespace {
+
+void on_drop(GLFWwindow* window, int count, const char** paths) {
+  auto* viewer = static_cast<Viewer*>(glfwGetWindowUserPointer(window));
+  if (count > 0 && viewer && !viewer->busy()) viewer->open_file(paths[0]);
+}
+
+}  // namespace
+
+App::App(GLFWwindow* window, float font_scale) : window_(window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+  ImGui::GetIO().FontGlobalScale = font_scale;
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init(platform::imgui_glsl_version());
+  viewer_ = std::make_unique<Viewer>();
+  glfwSetWindowUserPointer(window, viewer_.get());
+  glfwSetDropCallback(window, on_drop);
+  last_frame_ = glfwGetTime();
+}
+
+App::~App() {
+  glfwSetWindowUserPointer(window_, nullptr);
+  viewer_.reset();  // its GL objects go while the context still exists
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+App::Script_state App::script_state() const {
+  return script_ ? Script_state::running : finished_script_;
+}
+
+int App::exit_status() const {
+  return status_ != 0 || (script_ && script_->failed()) ? 1 : 0;
+}
+
+bool App::frame() {
+  if (glfwWindowShouldClose(window_)) return false;
+  // A page is not closed by a program: Quit and a script's end leave it open.
+  if (viewer_->wants_to_quit() && !platform::in_browser) return false;
+  platform::take_events(window_, script_ || viewer_->animating());
+  std::string screenshot;
+  if (script_) {
+    screenshot = script_->before_frame(*viewer_);
+    if (script_->finished() && screenshot.empty()) {
+      finished_script_ = script_->failed() ? Script_state::failed : Script_state::succeeded;
+      if (script_->failed()) status_ = 1;
+      script_.reset();
+      if (!platform::in_browser) return false;
+    }
+  }
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(window_, &width, &height);
+  const double now = glfwGetTime();
+  viewer_->frame(width, height, now - last_frame_);
+  last_frame_ = now;
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (!screenshot.empty()) {
+    try {
+      render::write_png(screenshot, render::read_pixels(width, height));
+      platform::deliver_file(screenshot);
+    } catch (const std::exception& e) {
+      std::cerr << "sculpt-view: " << e.what() << '\n';
+      status_ = 1;
+    }
+  }
+  glfwSwapBuffers(window_);
+  return true;
+}
+
+}  // namespace sculpt::viewer

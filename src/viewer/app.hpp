@@ -1,0 +1,47 @@
+// The viewer's program around the Viewer: its window, Dear ImGui, the script that may drive it,
+// and one frame of all of them. main.cpp makes it from the command line (in the browser, from
+// the page's address) and hands its frames to the platform's main loop.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "script.hpp"
+#include "viewer.hpp"
+
+struct GLFWwindow;
+
+namespace sculpt::viewer {
+
+class App {
+ public:
+  // Sets up Dear ImGui on a window whose context is current; text at `font_scale`.
+  App(GLFWwindow* window, float font_scale);
+  ~App();
+  App(const App&) = delete;
+  App& operator=(const App&) = delete;
+
+  Viewer& viewer() { return *viewer_; }
+  // Drives the viewer by this script from the next frame on (replacing one that runs).
+  void run_script(Script script) { script_ = std::move(script); }
+  // The script's state: none ran, it runs, it ended well, or a command failed.
+  enum class Script_state { none, running, succeeded, failed };
+  Script_state script_state() const;
+
+  // One frame: events, the script's commands, the viewer, the panels drawn. False when the
+  // program should end (the window closed, Quit, a desktop script at its end).
+  bool frame();
+  // 1 when a picture could not be saved or a script command failed, else 0.
+  int exit_status() const;
+
+ private:
+  GLFWwindow* window_;
+  std::unique_ptr<Viewer> viewer_;
+  std::optional<Script> script_;
+  Script_state finished_script_ = Script_state::none;
+  double last_frame_ = 0;
+  int status_ = 0;
+};
+
+}  // namespace sculpt::viewer

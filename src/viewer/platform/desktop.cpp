@@ -1,0 +1,61 @@
+// The desktop: a GLFW window with an OpenGL 3.3 core context, frames in a loop, files where the
+// user names them.
+// clang-format off
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+// clang-format on
+
+#include "viewer/platform/platform.hpp"
+
+namespace sculpt::viewer::platform {
+
+GLFWwindow* open_window(int width, int height, std::string& error) {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  GLFWwindow* window = glfwCreateWindow(width, height, "Sculpt", nullptr, nullptr);
+  if (!window) {
+    error = "cannot open an OpenGL 3.3 window";
+    return nullptr;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+  return window;
+}
+
+const char* imgui_glsl_version() {
+  return "#version 330 core";
+}
+
+void run_main_loop(std::function<bool()> frame) {
+  while (frame()) {
+  }
+}
+
+void take_events(GLFWwindow*, bool animating) {
+  if (animating) {
+    glfwPollEvents();
+  } else {
+    glfwWaitEventsTimeout(0.1);
+  }
+}
+
+void deliver_file(const std::string&) {}
+
+bool has_file_picker() {
+  return false;
+}
+
+void choose_file() {}
+
+void copy_text(GLFWwindow* window, const std::string& text) {
+  glfwSetClipboardString(window, text.c_str());
+}
+
+std::string page_address() {
+  return "";
+}
+
+}  // namespace sculpt::viewer::platform

@@ -1,0 +1,48 @@
+// What differs between the desktop and the browser under the viewer, and nothing else: the
+// window and its GL context, how frames are driven, how files reach the user and the clipboard.
+// desktop.cpp implements it with GLFW on X11/Wayland, web.cpp in the browser (Emscripten's GLFW
+// on a canvas, WebGL 2). The reconstruction job has its own runners (thread_job.cpp,
+// worker_job.cpp).
+#pragma once
+
+#include <functional>
+#include <string>
+
+struct GLFWwindow;
+
+namespace sculpt::viewer::platform {
+
+#ifdef __EMSCRIPTEN__
+inline constexpr bool in_browser = true;
+#else
+inline constexpr bool in_browser = false;
+#endif
+
+// A window of width x height with a GL context the renderer can use (OpenGL 3.3 core, or WebGL 2
+// on the page's canvas), current; nullptr with the reason in `error`.
+GLFWwindow* open_window(int width, int height, std::string& error);
+// The #version line Dear ImGui's OpenGL backend compiles its shaders with.
+const char* imgui_glsl_version();
+
+// Calls `frame` for every frame until it returns false. On the desktop this returns then; in the
+// browser it returns at once and the page calls `frame` at its refresh rate for as long as it is
+// open (what `frame` needs must outlive this call).
+void run_main_loop(std::function<bool()> frame);
+// Before a frame: take the window's events (on the desktop, waiting up to a tenth of a second
+// for one when nothing moves on screen); in the browser, size the canvas to the page.
+void take_events(GLFWwindow* window, bool animating);
+
+// A file the viewer has just written at `path`: on the desktop it stays there; in the browser it
+// is handed to the user as a download named after it, and removed from the page's memory.
+void deliver_file(const std::string& path);
+// Whether files are chosen with the browser's file picker (choose_file) rather than typed.
+bool has_file_picker();
+// Opens the browser's file picker; the chosen file reaches the viewer as a dropped one does.
+void choose_file();
+// Puts text on the clipboard.
+void copy_text(GLFWwindow* window, const std::string& text);
+// The address the viewer was opened at, without its query ("" on the desktop): a link to what
+// is shown is this and a query (viewer/link.hpp).
+std::string page_address();
+
+}  // namespace sculpt::viewer::platform
