@@ -11,6 +11,7 @@
 #include "compare.hpp"
 #include "figures/gallery.hpp"
 #include "frontend/command_line.hpp"
+#include "frontend/failure.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
 #include "io/output_set.hpp"
@@ -367,16 +368,7 @@ int main(int argc, char** argv) {
     return run_reconstruct(args);
   } catch (const Usage_error& e) {
     return fail(exit_bad_usage, std::string("usage error: ") + e.what() + " (see sculpt --help)");
-  } catch (const sculpt::io::Error& e) {
-    return fail(exit_bad_input, std::string("error: ") + e.what());
-  } catch (const sculpt::Duplicate_points& e) {
-    return fail(exit_bad_input, std::string("error: ") + e.what() +
-                                    " (--merge-duplicates removes repeated points)");
-  } catch (const sculpt::Input_error& e) {
-    return fail(exit_bad_input, std::string("error: ") + e.what());
-  } catch (const std::bad_alloc&) {
-    return fail(exit_bad_input, "error: out of memory");
   } catch (const std::exception& e) {
-    return fail(exit_bad_input, std::string("internal error: ") + e.what());
+    return fail(exit_bad_input, sculpt::frontend::failure_line(e));
   }
 }

@@ -11,6 +11,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "frontend/command_line_text.hpp"
+
 namespace sculpt::frontend {
 
 enum Exit_code : int {
@@ -70,24 +72,6 @@ class Usage_error : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
-
-// A message as one line: newlines become "; ", other control bytes \xNN.
-inline std::string one_line(const std::string& message) {
-  std::string result;
-  for (char c : message) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (c == '\n' || c == '\r') {
-      if (!result.empty() && result.back() != ' ') result += "; ";
-    } else if (byte < 32 || byte == 127) {
-      static const char* hex = "0123456789abcdef";
-      result += std::string("\\x") + hex[byte >> 4] + hex[byte & 15];
-    } else {
-      result += c;
-    }
-  }
-  while (!result.empty() && (result.back() == ' ' || result.back() == ';')) result.pop_back();
-  return result;
-}
 
 // Parses the command line; an exit code if the program should stop now (help, version, or a
 // usage error reported in one line), nothing if it should run.

@@ -68,7 +68,7 @@ bool App::frame() {
       finished_script_ = script_->failed() ? Script_state::failed : Script_state::succeeded;
       if (script_->failed()) status_ = 1;
       script_.reset();
-      if (!platform::in_browser) return false;
+      if (script_ends_program_ && !platform::in_browser) return false;
     }
   }
   ImGui_ImplOpenGL3_NewFrame();

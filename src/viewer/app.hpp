@@ -23,8 +23,13 @@ class App {
   App& operator=(const App&) = delete;
 
   Viewer& viewer() { return *viewer_; }
-  // Drives the viewer by this script from the next frame on (replacing one that runs).
-  void run_script(Script script) { script_ = std::move(script); }
+  // Drives the viewer by this script from the next frame on (replacing one that runs). A script
+  // that ends the program (--script, --frames) closes the desktop's window at its end; others
+  // (the first view asked for, a lesson, the page's) leave the viewer to the user.
+  void run_script(Script script, bool ends_program) {
+    script_ = std::move(script);
+    script_ends_program_ = ends_program;
+  }
   // The script's state: none ran, it runs, it ended well, or a command failed.
   enum class Script_state { none, running, succeeded, failed };
   Script_state script_state() const;
@@ -39,6 +44,7 @@ class App {
   GLFWwindow* window_;
   std::unique_ptr<Viewer> viewer_;
   std::optional<Script> script_;
+  bool script_ends_program_ = false;
   Script_state finished_script_ = Script_state::none;
   double last_frame_ = 0;
   int status_ = 0;

@@ -6,6 +6,7 @@
 // clang-format on
 
 #include <CLI/CLI.hpp>
+#include <cstdlib>
 #include <iostream>
 #include <optional>
 
@@ -13,6 +14,7 @@
 #include "figures/paper_figures.hpp"
 #include "frontend/command_line.hpp"
 #include "platform/platform.hpp"
+#include "scene/scene.hpp"
 
 namespace {
 
@@ -84,7 +86,28 @@ int main(int argc, char** argv) {
       .add_option("--font-scale", font_scale,
                   "Scale the panel's text, e.g. 1.5 for a projector (also in the View menu)")
       ->capture_default_str()
-      ->check(CLI::Range(0.5f, 4.0f));
+      ->check([](const std::string& text) {
+        // CLI::Range lets NaN through (every comparison with it is false).
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        return *end == '\0' && value >= 0.5 && value <= 4.0
+                   ? std::string()
+                   : "'" + text + "' is not a scale from 0.5 to 4";
+      });
+  // The first view: what a link to the viewer opens (in the browser, the page's address gives
+  // these options: ?example=torus&method=paper&stage=poles).
+  std::string stage;
+  long step = -1;
+  int picked_sample = -1;
+  command_line.add_option("--stage", stage, "Show this stage once reconstructed (e.g. poles)")
+      ->check([](const std::string& id) {
+        sculpt::scene::Stage parsed;
+        return sculpt::scene::parse_stage(id, parsed) ? std::string() : "no stage '" + id + "'";
+      });
+  command_line.add_option("--step", step, "With --stage propagation: the labelling events shown")
+      ->check(CLI::Range(0L, 1L << 40));
+  command_line.add_option("--pick-sample", picked_sample, "Select this sample once reconstructed")
+      ->check(CLI::NonNegativeNumber);
   command_line.footer(sculpt::frontend::exit_codes_help);
   if (const auto stop =
           sculpt::frontend::parse_command_line(command_line, argc, argv, "sculpt-view")) {
@@ -112,11 +135,18 @@ int main(int argc, char** argv) {
   auto app = std::make_unique<sculpt::viewer::App>(window, font_scale);
   sculpt::viewer::Viewer& viewer = app->viewer();
   try {
-    if (!script_path.empty()) app->run_script(sculpt::viewer::Script::from_file(script_path));
+    std::string first_view;
+    if (!stage.empty()) first_view += "stage " + stage + "\n";
+    if (step >= 0) first_view += "step " + std::to_string(step) + "\n";
+    if (picked_sample >= 0) first_view += "pick-sample " + std::to_string(picked_sample) + "\n";
+    if (!first_view.empty())
+      app->run_script(sculpt::viewer::Script::from_text("wait\n" + first_view), false);
+    if (!script_path.empty()) app->run_script(sculpt::viewer::Script::from_file(script_path), true);
     if (frames > 0) {
       app->run_script(sculpt::viewer::Script::from_text(
-          "wait\nframes " + std::to_string(frames) +
-          (screenshot.empty() ? "" : "\nscreenshot " + screenshot) + "\nquit\n"));
+                          "wait\nframes " + std::to_string(frames) +
+                          (screenshot.empty() ? "" : "\nscreenshot " + screenshot) + "\nquit\n"),
+                      true);
     }
   } catch (const std::exception& e) {
     std::cerr << "sculpt-view: " << e.what() << '\n';
@@ -145,6 +175,14 @@ int main(int argc, char** argv) {
                                           : sculpt::Surface_kind::automatic);
   }
 
+  sculpt::viewer::platform::set_page_commands(
+      {[viewer = &viewer](const std::string& path) {
+         if (!viewer->busy()) viewer->open_file(path);
+       },
+       [app = app.get()](const std::string& text) {
+         app->run_script(sculpt::viewer::Script::from_text(text), false);
+       },
+       [app = app.get()] { return int(app->script_state()); }});
   sculpt::viewer::platform::run_main_loop([app = app.get()] { return app->frame(); });
   if (sculpt::viewer::platform::in_browser) {
     app.release();  // the page calls its frames for as long as it is open

@@ -54,6 +54,8 @@ void copy_text(GLFWwindow* window, const std::string& text) {
   glfwSetClipboardString(window, text.c_str());
 }
 
+void set_page_commands(Page_commands) {}
+
 std::string page_address() {
   return "";
 }

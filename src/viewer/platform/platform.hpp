@@ -41,6 +41,15 @@ bool has_file_picker();
 void choose_file();
 // Puts text on the clipboard.
 void copy_text(GLFWwindow* window, const std::string& text);
+// What the page's script may ask of the program: open a file it wrote into the program's file
+// system (the file picker), run a script (a lesson, the browser tests) and tell how it went (0
+// none, 1 running, 2 succeeded, 3 failed). main.cpp sets them; only the browser calls them.
+struct Page_commands {
+  std::function<void(const std::string& path)> open_file;
+  std::function<void(const std::string& script)> run_script;
+  std::function<int()> script_state;
+};
+void set_page_commands(Page_commands commands);
 // The address the viewer was opened at, without its query ("" on the desktop): a link to what
 // is shown is this and a query (viewer/link.hpp).
 std::string page_address();

@@ -1,0 +1,131 @@
+// The browser: Emscripten's GLFW on the page's canvas with a WebGL 2 context, frames called by
+// the browser (requestAnimationFrame), files taken from the file picker or a drop and handed back
+// as downloads, through the page's script (web/sculpt-page.js).
+#include <emscripten/emscripten.h>
+#include <emscripten/html5.h>
+// clang-format off
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+// clang-format on
+
+#include <cmath>
+
+#include "viewer/platform/platform.hpp"
+
+namespace sculpt::viewer::platform {
+
+namespace {
+
+std::function<bool()> frame_function;
+Page_commands page_commands;
+
+void call_frame() {
+  if (!frame_function()) emscripten_cancel_main_loop();
+}
+
+EM_JS(void, download_file, (const char* path), {
+  const name = UTF8ToString(path);
+  const bytes = FS.readFile(name);
+  FS.unlink(name);
+  Module["sculptPage"].download(name.substring(name.lastIndexOf("/") + 1), bytes);
+});
+
+EM_JS(void, open_file_picker, (), { Module["sculptPage"].chooseFile(); });
+
+EM_JS(void, write_clipboard, (const char* text),
+      { Module["sculptPage"].copyText(UTF8ToString(text)); });
+
+EM_JS(char*, page_location, (), {
+  const address = location.origin + location.pathname;
+  const size = lengthBytesUTF8(address) + 1;
+  const text = _malloc(size);
+  stringToUTF8(address, text, size);
+  return text;
+});
+
+}  // namespace
+
+GLFWwindow* open_window(int width, int height, std::string& error) {
+  glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  GLFWwindow* window = glfwCreateWindow(width, height, "Sculpt", nullptr, nullptr);
+  if (!window) {
+    error = "this browser gives the page no WebGL 2 context";
+    return nullptr;
+  }
+  glfwMakeContextCurrent(window);
+  return window;
+}
+
+const char* imgui_glsl_version() {
+  return "#version 300 es";
+}
+
+void run_main_loop(std::function<bool()> frame) {
+  frame_function = std::move(frame);
+  // 0: at the display's rate; false: return now, the page keeps the program alive.
+  emscripten_set_main_loop(call_frame, 0, false);
+}
+
+void take_events(GLFWwindow* window, bool) {
+  // The canvas fills the page: its pixels follow the page's size (and the screen's density).
+  double css_width = 0, css_height = 0;
+  emscripten_get_element_css_size("#canvas", &css_width, &css_height);
+  const double density = emscripten_get_device_pixel_ratio();
+  const int width = std::max(320, int(std::lround(css_width * density)));
+  const int height = std::max(240, int(std::lround(css_height * density)));
+  int current_width = 0, current_height = 0;
+  glfwGetWindowSize(window, &current_width, &current_height);
+  if (width != current_width || height != current_height) glfwSetWindowSize(window, width, height);
+}
+
+void deliver_file(const std::string& path) {
+  download_file(path.c_str());
+}
+
+bool has_file_picker() {
+  return true;
+}
+
+void choose_file() {
+  open_file_picker();
+}
+
+void copy_text(GLFWwindow*, const std::string& text) {
+  write_clipboard(text.c_str());
+}
+
+void set_page_commands(Page_commands commands) {
+  page_commands = std::move(commands);
+}
+
+std::string page_address() {
+  char* text = page_location();
+  std::string address = text;
+  std::free(text);
+  return address;
+}
+
+}  // namespace sculpt::viewer::platform
+
+// Called by web/sculpt-page.js.
+extern "C" {
+
+EMSCRIPTEN_KEEPALIVE void sculpt_open_file(const char* path) {
+  if (sculpt::viewer::platform::page_commands.open_file)
+    sculpt::viewer::platform::page_commands.open_file(path);
+}
+
+EMSCRIPTEN_KEEPALIVE void sculpt_run_script(const char* script) {
+  if (sculpt::viewer::platform::page_commands.run_script)
+    sculpt::viewer::platform::page_commands.run_script(script);
+}
+
+EMSCRIPTEN_KEEPALIVE int sculpt_script_state() {
+  const auto& state = sculpt::viewer::platform::page_commands.script_state;
+  return state ? state() : 0;
+}
+
+}  // extern "C"

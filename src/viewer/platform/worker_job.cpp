@@ -1,0 +1,117 @@
+// The browser's reconstruction job: the request goes to a Web Worker running the core's
+// WebAssembly module (src/web/core_module.cpp, through web/sculpt-page.js), which posts its
+// progress and, at the end, the reconstruction with every stage as bytes (io/reconstruction_bytes
+// .hpp). The page's own WebAssembly memory is not shared with the worker's: that would need a
+// cross-origin-isolated page, which static hosts such as GitHub Pages cannot serve. A cancel ends
+// the worker at once (the page starts another), so the UI never waits for a stage to report.
+#include <emscripten/emscripten.h>
+
+#include <cstdint>
+
+#include "io/reconstruction_bytes.hpp"
+#include "viewer/reconstruction_job.hpp"
+
+namespace sculpt::viewer {
+
+namespace {
+
+EM_JS(void, start_in_worker, (int id, const char* request, const char* path),
+      { Module["sculptJobs"].start(id, UTF8ToString(request), UTF8ToString(path)); });
+
+EM_JS(void, stop_worker, (int id), { Module["sculptJobs"].cancel(id); });
+
+class Worker_job;
+Worker_job* current = nullptr;  // the one job the page's messages are for
+
+class Worker_job : public Reconstruction_job {
+ public:
+  Worker_job() { current = this; }
+  ~Worker_job() override {
+    if (running_) stop_worker(id_);
+    if (current == this) current = nullptr;
+  }
+
+  void start(Job_request request) override {
+    if (running_) stop_worker(id_);
+    ++id_;
+    running_ = true;
+    abandoned_ = false;
+    outcome_.reset();
+    status_ = {"reading", 0, 0};
+    const std::string json = frontend::to_json(request).dump();
+    start_in_worker(id_, json.c_str(), request.path.c_str());
+  }
+  void request_cancel() override {
+    if (running_) stop_worker(id_);  // the page answers with finished(id, "cancelled")
+  }
+  void abandon() override {
+    abandoned_ = true;
+    request_cancel();
+  }
+  bool running() const override { return running_; }
+  bool outcome_waiting() const override { return !running_ && outcome_ && !abandoned_; }
+  Status status() const override { return status_; }
+  std::optional<Outcome> take_outcome() override {
+    if (running_) return std::nullopt;
+    std::optional<Outcome> outcome;
+    outcome.swap(outcome_);
+    if (abandoned_) return std::nullopt;
+    return outcome;
+  }
+
+  // From the page: the worker's progress, and its end.
+  void progress(int id, const char* stage, double fraction, double overall) {
+    if (id == id_ && running_) status_ = {stage, fraction, overall};
+  }
+  void finished(int id, const char* error, const char* description, const std::uint8_t* bytes,
+                std::size_t size) {
+    if (id != id_ || !running_) return;
+    Outcome outcome;
+    outcome.error = error;
+    outcome.description = description;
+    if (outcome.error.empty()) {
+      try {
+        if (io::dimension_of_bytes(bytes, size) == 2) {
+          outcome.reconstruction = io::reconstruction_from_bytes<2>(bytes, size);
+        } else {
+          outcome.reconstruction = io::reconstruction_from_bytes<3>(bytes, size);
+        }
+      } catch (const std::exception& e) {
+        outcome.error = e.what();
+      }
+    }
+    outcome_ = std::move(outcome);
+    running_ = false;
+  }
+
+ private:
+  int id_ = 0;
+  bool running_ = false;
+  bool abandoned_ = false;
+  Status status_;
+  std::optional<Outcome> outcome_;
+};
+
+}  // namespace
+
+std::unique_ptr<Reconstruction_job> make_reconstruction_job() {
+  return std::make_unique<Worker_job>();
+}
+
+}  // namespace sculpt::viewer
+
+// Called by web/sculpt-page.js with the worker's messages.
+extern "C" {
+
+EMSCRIPTEN_KEEPALIVE void sculpt_job_progress(int id, const char* stage, double fraction,
+                                              double overall) {
+  if (sculpt::viewer::current) sculpt::viewer::current->progress(id, stage, fraction, overall);
+}
+
+EMSCRIPTEN_KEEPALIVE void sculpt_job_finished(int id, const char* error, const char* description,
+                                              const std::uint8_t* bytes, int size) {
+  if (sculpt::viewer::current)
+    sculpt::viewer::current->finished(id, error, description, bytes, std::size_t(size));
+}
+
+}  // extern "C"
