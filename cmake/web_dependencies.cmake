@@ -5,6 +5,9 @@
 # from Debian's own sources: scripts/web fetches the source packages into SCULPT_DEBIAN_SOURCES.
 # The targets made here carry the names the native build finds, so the rest of the build is one.
 
+# stb and libwebp are C.
+enable_language(C)
+
 set(SCULPT_DEBIAN_SOURCES "${CMAKE_BINARY_DIR}/debian-sources" CACHE PATH
     "Where `apt-get source imgui libwebp` unpacked Dear ImGui and libwebp")
 
@@ -64,7 +67,7 @@ if(NOT EXISTS ${webp}/src/webp/encode.h)
   message(FATAL_ERROR "${webp} is missing: scripts/web fetches Debian's source package libwebp")
 endif()
 file(GLOB webp_sources ${webp}/src/dec/*.c ${webp}/src/dsp/*.c ${webp}/src/enc/*.c
-                       ${webp}/src/mux/*.c ${webp}/src/utils/*.c)
+                       ${webp}/src/mux/*.c ${webp}/src/utils/*.c ${webp}/sharpyuv/*.c)
 add_library(sculpt_webp STATIC ${webp_sources})
 target_include_directories(sculpt_webp SYSTEM PUBLIC ${webp}/src PRIVATE ${webp})
 add_library(PkgConfig::WEBP ALIAS sculpt_webp)

@@ -40,6 +40,12 @@ void Cgal_meshes::unpack(const std::set<std::string>& meshes) {
 frontend::Shot Cgal_meshes::resolve(frontend::Shot shot) {
   if (shot.input.rfind("cgal:", 0) != 0) return shot;
   const std::string mesh = shot.input.substr(5);
+#ifdef __EMSCRIPTEN__
+  // In the browser the site holds the meshes: the page fetches /cgal/NAME from its meshes/
+  // folder when a reconstruction reads it (web/sculpt-page.js).
+  shot.input = "/cgal/" + mesh;
+  return shot;
+#endif
   unpack({mesh});
   shot.input = (std::filesystem::path(folder_) / "data" / "meshes" / mesh).string();
   return shot;

@@ -1,5 +1,6 @@
 // The CGAL meshes some figures are drawn from, unpacked on demand from Debian's libcgal-demo
-// archive into a temporary folder of their own that lives as long as this object.
+// archive into a temporary folder of their own that lives as long as this object (in the
+// browser, fetched from the site).
 #pragma once
 
 #include <set>

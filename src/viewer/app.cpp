@@ -10,8 +10,10 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <iostream>
 
+#include "lessons.hpp"
 #include "platform/platform.hpp"
 #include "render/image.hpp"
 
@@ -56,6 +58,62 @@ int App::exit_status() const {
   return status_ != 0 || (script_ && script_->failed()) ? 1 : 0;
 }
 
+bool App::start_lesson(const std::string& name) {
+  const Lesson* lesson = find_lesson(name);
+  if (!lesson) return false;
+  run_script(Script::from_text(lesson->script, Script::Mode::lesson), false);
+  lesson_title_ = lesson_title(*lesson);
+  return true;
+}
+
+// A window over the picture's top right: the lesson's title, the narration of the step on
+// screen, and Next (Page Down, what presentation remotes send) when it waits at a picture.
+void App::draw_lesson() {
+  if (!script_ || !script_->is_lesson()) return;
+  if (script_->paused() && !ImGui::GetIO().WantCaptureKeyboard &&
+      ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN))
+    script_->resume();
+  const ImGuiViewport* view = ImGui::GetMainViewport();
+  const float width = std::min(560.0f * ImGui::GetIO().FontGlobalScale,
+                               0.45f * float(view_width(int(view->Size.x))));
+  ImGui::SetNextWindowPos(ImVec2(view->Size.x - 12, ImGui::GetFrameHeight() + 12), ImGuiCond_Always,
+                          ImVec2(1, 0));
+  ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowBgAlpha(0.92f);
+  ImGui::Begin("Lesson", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "%s", lesson_title_.c_str());
+  ImGui::TextDisabled("step %d of %d", std::min(script_->step(), script_->steps()),
+                      script_->steps());
+  ImGui::Separator();
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(script_->narration().c_str());
+  ImGui::PopTextWrapPos();
+  if (script_->paused()) {
+    if (ImGui::Button("Next (Page Down)")) script_->resume();
+  } else {
+    ImGui::TextDisabled("running...");
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("End the lesson")) {
+    script_.reset();
+    finished_script_ = Script_state::succeeded;
+  }
+  ImGui::End();
+}
+
+void App::draw_lessons_menu() {
+  if (!ImGui::BeginMainMenuBar()) return;  // appends to the viewer's menu bar
+  if (ImGui::BeginMenu("Lessons")) {
+    for (const Lesson& lesson : lessons()) {
+      if (ImGui::MenuItem(lesson_title(lesson).c_str())) start_lesson(lesson.name);
+    }
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+}
+
 bool App::frame() {
   if (glfwWindowShouldClose(window_)) return false;
   // A page is not closed by a program: Quit and a script's end leave it open.
@@ -77,8 +135,11 @@ bool App::frame() {
   int width = 0, height = 0;
   glfwGetFramebufferSize(window_, &width, &height);
   const double now = glfwGetTime();
+  viewer_->set_lesson_running(script_ && script_->is_lesson());
   viewer_->frame(width, height, now - last_frame_);
   last_frame_ = now;
+  draw_lessons_menu();
+  draw_lesson();
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   if (!screenshot.empty()) {

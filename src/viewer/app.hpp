@@ -30,6 +30,8 @@ class App {
     script_ = std::move(script);
     script_ends_program_ = ends_program;
   }
+  // Runs a shipped lesson (lessons.hpp) step by step; false if there is none of that name.
+  bool start_lesson(const std::string& name);
   // The script's state: none ran, it runs, it ended well, or a command failed.
   enum class Script_state { none, running, succeeded, failed };
   Script_state script_state() const;
@@ -41,10 +43,14 @@ class App {
   int exit_status() const;
 
  private:
+  void draw_lesson();        // the narration and Next, while a lesson runs
+  void draw_lessons_menu();  // appended to the viewer's menu bar
+
   GLFWwindow* window_;
   std::unique_ptr<Viewer> viewer_;
   std::optional<Script> script_;
   bool script_ends_program_ = false;
+  std::string lesson_title_;
   Script_state finished_script_ = Script_state::none;
   double last_frame_ = 0;
   int status_ = 0;

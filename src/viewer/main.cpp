@@ -13,6 +13,7 @@
 #include "app.hpp"
 #include "figures/paper_figures.hpp"
 #include "frontend/command_line.hpp"
+#include "lessons.hpp"
 #include "platform/platform.hpp"
 #include "scene/scene.hpp"
 
@@ -108,6 +109,21 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0L, 1L << 40));
   command_line.add_option("--pick-sample", picked_sample, "Select this sample once reconstructed")
       ->check(CLI::NonNegativeNumber);
+  std::string lesson;
+  command_line
+      .add_option(
+          "--lesson", lesson,
+          "Run a shipped lesson step by step (Next or Page Down goes on): " +
+              [] {
+                std::string names;
+                for (const auto& l : sculpt::viewer::lessons())
+                  names += std::string(names.empty() ? "" : ", ") + l.name;
+                return names;
+              }())
+      ->check([](const std::string& name) {
+        return sculpt::viewer::find_lesson(name) ? std::string() : "no lesson '" + name + "'";
+      })
+      ->excludes(script_option);
   command_line.footer(sculpt::frontend::exit_codes_help);
   if (const auto stop =
           sculpt::frontend::parse_command_line(command_line, argc, argv, "sculpt-view")) {
@@ -141,6 +157,7 @@ int main(int argc, char** argv) {
     if (picked_sample >= 0) first_view += "pick-sample " + std::to_string(picked_sample) + "\n";
     if (!first_view.empty())
       app->run_script(sculpt::viewer::Script::from_text("wait\n" + first_view), false);
+    if (!lesson.empty()) app->start_lesson(lesson);
     if (!script_path.empty()) app->run_script(sculpt::viewer::Script::from_file(script_path), true);
     if (frames > 0) {
       app->run_script(sculpt::viewer::Script::from_text(

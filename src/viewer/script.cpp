@@ -92,26 +92,58 @@ Script Script::from_file(const std::string& path) {
   return from_text(text.str());
 }
 
-Script Script::from_text(const std::string& text) {
+Script Script::from_text(const std::string& text, Mode mode) {
   Script script;
+  script.mode_ = mode;
   std::istringstream lines(text);
-  std::string line;
+  std::string line, narration;
   while (std::getline(lines, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos) {
+      narration.clear();  // a blank line: the comments above narrate nothing
+      continue;
+    }
+    if (line[first] == '#') {
+      // A comment block right above a command narrates it (a lesson shows it).
+      std::string words = line.substr(line.find_first_not_of("# \t", first) == std::string::npos
+                                          ? line.size()
+                                          : line.find_first_not_of("# \t", first));
+      while (!words.empty() && (words.back() == ' ' || words.back() == '\r')) words.pop_back();
+      if (words.empty()) {
+        if (!narration.empty()) narration += "\n\n";
+      } else {
+        if (!narration.empty() && narration.back() != '\n') narration += ' ';
+        narration += words;
+      }
+      continue;
+    }
     line = line.substr(0, line.find('#'));
-    if (line.find_first_not_of(" \t\r") != std::string::npos) script.commands_.push_back(line);
+    if (line.rfind("screenshot", line.find_first_not_of(" \t")) != std::string::npos)
+      ++script.pauses_;
+    script.commands_.push_back({line, narration});
+    narration.clear();
   }
   return script;
 }
 
+void Script::resume() {
+  if (!paused_) return;
+  paused_ = false;
+  ++step_;
+}
+
 std::string Script::before_frame(Viewer& viewer) {
+  if (paused_) return "";
   if (frames_to_wait_ > 0) {
     --frames_to_wait_;
     return "";
   }
   while (!commands_.empty()) {
-    std::istringstream words(commands_.front());
+    std::istringstream words(commands_.front().line);
     std::string command, argument;
     words >> command >> argument;
+    if (!commands_.front().narration.empty() && mode_ == Mode::lesson)
+      narration_ = commands_.front().narration;
     if (command == "wait" || command == "wait-idle") {
       if (viewer.busy()) return "";  // ask again next frame
       commands_.pop_front();
@@ -120,8 +152,19 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       continue;
     }
-    const std::string line = commands_.front();
+    const std::string line = commands_.front().line;
     commands_.pop_front();
+    if (mode_ == Mode::lesson) {
+      // A lesson is watched: a picture it would take is a pause until the user goes on, and it
+      // writes no files.
+      if (command == "screenshot") {
+        paused_ = true;
+        return "";
+      }
+      if (command == "export" || command == "export-animation" || command == "save-points" ||
+          command == "save-result")
+        continue;
+    }
     std::string extra;
     words >> extra;
     // Every word after the command, for those that take several.
@@ -176,7 +219,8 @@ std::string Script::before_frame(Viewer& viewer) {
                    "camera fit|zoom F|orbit YAW PITCH|pan X Y|save F|load F, edit on|off, "
                    "add-point X Y, move-point K X Y, delete-point K, stroke SPACING X Y X Y... "
                    "(SPACING a share of the box diagonal), undo, "
-                   "save-points F, explain, stats, figure ID, panel ID, expect-panel ID, key K, "
+                   "save-points F, save-result F, link, explain, stats, figure ID, panel ID, "
+                   "expect-panel ID, key K, "
                    "animation on|off, wait, wait-idle, expect-busy, cancel, frames N, "
                    "screenshot F.png, export F.png [WxH], export-animation F.webp [WxH [FRAMES]], "
                    "quit\n";
@@ -381,6 +425,18 @@ std::string Script::before_frame(Viewer& viewer) {
       done(viewer.undo_edit());
     } else if (command == "save-points") {
       if (needs_argument("a .xy path")) done(viewer.save_points(argument));
+    } else if (command == "save-result") {
+      if (needs_argument("a path (.ply .obj .stl .off, or .svg .obj for a curve)"))
+        done(viewer.save_result(argument));
+    } else if (command == "link") {
+      // The link (browser) or command line (desktop) that opens this view, on standard output.
+      std::string why_not;
+      const std::string link = viewer.link_to_view(why_not);
+      if (link.empty()) {
+        fail("'link': no link to this view: " + why_not);
+        continue;
+      }
+      std::cout << "link: " << link << std::endl;
     } else if (command == "layer") {
       if (arguments.size() != 2 || (arguments[1] != "on" && arguments[1] != "off")) {
         fail("'" + line + "': expected layer NAME on|off");

@@ -32,6 +32,8 @@
 //   expect-panel fig06c fail unless that panel is on screen as the figure shows it
 //   key pagedown        press a key (pagedown, pageup, ], [, t, escape, right, left, space, ...)
 //   animation off       jump to tour panels instead of moving there
+//   save-result a.ply   the result: a surface (.ply .obj .stl .off) or curve (.svg .obj)
+//   link                print the link (browser) or command line (desktop) of this view
 //   quit
 // A command with a missing or malformed argument prints one line and fails the script.
 #pragma once
@@ -45,21 +47,41 @@ namespace sculpt::viewer {
 
 class Script {
  public:
+  // automatic: run through (tests, demonstrations); lesson: watched by a class, each
+  // `screenshot` a pause until resume(), files not written, the comment block right above a
+  // command shown as the narration while it runs (examples/lessons).
+  enum class Mode { automatic, lesson };
   static Script from_file(const std::string& path);  // throws std::runtime_error
-  static Script from_text(const std::string& text);
+  static Script from_text(const std::string& text, Mode mode = Mode::automatic);
 
   // Runs commands until one needs frames to pass. Returns a screenshot path to save after this
   // frame is drawn, if a command asked for one.
   std::string before_frame(Viewer& viewer);
-  bool finished() const { return commands_.empty() && frames_to_wait_ == 0; }
+  bool finished() const { return commands_.empty() && frames_to_wait_ == 0 && !paused_; }
   bool failed() const { return failed_; }
+
+  // A lesson: paused at a picture, the narration of the commands running, and the step.
+  bool is_lesson() const { return mode_ == Mode::lesson; }
+  bool paused() const { return paused_; }
+  void resume();
+  const std::string& narration() const { return narration_; }
+  int step() const { return step_; }         // 1-based
+  int steps() const { return pauses_ + 1; }  // the pauses divide the lesson into steps
 
  private:
   void fail(const std::string& why);  // one line on stderr; the script will exit non-zero
 
-  std::deque<std::string> commands_;
+  struct Command {
+    std::string line;
+    std::string narration;  // the comment block right above it, as one paragraph per blank #
+  };
+  std::deque<Command> commands_;
   int frames_to_wait_ = 0;
   bool failed_ = false;
+  Mode mode_ = Mode::automatic;
+  bool paused_ = false;
+  int step_ = 1, pauses_ = 0;
+  std::string narration_;
 };
 
 }  // namespace sculpt::viewer

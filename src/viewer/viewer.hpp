@@ -115,6 +115,8 @@ class Viewer {
   void set_animation(bool on) { animate_ = on; }  // camera and stage moves between panels
 
   void press_key(int key);  // a GLFW key, as if pressed (scripts)
+  // A lesson runs (App): Page Down and Page Up are its, not the tour's.
+  void set_lesson_running(bool running) { lesson_running_ = running; }
 
   // A reconstruction runs, has ended and its result is not shown yet, or the view is still
   // moving to a tour panel.
@@ -145,6 +147,17 @@ class Viewer {
   bool export_animation(const std::string& path, int width, int height, int frames = 60);
   bool save_camera(const std::string& path);
   bool load_camera(const std::string& path);
+  // The result: a surface as .ply .obj .stl .off, a curve as .obj .svg (as `sculpt reconstruct`
+  // writes them: vertex i is sample i).
+  bool save_result(const std::string& path);
+
+  // The view on screen as options that open it again (viewer_link.cpp): example, method, kind,
+  // stage, step, sample; or figure and panel on a tour panel. Empty, with why, for a file or
+  // edited samples (they exist only here) and before any reconstruction.
+  std::vector<std::pair<std::string, std::string>> view_options(std::string& why_not) const;
+  // Those options as a link to the page (browser) or a sculpt-view command line (desktop).
+  std::string link_to_view(std::string& why_not) const;
+  void copy_link_to_view();  // to the clipboard, and shown in the message
 
   bool wants_to_quit() const { return quit_; }
   bool animating() const { return playing_ || job_->running(); }
@@ -197,6 +210,10 @@ class Viewer {
   }
 
   void draw_menu();
+  void draw_file_fields();
+  void draw_download_items();
+  // A file name for what is shown: "torus-paper-poles" and the extension.
+  std::string download_name(const std::string& extension) const;
   void draw_paper_menu();
   void draw_caption(int width, int height);
   void draw_panel(int height);
@@ -294,8 +311,10 @@ class Viewer {
   char picture_field_[1024] = "sculpt.png";
   char points_field_[1024] = "points.xy";
   char animation_field_[1024] = "sculpt.webp";
+  char result_field_[1024] = "sculpt.ply";
   int picture_size_[2] = {1600, 1200};
   bool show_help_ = false;
+  bool lesson_running_ = false;
   bool quit_ = false;
   int frame_width_ = 0, frame_height_ = 0;
 };

@@ -10,6 +10,7 @@
 
 #include "frontend/statistics_json.hpp"
 #include "picking.hpp"
+#include "platform/platform.hpp"
 #include "scene/palette.hpp"
 #include "shapes/shapes.hpp"
 #include "viewer.hpp"
@@ -112,6 +113,7 @@ bool Viewer::save_points(const std::string& path) {
             ? editor_.points()
             : std::vector<Point<2>>(r.sites.begin(), r.sites.begin() + r.sample_count());
     viewer::save_points(path, samples);
+    platform::deliver_file(path);
     message_ = "saved " + std::to_string(samples.size()) + " samples to " + path;
     return true;
   } catch (const std::exception& e) {

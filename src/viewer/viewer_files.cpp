@@ -1,5 +1,6 @@
 // What the viewer writes and reads besides the input: pictures and animations of the view,
-// drawn in-process as the figures are, and the camera as JSON; the File, Examples and View menus.
+// drawn in-process as the figures are, the result as a mesh or curve, and the camera as JSON.
+// In the browser each file written is handed to the user as a download (platform::deliver_file).
 #include <imgui.h>
 
 #include <algorithm>
@@ -9,6 +10,9 @@
 
 #include "frontend/shots.hpp"
 #include "io/atomic_file.hpp"
+#include "io/point_reader.hpp"
+#include "io/writers.hpp"
+#include "platform/platform.hpp"
 #include "render/framebuffer.hpp"
 #include "shapes/shapes.hpp"
 #include "viewer.hpp"
@@ -17,52 +21,6 @@
 namespace sculpt::viewer {
 
 using namespace internals;
-
-void Viewer::draw_menu() {
-  if (!ImGui::BeginMainMenuBar()) return;
-  if (ImGui::BeginMenu("File")) {
-    ImGui::InputText("##path", path_field_, sizeof path_field_);
-    ImGui::SameLine();
-    if (ImGui::Button("Open")) open_file(path_field_);
-    ImGui::TextDisabled("or drop a point file on the window");
-    ImGui::Separator();
-    ImGui::InputText("camera file", camera_field_, sizeof camera_field_);
-    if (ImGui::MenuItem("Save camera")) save_camera(camera_field_);
-    if (ImGui::MenuItem("Load camera")) load_camera(camera_field_);
-    ImGui::Separator();
-    ImGui::InputText("picture", picture_field_, sizeof picture_field_);
-    ImGui::InputInt2("size", picture_size_);
-    if (ImGui::MenuItem("Save picture", "P"))
-      export_picture(picture_field_, picture_size_[0], picture_size_[1]);
-    ImGui::InputText("animation", animation_field_, sizeof animation_field_);
-    if (ImGui::MenuItem("Save animation (WebP)")) {
-      // The replay at the propagation stage, else a sweep of the stages.
-      export_animation(animation_field_, picture_size_[0], picture_size_[1]);
-    }
-    ImGui::Separator();
-    if (ImGui::MenuItem("Quit")) quit_ = true;
-    ImGui::EndMenu();
-  }
-  if (ImGui::BeginMenu("Examples")) {
-    for (const auto& e : shapes::examples()) {
-      if (ImGui::MenuItem((e.name + " (" + std::to_string(e.dimension) + "D)").c_str(), nullptr,
-                          false, !busy())) {
-        open_example(e.name);
-      }
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.description.c_str());
-    }
-    ImGui::EndMenu();
-  }
-  draw_paper_menu();
-  if (ImGui::BeginMenu("View")) {
-    if (ImGui::MenuItem("Fit / reset camera", "R")) reset_camera(), scene_dirty_ = true;
-    if (ImGui::MenuItem("Controls", "H", show_help_)) show_help_ = !show_help_;
-    // Projector mode: text large enough for the back of a room.
-    ImGui::SliderFloat("text size", &ImGui::GetIO().FontGlobalScale, 0.5f, 3.0f, "%.1fx");
-    ImGui::EndMenu();
-  }
-  ImGui::EndMainMenuBar();
-}
 
 bool Viewer::export_animation(const std::string& path, int width, int height, int frames) {
   return export_shot(path, width, height,
@@ -132,6 +90,7 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
     message_ = std::string("error: ") + e.what();
     return false;
   }
+  platform::deliver_file(path);
   message_ = "saved " + path;
   return true;
 }
@@ -141,6 +100,7 @@ bool Viewer::save_camera(const std::string& path) {
     io::Atomic_file file(path, false);
     file.stream() << render::to_json(camera_).dump(2) << '\n';
     file.commit();
+    platform::deliver_file(path);
     message_ = "camera saved to " + path;
     return true;
   } catch (const std::exception& e) {
@@ -164,6 +124,51 @@ bool Viewer::load_camera(const std::string& path) {
     message_ = std::string("error: ") + e.what();
     return false;
   }
+}
+
+bool Viewer::save_result(const std::string& path) {
+  if (!reconstruction_) {
+    message_ = "nothing to save yet";
+    return false;
+  }
+  try {
+    std::visit(
+        [&](const auto& r) {
+          constexpr int D = std::decay_t<decltype(r)>::dimension;
+          // The samples as read (the first sites), or the vertices of a result that does not
+          // interpolate: vertex i of the file is sample i, as the command line writes it.
+          const auto& points = r.surface_points();
+          const std::vector<Point<D>> vertices(
+              points.begin(),
+              points.begin() + (r.interpolates() ? r.sample_count() : points.size()));
+          if constexpr (D == 3) {
+            io::write_surface(path, vertices, r.surface, false);
+          } else {
+            io::write_curve(path, vertices, r.surface);
+          }
+        },
+        *reconstruction_);
+  } catch (const std::exception& e) {
+    message_ = std::string("error: ") + e.what();
+    return false;
+  }
+  platform::deliver_file(path);
+  message_ = "saved " + path;
+  return true;
+}
+
+std::string Viewer::download_name(const std::string& extension) const {
+  std::string input = shown_request_.example;
+  if (input.empty()) {
+    const std::string& path = shown_request_.path;
+    input = path.substr(path.find_last_of('/') + 1);
+    input = input.substr(0, input.find('.'));
+  }
+  if (shown_request_.edited_points) input = "edited";
+  if (input.empty()) input = "sculpt";
+  const std::string method =
+      reconstruction_ ? to_string(options_of(*reconstruction_).method) : method_names()[method_];
+  return input + "-" + method + "-" + scene::stage_id(request_.stage) + extension;
 }
 
 }  // namespace sculpt::viewer

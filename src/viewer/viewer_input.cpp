@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "picking.hpp"
+#include "platform/platform.hpp"
 #include "viewer.hpp"
 #include "viewer_internals.hpp"
 
@@ -39,7 +40,9 @@ void Viewer::handle_input(int width, int height) {
                     GLFW_KEY_Z,
                     GLFW_KEY_DELETE,
                     GLFW_KEY_BACKSPACE}) {
-      if (ImGui::IsKeyPressed(key)) on_key(key);
+      // A lesson running takes the page keys (App): it goes on with Page Down.
+      const bool lesson_key = key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_PAGE_UP;
+      if (ImGui::IsKeyPressed(key) && !(lesson_running_ && lesson_key)) on_key(key);
     }
   }
   if (io.WantCaptureMouse || !reconstruction_) return;
@@ -107,7 +110,10 @@ void Viewer::on_key(int key) {
       set_step(std::max(0L, shown - 1));
       break;
     case GLFW_KEY_P:
-      export_picture(picture_field_, picture_size_[0], picture_size_[1]);
+      // The desktop: the path typed in the File menu; the browser: a download named for the view.
+      export_picture(platform::has_file_picker() ? platform::output_path(download_name(".png"))
+                                                 : std::string(picture_field_),
+                     picture_size_[0], picture_size_[1]);
       break;
     // The tour; page keys are what presentation remotes send.
     case GLFW_KEY_PAGE_DOWN:

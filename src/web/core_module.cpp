@@ -30,11 +30,13 @@ struct Result {
 
 // The progress of a run, handed to the JavaScript side: Module.onProgress(stage, fraction,
 // overall) if it is set; it returns false to cancel.
+// clang-format off (it would split JavaScript's "===")
 EM_JS(int, report_progress, (const char* stage, double fraction, double overall), {
   const report = Module["onProgress"];
   if (!report) return 1;
-  return report(UTF8ToString(stage), fraction, overall) == = false ? 0 : 1;
+  return report(UTF8ToString(stage), fraction, overall) === false ? 0 : 1;
 });
+// clang-format on
 
 bool progress(const sculpt::Progress& p) {
   return report_progress(p.stage ? p.stage : "", p.fraction, p.overall) != 0;
@@ -75,8 +77,12 @@ template <int D>
 void keep_result(Result& result, const sculpt::Reconstruction<D>& r) {
   for (const auto& facet : r.surface)
     result.facets.insert(result.facets.end(), facet.begin(), facet.end());
-  for (const auto& point : r.surface_points())
-    result.coordinates.insert(result.coordinates.end(), point.begin(), point.end());
+  // The samples (the first sites; box corners and inserted poles follow them), or the
+  // method's own vertices.
+  const auto& points = r.surface_points();
+  const std::size_t count = r.interpolates() ? r.sample_count() : points.size();
+  for (std::size_t i = 0; i < count; ++i)
+    result.coordinates.insert(result.coordinates.end(), points[i].begin(), points[i].end());
   const sculpt::Verdict verdict = sculpt::verdict(r.stats);
   nlohmann::json stats = sculpt::frontend::statistics_json(r.stats);
   stats["rule"] = sculpt::frontend::surface_rule_name(r.options, D);

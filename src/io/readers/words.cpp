@@ -1,5 +1,7 @@
 #include "words.hpp"
 
+#include "decimal.hpp"
+
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
@@ -46,7 +48,7 @@ bool parse_number(std::string_view word, double& value) {
   }
   if (word.empty()) return false;
   const char* end = word.data() + word.size();
-  const auto [stop, error] = std::from_chars(word.data(), end, value);
+  const auto [stop, error] = decimal_from_chars(word.data(), end, value);
   if (stop != end) return false;
   if (error == std::errc::result_out_of_range) {
     // Overflow to ±inf, underflow to a denormal or zero: what strtod gives.

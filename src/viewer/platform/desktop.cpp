@@ -42,6 +42,10 @@ void take_events(GLFWwindow*, bool animating) {
   }
 }
 
+std::string output_path(const std::string& name) {
+  return name;
+}
+
 void deliver_file(const std::string&) {}
 
 bool has_file_picker() {
@@ -50,8 +54,8 @@ bool has_file_picker() {
 
 void choose_file() {}
 
-void copy_text(GLFWwindow* window, const std::string& text) {
-  glfwSetClipboardString(window, text.c_str());
+void copy_text(const std::string& text) {
+  glfwSetClipboardString(glfwGetCurrentContext(), text.c_str());
 }
 
 void set_page_commands(Page_commands) {}

@@ -32,6 +32,9 @@ void run_main_loop(std::function<bool()> frame);
 // for one when nothing moves on screen); in the browser, size the canvas to the page.
 void take_events(GLFWwindow* window, bool animating);
 
+// Where to write a file the user asked for by name only: the current folder on the desktop; in
+// the browser a folder of the page's memory, whence deliver_file hands it over.
+std::string output_path(const std::string& name);
 // A file the viewer has just written at `path`: on the desktop it stays there; in the browser it
 // is handed to the user as a download named after it, and removed from the page's memory.
 void deliver_file(const std::string& path);
@@ -40,7 +43,7 @@ bool has_file_picker();
 // Opens the browser's file picker; the chosen file reaches the viewer as a dropped one does.
 void choose_file();
 // Puts text on the clipboard.
-void copy_text(GLFWwindow* window, const std::string& text);
+void copy_text(const std::string& text);
 // What the page's script may ask of the program: open a file it wrote into the program's file
 // system (the file picker), run a script (a lesson, the browser tests) and tell how it went (0
 // none, 1 running, 2 succeeded, 3 failed). main.cpp sets them; only the browser calls them.

@@ -9,6 +9,7 @@
 // clang-format on
 
 #include <cmath>
+#include <filesystem>
 
 #include "viewer/platform/platform.hpp"
 
@@ -23,12 +24,15 @@ void call_frame() {
   if (!frame_function()) emscripten_cancel_main_loop();
 }
 
+// clang-format off (JavaScript inside)
 EM_JS(void, download_file, (const char* path), {
   const name = UTF8ToString(path);
   const bytes = FS.readFile(name);
   FS.unlink(name);
   Module["sculptPage"].download(name.substring(name.lastIndexOf("/") + 1), bytes);
 });
+
+EM_JS(void, tell_page_started, (), { Module["sculptPage"].started(); });
 
 EM_JS(void, open_file_picker, (), { Module["sculptPage"].chooseFile(); });
 
@@ -42,6 +46,7 @@ EM_JS(char*, page_location, (), {
   stringToUTF8(address, text, size);
   return text;
 });
+// clang-format on
 
 }  // namespace
 
@@ -67,6 +72,7 @@ void run_main_loop(std::function<bool()> frame) {
   frame_function = std::move(frame);
   // 0: at the display's rate; false: return now, the page keeps the program alive.
   emscripten_set_main_loop(call_frame, 0, false);
+  tell_page_started();
 }
 
 void take_events(GLFWwindow* window, bool) {
@@ -81,6 +87,12 @@ void take_events(GLFWwindow* window, bool) {
   if (width != current_width || height != current_height) glfwSetWindowSize(window, width, height);
 }
 
+std::string output_path(const std::string& name) {
+  std::error_code ignored;
+  std::filesystem::create_directories("/downloads", ignored);
+  return "/downloads/" + name;
+}
+
 void deliver_file(const std::string& path) {
   download_file(path.c_str());
 }
@@ -93,7 +105,7 @@ void choose_file() {
   open_file_picker();
 }
 
-void copy_text(GLFWwindow*, const std::string& text) {
+void copy_text(const std::string& text) {
   write_clipboard(text.c_str());
 }
 

@@ -15,10 +15,12 @@ namespace sculpt::viewer {
 
 namespace {
 
+// clang-format off (JavaScript inside)
 EM_JS(void, start_in_worker, (int id, const char* request, const char* path),
       { Module["sculptJobs"].start(id, UTF8ToString(request), UTF8ToString(path)); });
 
 EM_JS(void, stop_worker, (int id), { Module["sculptJobs"].cancel(id); });
+// clang-format on
 
 class Worker_job;
 Worker_job* current = nullptr;  // the one job the page's messages are for

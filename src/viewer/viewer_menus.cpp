@@ -1,0 +1,121 @@
+// The menu bar: File (open, save what is shown, the link to this view), Examples and View; the
+// Paper menu is the tour's (viewer_tour.cpp). In the browser files come from the file picker and
+// leave as downloads, so the File menu asks for no paths.
+#include <imgui.h>
+
+#include "platform/platform.hpp"
+#include "shapes/shapes.hpp"
+#include "viewer.hpp"
+#include "viewer_internals.hpp"
+
+namespace sculpt::viewer {
+
+using namespace internals;
+
+void Viewer::draw_menu() {
+  if (!ImGui::BeginMainMenuBar()) return;
+  if (ImGui::BeginMenu("File")) {
+    if (platform::has_file_picker()) {
+      if (ImGui::MenuItem("Open a point file...", nullptr, false, !busy())) platform::choose_file();
+      ImGui::TextDisabled("or drop one on the page");
+      ImGui::Separator();
+      draw_download_items();
+    } else {
+      draw_file_fields();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem(platform::in_browser ? "Copy a link to this view"
+                                             : "Copy the command line for this view"))
+      copy_link_to_view();
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("What opens this example, method, stage and selection again");
+    if (!platform::in_browser) {
+      ImGui::Separator();
+      if (ImGui::MenuItem("Quit")) quit_ = true;
+    }
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Examples")) {
+    for (const auto& e : shapes::examples()) {
+      if (ImGui::MenuItem((e.name + " (" + std::to_string(e.dimension) + "D)").c_str(), nullptr,
+                          false, !busy())) {
+        open_example(e.name);
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.description.c_str());
+    }
+    ImGui::EndMenu();
+  }
+  draw_paper_menu();
+  if (ImGui::BeginMenu("View")) {
+    if (ImGui::MenuItem("Fit / reset camera", "R")) reset_camera(), scene_dirty_ = true;
+    if (ImGui::MenuItem("Controls", "H", show_help_)) show_help_ = !show_help_;
+    // Projector mode: text large enough for the back of a room.
+    ImGui::SliderFloat("text size", &ImGui::GetIO().FontGlobalScale, 0.5f, 3.0f, "%.1fx");
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+}
+
+// The desktop: each file at a path typed in the menu.
+void Viewer::draw_file_fields() {
+  ImGui::InputText("##path", path_field_, sizeof path_field_);
+  ImGui::SameLine();
+  if (ImGui::Button("Open")) open_file(path_field_);
+  ImGui::TextDisabled("or drop a point file on the window");
+  ImGui::Separator();
+  ImGui::InputText("camera file", camera_field_, sizeof camera_field_);
+  if (ImGui::MenuItem("Save camera")) save_camera(camera_field_);
+  if (ImGui::MenuItem("Load camera")) load_camera(camera_field_);
+  ImGui::Separator();
+  ImGui::InputText("picture", picture_field_, sizeof picture_field_);
+  ImGui::InputInt2("size", picture_size_);
+  if (ImGui::MenuItem("Save picture", "P"))
+    export_picture(picture_field_, picture_size_[0], picture_size_[1]);
+  ImGui::InputText("animation", animation_field_, sizeof animation_field_);
+  // The replay at the propagation stage, else a sweep of the stages.
+  if (ImGui::MenuItem("Save animation (WebP)"))
+    export_animation(animation_field_, picture_size_[0], picture_size_[1]);
+  ImGui::InputText("result", result_field_, sizeof result_field_);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("A surface as .ply .obj .stl .off, a curve as .obj .svg");
+  if (ImGui::MenuItem("Save the result", nullptr, false, reconstruction_ != nullptr))
+    save_result(result_field_);
+}
+
+// The browser: each file a download named after what is shown (torus-paper-poles.png).
+void Viewer::draw_download_items() {
+  const bool shown = reconstruction_ != nullptr;
+  ImGui::InputInt2("picture size", picture_size_);
+  if (ImGui::MenuItem("Save a picture (PNG)", "P", false, shown))
+    export_picture(platform::output_path(download_name(".png")), picture_size_[0],
+                   picture_size_[1]);
+  const bool replay = request_.stage == scene::Stage::propagation;
+  if (ImGui::MenuItem(
+          replay ? "Save the replay (animated WebP)" : "Save the stages (animated WebP)", nullptr,
+          false, shown))
+    export_animation(platform::output_path(download_name(".webp")), picture_size_[0],
+                     picture_size_[1]);
+  if (shown && shown_dimension() == 3) {
+    if (ImGui::BeginMenu("Save the surface")) {
+      for (const char* extension : {".ply", ".obj", ".stl", ".off"}) {
+        if (ImGui::MenuItem(extension + 1))
+          save_result(platform::output_path(download_name(extension)));
+      }
+      ImGui::EndMenu();
+    }
+  } else if (shown) {
+    if (ImGui::BeginMenu("Save the curve")) {
+      for (const char* extension : {".svg", ".obj"}) {
+        if (ImGui::MenuItem(extension + 1))
+          save_result(platform::output_path(download_name(extension)));
+      }
+      ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem("Save the samples (.xy)"))
+      save_points(platform::output_path(download_name(".xy")));
+  }
+  if (ImGui::MenuItem("Save the camera (JSON)", nullptr, false, shown))
+    save_camera(platform::output_path(download_name(".camera.json")));
+}
+
+}  // namespace sculpt::viewer

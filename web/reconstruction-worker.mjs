@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The viewer's reconstructions, off the page's thread: a request (frontend::Reconstruction_request
+// as JSON) and its input file's bytes in; progress, then the reconstruction with every stage as
+// bytes out (src/web/core_module.cpp, sculpt_run_request). The page hands in the compiled core.
+import createSculptCore from './sculpt/sculpt-core.mjs';
+
+let core = null;
+const waiting = [];
+
+onmessage = async ({ data }) => {
+  if (data.type === 'init') {
+    core = await createSculptCore({
+      instantiateWasm(imports, receive) {
+        WebAssembly.instantiate(data.module, imports).then((instance) => receive(instance, data.module));
+        return {};
+      },
+      print: (line) => console.log(line),
+      printErr: (line) => console.warn(line),
+    });
+    while (waiting.length) run(waiting.shift());
+  } else if (data.type === 'run') {
+    if (core) run(data); else waiting.push(data);
+  }
+};
+
+function run({ id, request, path, bytes }) {
+  if (bytes) {
+    core.FS.mkdirTree(path.substring(0, path.lastIndexOf('/')) || '/');
+    core.FS.writeFile(path, bytes);
+  }
+  // Progress at most every 50 ms, and at each new stage: the page draws at its own pace.
+  let lastStage = '';
+  let lastTime = 0;
+  core.onProgress = (stage, fraction, overall) => {
+    const now = performance.now();
+    if (stage !== lastStage || now - lastTime > 50) {
+      postMessage({ type: 'progress', id, stage, fraction, overall });
+      lastStage = stage;
+      lastTime = now;
+    }
+    return true;
+  };
+  const text = core.allocateUTF8(request);
+  const result = core._sculpt_run_request(text);
+  core._free(text);
+  const error = core.UTF8ToString(core._sculpt_result_error(result));
+  let description = '';
+  let out = null;
+  if (!error) {
+    description = JSON.parse(core.UTF8ToString(core._sculpt_result_json(result))).description;
+    const at = core._sculpt_result_bytes(result);
+    out = core.HEAPU8.slice(at, at + core._sculpt_result_byte_count(result)).buffer;
+  }
+  core._sculpt_result_free(result);
+  if (bytes) core.FS.unlink(path);
+  postMessage({ type: 'done', id, error, description, bytes: out }, out ? [out] : []);
+}

@@ -1,0 +1,236 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The page around the viewer (sculpt-view.wasm, the same program as the desktop's): its command
+// line from the page's address, its reconstructions in Web Workers, the files a user picks or
+// drops, the downloads it hands back, and what the browser tests ask of it (window.sculpt).
+
+const status = document.getElementById('status');
+const canvas = document.getElementById('canvas');
+
+function show(message, isError = false) {
+  status.textContent = message;
+  status.classList.toggle('error', isError);
+  status.hidden = false;
+}
+
+// The address's parameters as the viewer's options: ?example=torus&method=paper&stage=poles,
+// ?figure=fig06&panel=c, ?lesson=undersampling. Unknown ones are refused by the viewer in one
+// line, as on the command line.
+const options = {
+  example: '--example', method: '--method', stage: '--stage', step: '--step',
+  sample: '--pick-sample', figure: '--figure', panel: '--panel', lesson: '--lesson',
+  text: '--font-scale',
+};
+function argumentsFromAddress() {
+  const args = [];
+  for (const [key, value] of new URLSearchParams(location.search)) {
+    if (key in options) {
+      args.push(options[key], value);
+    } else if (key === 'kind' && (value === 'closed' || value === 'bordered')) {
+      args.push(`--${value}`);
+    } else if (key === 'animation' && value === 'off') {
+      args.push('--no-animation');
+    } else {
+      args.push(`--${key}`, value);  // the viewer names what it does not know
+    }
+  }
+  const density = window.devicePixelRatio || 1;
+  const width = Math.max(320, Math.round(canvas.clientWidth * density));
+  const height = Math.max(240, Math.round(canvas.clientHeight * density));
+  args.push('--size', `${width}x${height}`);
+  if (density > 1.25 && !new URLSearchParams(location.search).has('text')) {
+    args.push('--font-scale', String(Math.min(4, density)));
+  }
+  return args;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Reconstructions in a Web Worker (src/viewer/platform/worker_job.cpp asks for them). The core's
+// module is compiled once and handed to each worker; a cancel ends the worker and starts another.
+
+const coreUrl = new URL('sculpt/sculpt-core.wasm', import.meta.url);
+const compiledCore = WebAssembly.compileStreaming(fetch(coreUrl)).catch(async () =>
+  WebAssembly.compile(await (await fetch(coreUrl)).arrayBuffer()));
+
+const jobs = {
+  worker: null,
+  current: 0,  // the job the viewer waits for (0: none)
+
+  spawn() {
+    this.worker = new Worker(new URL('reconstruction-worker.mjs', import.meta.url),
+                             { type: 'module' });
+    this.worker.onmessage = ({ data }) => this.receive(data);
+    this.worker.onerror = (event) => {
+      if (this.current) this.finish(this.current, `internal error: ${event.message}`, '', null);
+    };
+    compiledCore.then((module) => this.worker.postMessage({ type: 'init', module }));
+  },
+
+  async start(id, request, path) {
+    this.current = id;
+    let bytes = null;
+    try {
+      bytes = await fileBytes(path);
+    } catch (error) {
+      this.finish(id, `error: ${error.message}`, '', null);
+      return;
+    }
+    if (id !== this.current) return;  // cancelled or replaced meanwhile
+    this.worker.postMessage({ type: 'run', id, request, path, bytes },
+                            bytes ? [bytes.buffer] : []);
+  },
+
+  cancel(id) {
+    if (id !== this.current) return;
+    this.worker.terminate();
+    this.spawn();
+    this.finish(id, 'cancelled', '', null);
+  },
+
+  receive(message) {
+    if (message.id !== this.current) return;
+    if (message.type === 'progress') {
+      withText(message.stage, (stage) =>
+        Module._sculpt_job_progress(message.id, stage, message.fraction, message.overall));
+    } else if (message.type === 'done') {
+      this.finish(message.id, message.error, message.description,
+                  message.bytes ? new Uint8Array(message.bytes) : null);
+    }
+  },
+
+  finish(id, error, description, bytes) {
+    if (id === this.current) this.current = 0;
+    const memory = bytes ? Module._malloc(bytes.length) : 0;
+    if (bytes) Module.HEAPU8.set(bytes, memory);
+    withText(error, (errorText) => withText(description, (descriptionText) =>
+      Module._sculpt_job_finished(id, errorText, descriptionText, memory, bytes ? bytes.length : 0)));
+    if (memory) Module._free(memory);
+  },
+};
+
+function withText(text, use) {
+  const pointer = Module.allocateUTF8(String(text ?? ''));
+  try {
+    return use(pointer);
+  } finally {
+    Module._free(pointer);
+  }
+}
+
+// The bytes a request reads: a file the user gave (in the viewer's file system), or one of the
+// CGAL meshes the paper's figures are drawn from (fetched from the site once, then kept).
+async function fileBytes(path) {
+  if (!path) return null;
+  if (Module.FS.analyzePath(path).exists) return Module.FS.readFile(path);
+  const mesh = path.match(/^\/cgal\/([\w.-]+)$/);
+  if (!mesh) return null;  // the worker says the file cannot be opened, as the command line does
+  const response = await fetch(new URL(`meshes/${mesh[1]}`, import.meta.url));
+  if (!response.ok) throw new Error(`cannot fetch the mesh ${mesh[1]} (${response.status})`);
+  const bytes = new Uint8Array(await response.arrayBuffer());
+  Module.FS.mkdirTree('/cgal');
+  Module.FS.writeFile(path, bytes);
+  return bytes.slice();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Files in and out (src/viewer/platform/web.cpp).
+
+const page = {
+  // A file the viewer wrote, handed to the user as a download.
+  download(name, bytes) {
+    const url = URL.createObjectURL(new Blob([bytes]));
+    const link = document.createElement('a');
+    link.href = url;
+    link.download = name;
+    document.body.appendChild(link);
+    link.click();
+    link.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 60000);
+    window.sculpt.downloads.push(name);
+  },
+
+  // The browser's file picker: the file is written into the viewer's file system and opened.
+  chooseFile() {
+    const input = document.createElement('input');
+    input.type = 'file';
+    input.accept = '.xyz,.pts,.txt,.csv,.pwn,.xy,.p2d,.ply,.off,.obj,.stl';
+    input.addEventListener('change', async () => {
+      const file = input.files[0];
+      if (file) await openFile(file);
+    });
+    input.click();
+  },
+
+  copyText(text) {
+    navigator.clipboard?.writeText(text).catch(() => {});
+    window.sculpt.copied = text;
+  },
+
+  // The viewer's main loop has started: its first frame is next.
+  started() {
+    window.sculpt.started = true;
+    status.hidden = true;
+  },
+};
+
+async function openFile(file) {
+  const path = `/files/${file.name.replace(/[/\\]/g, '_')}`;
+  Module.FS.mkdirTree('/files');
+  Module.FS.writeFile(path, new Uint8Array(await file.arrayBuffer()));
+  withText(path, (pathText) => Module._sculpt_open_file(pathText));
+}
+
+// ---------------------------------------------------------------------------------------------
+// What tests and scripts may ask of the page.
+
+window.sculpt = {
+  downloads: [],
+  copied: '',
+  errors: [],
+  // Runs viewer script commands (src/viewer/script.hpp) and resolves when they have run: true if
+  // every command succeeded.
+  async run(script) {
+    withText(script, (text) => Module._sculpt_run_script(text));
+    for (;;) {
+      const state = Module._sculpt_script_state();
+      if (state === 2 || state === 3) return state === 2;
+      await new Promise((resolve) => setTimeout(resolve, 20));
+    }
+  },
+  openFile,
+};
+
+// ---------------------------------------------------------------------------------------------
+// Start.
+
+if (!document.createElement('canvas').getContext('webgl2')) {
+  show('Sculpt needs WebGL 2, which this browser does not give the page.\n' +
+       'Try a current Firefox, Chrome, Edge or Safari, or turn on hardware acceleration.', true);
+} else if (typeof WebAssembly !== 'object') {
+  show('Sculpt needs WebAssembly, which this browser does not offer.', true);
+} else {
+  canvas.addEventListener('contextmenu', (event) => event.preventDefault());
+  jobs.spawn();
+  window.Module = {
+    canvas,
+    arguments: argumentsFromAddress(),
+    sculptJobs: jobs,
+    sculptPage: page,
+    print: (line) => console.log(line),
+    printErr: (line) => {
+      // The viewer's refusals (a link's unknown option, a script's bad command) are one line
+      // each: shown on the page as well as in the console.
+      console.warn(line);
+      window.sculpt.errors.push(line);
+      if (!window.sculpt.started) show(line, true);
+    },
+  };
+  window.sculpt.firstFrame = new Promise((resolve) => {
+    const wait = () => (canvas.width > 0 && window.sculpt.started ? resolve(performance.now())
+                                                                  : requestAnimationFrame(wait));
+    requestAnimationFrame(wait);
+  });
+  const script = document.createElement('script');
+  script.src = 'sculpt-view.js';
+  script.onerror = () => show('Sculpt could not be loaded from this address.', true);
+  document.body.appendChild(script);
+}
