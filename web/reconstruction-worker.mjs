@@ -24,9 +24,17 @@ onmessage = async ({ data }) => {
 };
 
 function run({ id, request, path, bytes }) {
+  // The file is read by its name alone, in a folder of its own: the description and any refusal
+  // name it as the user knows it ("scan.ply"), not by where the page keeps it.
+  let name = '';
   if (bytes) {
-    core.FS.mkdirTree(path.substring(0, path.lastIndexOf('/')) || '/');
-    core.FS.writeFile(path, bytes);
+    name = path.substring(path.lastIndexOf('/') + 1);
+    core.FS.mkdirTree('/input');
+    core.FS.chdir('/input');
+    core.FS.writeFile(name, bytes);
+    const asked = JSON.parse(request);
+    asked.path = name;
+    request = JSON.stringify(asked);
   }
   // Progress at most every 50 ms, and at each new stage: the page draws at its own pace.
   let lastStage = '';
@@ -52,6 +60,6 @@ function run({ id, request, path, bytes }) {
     out = core.HEAPU8.slice(at, at + core._sculpt_result_byte_count(result)).buffer;
   }
   core._sculpt_result_free(result);
-  if (bytes) core.FS.unlink(path);
+  if (bytes) core.FS.unlink(name);
   postMessage({ type: 'done', id, error, description, bytes: out }, out ? [out] : []);
 }

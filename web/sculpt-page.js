@@ -169,6 +169,7 @@ const page = {
   started() {
     window.sculpt.started = true;
     status.hidden = true;
+    canvas.focus();  // the keys (arrows, Page Down, E, ...) work before any click
   },
 };
 
@@ -177,6 +178,58 @@ async function openFile(file) {
   Module.FS.mkdirTree('/files');
   Module.FS.writeFile(path, new Uint8Array(await file.arrayBuffer()));
   withText(path, (pathText) => Module._sculpt_open_file(pathText));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Touch: one finger is the mouse's left button (a tap adds a sample while editing, a drag
+// orbits or pans), two fingers pinching are the wheel (zoom). Emscripten's GLFW reads no touch
+// positions (only SDL's events carry them), so touches reach it as the mouse events they mean,
+// registered before its own listeners and in their place.
+
+function touchAsMouse(target) {
+  let pinch = null;  // the fingers' last distance while two are down
+  const mouse = (type, touch, buttons) => target.dispatchEvent(new MouseEvent(type, {
+    clientX: touch.clientX, clientY: touch.clientY, button: 0, buttons, bubbles: true, cancelable: true,
+  }));
+  const distance = (touches) => Math.hypot(touches[0].clientX - touches[1].clientX,
+                                           touches[0].clientY - touches[1].clientY);
+  const take = (event) => {
+    event.preventDefault();  // no scrolling, no page zoom, no mouse events made up by the browser
+    event.stopImmediatePropagation();
+  };
+  target.addEventListener('touchstart', (event) => {
+    take(event);
+    if (event.touches.length === 1) {
+      mouse('mousemove', event.touches[0], 0);
+      mouse('mousedown', event.touches[0], 1);
+    } else if (event.touches.length === 2) {
+      mouse('mouseup', event.touches[0], 0);  // a pinch is not a drag
+      pinch = distance(event.touches);
+    }
+  }, { capture: true, passive: false });
+  target.addEventListener('touchmove', (event) => {
+    take(event);
+    if (event.touches.length === 1 && pinch === null) {
+      mouse('mousemove', event.touches[0], 1);
+    } else if (event.touches.length === 2 && pinch !== null) {
+      const now = distance(event.touches);
+      target.dispatchEvent(new WheelEvent('wheel', {
+        clientX: (event.touches[0].clientX + event.touches[1].clientX) / 2,
+        clientY: (event.touches[0].clientY + event.touches[1].clientY) / 2,
+        deltaY: (pinch - now) * 2, bubbles: true, cancelable: true,
+      }));
+      pinch = now;
+    }
+  }, { capture: true, passive: false });
+  const end = (event) => {
+    take(event);
+    if (event.touches.length === 0) {
+      if (pinch === null) mouse('mouseup', event.changedTouches[0], 0);
+      pinch = null;
+    }
+  };
+  target.addEventListener('touchend', end, { capture: true, passive: false });
+  target.addEventListener('touchcancel', end, { capture: true, passive: false });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -189,6 +242,8 @@ window.sculpt = {
   // Runs viewer script commands (src/viewer/script.hpp) and resolves when they have run: true if
   // every command succeeded.
   async run(script) {
+    // After the script running (the first view a link asks for), not instead of it.
+    while (Module._sculpt_script_state() === 1) await new Promise((resolve) => setTimeout(resolve, 20));
     withText(script, (text) => Module._sculpt_run_script(text));
     for (;;) {
       const state = Module._sculpt_script_state();
@@ -209,6 +264,7 @@ if (!document.createElement('canvas').getContext('webgl2')) {
   show('Sculpt needs WebAssembly, which this browser does not offer.', true);
 } else {
   canvas.addEventListener('contextmenu', (event) => event.preventDefault());
+  touchAsMouse(canvas);
   jobs.spawn();
   window.Module = {
     canvas,

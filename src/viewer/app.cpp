@@ -51,7 +51,8 @@ App::~App() {
 }
 
 App::Script_state App::script_state() const {
-  return script_ ? Script_state::running : finished_script_;
+  if (script_) return script_->paused() ? Script_state::paused : Script_state::running;
+  return finished_script_;
 }
 
 int App::exit_status() const {
@@ -69,38 +70,44 @@ bool App::start_lesson(const std::string& name) {
 // A window over the picture's top right: the lesson's title, the narration of the step on
 // screen, and Next (Page Down, what presentation remotes send) when it waits at a picture.
 void App::draw_lesson() {
-  if (!script_ || !script_->is_lesson()) return;
+  if (!script_ || !script_->is_lesson()) {
+    viewer_->set_reserved_height(0);
+    return;
+  }
   if (script_->paused() && !ImGui::GetIO().WantCaptureKeyboard &&
       ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN))
     script_->resume();
+  // A strip along the bottom of the picture, which it takes from the picture (as the tour's
+  // caption does), so that the narration never covers what it speaks of.
   const ImGuiViewport* view = ImGui::GetMainViewport();
-  const float width = std::min(560.0f * ImGui::GetIO().FontGlobalScale,
-                               0.45f * float(view_width(int(view->Size.x))));
-  ImGui::SetNextWindowPos(ImVec2(view->Size.x - 12, ImGui::GetFrameHeight() + 12), ImGuiCond_Always,
-                          ImVec2(1, 0));
-  ImGui::SetNextWindowSize(ImVec2(width, 0), ImGuiCond_Always);
-  ImGui::SetNextWindowBgAlpha(0.92f);
+  const float width = float(view_width(int(view->Size.x)));
+  ImGui::SetNextWindowPos(ImVec2(panel_width(), view->Size.y), ImGuiCond_Always, ImVec2(0, 1));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0), ImVec2(width, 0.4f * view->Size.y));
   ImGui::Begin("Lesson", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "%s", lesson_title_.c_str());
+                   ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::PushTextWrapPos(width - ImGui::GetStyle().WindowPadding.x);
+  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "Lesson: %s", lesson_title_.c_str());
   ImGui::TextDisabled("step %d of %d", std::min(script_->step(), script_->steps()),
                       script_->steps());
-  ImGui::Separator();
-  ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextUnformatted(script_->narration().c_str());
-  ImGui::PopTextWrapPos();
+  ImGui::SameLine();
   if (script_->paused()) {
-    if (ImGui::Button("Next (Page Down)")) script_->resume();
+    if (ImGui::SmallButton("Next (Page Down)")) script_->resume();
   } else {
-    ImGui::TextDisabled("running...");
+    ImGui::TextDisabled("(running)");
   }
   ImGui::SameLine();
-  if (ImGui::Button("End the lesson")) {
+  bool end = ImGui::SmallButton("End the lesson");
+  ImGui::TextUnformatted(script_->narration().c_str());
+  ImGui::PopTextWrapPos();
+  viewer_->set_reserved_height(int(ImGui::GetWindowHeight()));
+  ImGui::End();
+  if (end) {
     script_.reset();
     finished_script_ = Script_state::succeeded;
+    viewer_->set_reserved_height(0);
   }
-  ImGui::End();
 }
 
 void App::draw_lessons_menu() {

@@ -32,8 +32,9 @@ class App {
   }
   // Runs a shipped lesson (lessons.hpp) step by step; false if there is none of that name.
   bool start_lesson(const std::string& name);
-  // The script's state: none ran, it runs, it ended well, or a command failed.
-  enum class Script_state { none, running, succeeded, failed };
+  // The script's state: none ran, it runs, it ended well, a command failed, or (a lesson) it
+  // waits at a picture for Next.
+  enum class Script_state { none, running, succeeded, failed, paused };  // paused: a lesson's
   Script_state script_state() const;
 
   // One frame: events, the script's commands, the viewer, the panels drawn. False when the

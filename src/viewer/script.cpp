@@ -1,5 +1,7 @@
 #include "script.hpp"
 
+#include "figures/paper_figures.hpp"
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
@@ -10,6 +12,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -219,7 +222,8 @@ std::string Script::before_frame(Viewer& viewer) {
                    "camera fit|zoom F|orbit YAW PITCH|pan X Y|save F|load F, edit on|off, "
                    "add-point X Y, move-point K X Y, delete-point K, stroke SPACING X Y X Y... "
                    "(SPACING a share of the box diagonal), undo, "
-                   "save-points F, save-result F, link, explain, stats, figure ID, panel ID, "
+                   "save-points F, save-result F, link, message, figures, explain, stats, "
+                   "figure ID, panel ID, "
                    "expect-panel ID, key K, "
                    "animation on|off, wait, wait-idle, expect-busy, cancel, frames N, "
                    "screenshot F.png, export F.png [WxH], export-animation F.webp [WxH [FRAMES]], "
@@ -315,6 +319,19 @@ std::string Script::before_frame(Viewer& viewer) {
         continue;
       }
       done(viewer.export_picture(argument, size->first, size->second));
+    } else if (command == "message") {
+      // The panel's message line (what was opened, saved or refused), on standard output.
+      std::cout << "message: " << viewer.message() << std::endl;
+    } else if (command == "figures") {
+      // The paper's figures and their panels, one JSON line on standard output.
+      nlohmann::json all = nlohmann::json::array();
+      for (const auto& figure : figures::paper_figures()) {
+        nlohmann::json panels = nlohmann::json::array();
+        for (std::size_t i = 0; i < figure.images.size(); ++i)
+          panels.push_back(figure.id + figure.images[i].suffix);
+        all.push_back({{"id", figure.id}, {"panels", panels}});
+      }
+      std::cout << "figures: " << all.dump() << std::endl;
     } else if (command == "explain") {
       // The Explanation panel's paragraph, on standard output: for demos and tests.
       if (!viewer.has_reconstruction()) {

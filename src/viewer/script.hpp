@@ -34,6 +34,8 @@
 //   animation off       jump to tour panels instead of moving there
 //   save-result a.ply   the result: a surface (.ply .obj .stl .off) or curve (.svg .obj)
 //   link                print the link (browser) or command line (desktop) of this view
+//   message             print the panel's message line
+//   figures             print the paper's figures and their panels (JSON)
 //   quit
 // A command with a missing or malformed argument prints one line and fails the script.
 #pragma once

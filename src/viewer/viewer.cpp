@@ -284,13 +284,13 @@ void Viewer::frame(int width, int height, double seconds) {
     options.hidden_layers = hidden_layers_;
     // The picture takes the window right of the panel, above the figure's caption.
     options.viewport_x = int(panel_width());
-    options.viewport_y = caption_height_;
+    options.viewport_y = caption_height_ + reserved_height_;
     renderer_->draw(camera_, view_width(width), view_height(height), options);
   }
 }
 
 int Viewer::view_height(int window_height) const {
-  return std::max(1, window_height - caption_height_);
+  return std::max(1, window_height - caption_height_ - reserved_height_);
 }
 
 }  // namespace sculpt::viewer

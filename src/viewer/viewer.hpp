@@ -117,6 +117,9 @@ class Viewer {
   void press_key(int key);  // a GLFW key, as if pressed (scripts)
   // A lesson runs (App): Page Down and Page Up are its, not the tour's.
   void set_lesson_running(bool running) { lesson_running_ = running; }
+  // Pixels along the window's bottom that another window takes (App's lesson), under the picture
+  // and the tour's caption.
+  void set_reserved_height(int pixels) { reserved_height_ = std::max(0, pixels); }
 
   // A reconstruction runs, has ended and its result is not shown yet, or the view is still
   // moving to a tour panel.
@@ -286,6 +289,7 @@ class Viewer {
   };
   std::optional<Camera_move> camera_move_;
   int caption_height_ = 0;
+  int reserved_height_ = 0;
   std::string caption_figure_;  // the figure the caption's height was measured on
   float caption_min_height_ = 0;
 

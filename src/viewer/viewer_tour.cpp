@@ -266,7 +266,8 @@ void Viewer::draw_caption(int width, int height) {
     caption_figure_ = tour_.figure().id;
     caption_min_height_ = 0;
   }
-  ImGui::SetNextWindowPos(ImVec2(panel_width(), float(height)), ImGuiCond_Always, ImVec2(0, 1));
+  ImGui::SetNextWindowPos(ImVec2(panel_width(), float(height - reserved_height_)), ImGuiCond_Always,
+                          ImVec2(0, 1));
   const float caption_max_height = 0.45f * float(height);
   ImGui::SetNextWindowSizeConstraints(
       ImVec2(caption_width, std::min(caption_min_height_, caption_max_height)),

@@ -46,7 +46,7 @@ void choose_file();
 void copy_text(const std::string& text);
 // What the page's script may ask of the program: open a file it wrote into the program's file
 // system (the file picker), run a script (a lesson, the browser tests) and tell how it went (0
-// none, 1 running, 2 succeeded, 3 failed). main.cpp sets them; only the browser calls them.
+// none, 1 running, 2 succeeded, 3 failed, 4 a lesson waiting at a picture). main.cpp sets them; only the browser calls them.
 struct Page_commands {
   std::function<void(const std::string& path)> open_file;
   std::function<void(const std::string& script)> run_script;

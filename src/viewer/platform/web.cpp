@@ -20,7 +20,10 @@ namespace {
 std::function<bool()> frame_function;
 Page_commands page_commands;
 
+long frames_drawn = 0;
+
 void call_frame() {
+  ++frames_drawn;
   if (!frame_function()) emscripten_cancel_main_loop();
 }
 
@@ -133,6 +136,11 @@ EMSCRIPTEN_KEEPALIVE void sculpt_open_file(const char* path) {
 EMSCRIPTEN_KEEPALIVE void sculpt_run_script(const char* script) {
   if (sculpt::viewer::platform::page_commands.run_script)
     sculpt::viewer::platform::page_commands.run_script(script);
+}
+
+// Frames drawn since the start: how the tests see the page stay live during a reconstruction.
+EMSCRIPTEN_KEEPALIVE double sculpt_frames_drawn() {
+  return double(sculpt::viewer::platform::frames_drawn);
 }
 
 EMSCRIPTEN_KEEPALIVE int sculpt_script_state() {

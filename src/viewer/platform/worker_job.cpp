@@ -110,6 +110,11 @@ EMSCRIPTEN_KEEPALIVE void sculpt_job_progress(int id, const char* stage, double 
   if (sculpt::viewer::current) sculpt::viewer::current->progress(id, stage, fraction, overall);
 }
 
+// Whether a reconstruction runs (the benchmark counts the frames drawn meanwhile).
+EMSCRIPTEN_KEEPALIVE int sculpt_job_running() {
+  return sculpt::viewer::current && sculpt::viewer::current->running() ? 1 : 0;
+}
+
 EMSCRIPTEN_KEEPALIVE void sculpt_job_finished(int id, const char* error, const char* description,
                                               const std::uint8_t* bytes, int size) {
   if (sculpt::viewer::current)
