@@ -88,6 +88,7 @@ Renderer::~Renderer() {
 }
 
 void Renderer::set_scene(const scene::Scene& scene) {
+  ++generation_;
   for (auto& layer : layers_) {
     glDeleteBuffers(3, layer.buffers);
     glDeleteVertexArrays(1, &layer.array);

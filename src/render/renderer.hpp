@@ -3,6 +3,7 @@
 // a current GL 3.3 context when constructed and used.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,6 +39,8 @@ class Renderer {
   void draw(const Camera& camera, int width, int height, const Draw_options& options = {});
   // The uploaded scene without its geometry: its layers' ids, labels and colours.
   const scene::Scene& scene() const { return scene_; }
+  // Counts the scenes uploaded: a picture of the scene is stale when this has changed.
+  std::uint64_t scene_generation() const { return generation_; }
 
  private:
   struct Programs;
@@ -45,6 +48,7 @@ class Renderer {
   std::unique_ptr<Programs> programs_;
   std::vector<Gpu_layer> layers_;
   scene::Scene scene_;  // the scene without its geometry: kinds, colours, labels
+  std::uint64_t generation_ = 0;
   unsigned overlay_array_ = 0, overlay_buffer_ = 0;
 
   void draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera, int width,

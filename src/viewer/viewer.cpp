@@ -285,7 +285,7 @@ void Viewer::frame(int width, int height, double seconds) {
     // The picture takes the window right of the panel, above the figure's caption.
     options.viewport_x = int(panel_width());
     options.viewport_y = caption_height_ + reserved_height_;
-    renderer_->draw(camera_, view_width(width), view_height(height), options);
+    picture_cache_.draw(*renderer_, camera_, view_width(width), view_height(height), options);
   }
 }
 

@@ -15,6 +15,7 @@
 #include "point_editor.hpp"
 #include "reconstruction_job.hpp"
 #include "render/camera.hpp"
+#include "render/picture_cache.hpp"
 #include "render/picture_renderer.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
@@ -236,6 +237,7 @@ class Viewer {
   const Labelling_event* latest_event() const;
 
   std::unique_ptr<render::Renderer> renderer_;
+  render::Picture_cache picture_cache_;  // the picture, drawn again only when it changes
   std::unique_ptr<render::Picture_renderer> picture_renderer_;  // exports, made at the first
   std::unique_ptr<Reconstruction_job> job_ = make_reconstruction_job();
   Job_request last_request_;

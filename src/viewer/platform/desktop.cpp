@@ -14,7 +14,8 @@ GLFWwindow* open_window(int width, int height, std::string& error) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SAMPLES, 4);
+  // No multisampling: the picture has its own (render::Picture_cache), the panels need none.
+  glfwWindowHint(GLFW_SAMPLES, 0);
   GLFWwindow* window = glfwCreateWindow(width, height, "Sculpt", nullptr, nullptr);
   if (!window) {
     error = "cannot open an OpenGL 3.3 window";

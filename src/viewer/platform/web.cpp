@@ -57,7 +57,8 @@ GLFWwindow* open_window(int width, int height, std::string& error) {
   glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
-  glfwWindowHint(GLFW_SAMPLES, 4);
+  // No multisampling: the picture has its own (render::Picture_cache), the panels need none.
+  glfwWindowHint(GLFW_SAMPLES, 0);
   GLFWwindow* window = glfwCreateWindow(width, height, "Sculpt", nullptr, nullptr);
   if (!window) {
     error = "this browser gives the page no WebGL 2 context";
