@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Writes OUTPUT, a C++ file that holds each lesson of LESSON_DIR (NAME.script) as text, so that
 # `sculpt-view --lesson NAME` and the browser's ?lesson=NAME need no files at run time.
 file(GLOB lesson_files "${LESSON_DIR}/*.script")

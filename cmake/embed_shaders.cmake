@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Writes OUTPUT, a C++ file that holds each GLSL file of SHADER_DIR as a string constant named
 # after it (points.vert -> points_vert), so the programs need no files at run time.
 file(GLOB shader_files "${SHADER_DIR}/*.vert" "${SHADER_DIR}/*.frag")

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The browser build's libraries (configured by emcmake; scripts/web). Emscripten brings its own C
 # and C++ libraries and does not search the host's /usr/include, so the header-only libraries
 # Debian installs (CGAL, Boost, fmt, nlohmann-json, CLI11, GLM, stb) are reached through a folder

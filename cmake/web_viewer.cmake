@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The viewer in the browser: sculpt-view.js and sculpt-view.wasm, started by web/index.html with
 # the page's address as its command line (web/sculpt-page.js). Its reconstructions run in a Web
 # Worker on the core's module (web/CMakeLists.txt), so it links no reconstruction code itself.

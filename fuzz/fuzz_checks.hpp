@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the fuzzers check on every input, shared with the suite that replays the inputs that
 // once failed (tests/fuzz_regressions_test.cpp), so a regression fails in every build.
 #pragma once

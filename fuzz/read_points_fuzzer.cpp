@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target for one point reader (SCULPT_FUZZ_FORMAT: ".ply", ".off", ...): see
 // check_reader in fuzz_checks.hpp.
 #include <cstdlib>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // libFuzzer target for the reconstruction on tiny inputs: see check_reconstruction in
 // fuzz_checks.hpp.
 #include "fuzz_checks.hpp"

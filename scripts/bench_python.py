@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """What calling Sculpt from Python costs over its C++ core (a benchmark, not a test).
 
 For each input, one table row: the core's own time (the sum of its stages, as

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 in vec2 local;
 uniform vec4 color;
 uniform bool translucent;

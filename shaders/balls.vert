@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A ball is drawn as a square facing the camera, one instance of a four-vertex strip per ball;
 // the fragment shader cuts out the circle (2D) or shades the sphere (3D).
 layout(location = 0) in vec3 center;

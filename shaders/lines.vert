@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Thick lines (glLineWidth > 1 exists neither in a forward-compatible core context nor in
 // WebGL): each segment is one instance of a four-vertex strip, its quad widened to line_width
 // pixels across the segment's direction on screen.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Triangles lit by a headlight: flat shading from the screen-space derivatives of the position,
 // or smooth from vertex normals. Both sides are lit, so a bordered sheet shows from behind.
 in vec3 view_position;

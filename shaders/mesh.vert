@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 uniform mat4 view;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Round points with a thin dark rim, so overlapping points stay apart. In 3D each is shaded as
 // a small sphere lit from the upper left of the viewer, so points read as lying in depth, and
 // its depth follows the sphere's front, so nearer points cover farther ones roundly.

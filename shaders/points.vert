@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Points with a size in pixels, whatever the zoom.
 layout(location = 0) in vec3 position;
 uniform mat4 view_projection;

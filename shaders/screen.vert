@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Overlays (legend, title) in pixel coordinates, origin at the top left.
 layout(location = 0) in vec3 position;
 uniform vec2 viewport;

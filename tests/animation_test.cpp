@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Animations: frames written as an animated WebP decode back to the same pictures, in order,
 // with their timing; bad frames are one clear error and no file.
 #include "render/animation.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Input the algorithm cannot work on is refused with an Input_error naming the problem.
 #include <gtest/gtest.h>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Boissonnat's greedy sculpting (1984): it stops when every sample is on the boundary, and its
 // removals keep the boundary a polyhedron through the same samples, so it is exact where the
 // hull only has to be dug into (a star, a bumpy sphere) but can never open a hole: an annulus

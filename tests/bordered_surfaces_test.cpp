@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Bordered surfaces end where the samples end, and the automatic kind closes what is closed and
 // keeps the borders that are there: generated shapes whose borders are known.
 #include <gtest/gtest.h>

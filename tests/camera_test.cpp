@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The replay's camera (render::follow_point): it keeps the action in view without losing the
 // shape, and leaves alone a zoom the user chose.
 #include "render/camera.hpp"

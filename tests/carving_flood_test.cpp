@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robust carving's shortcut (methods/robust/manifold_carving.hpp): the outer cells flooded
 // at once stand for carving them cell by cell only where that is where the carving was going;
 // elsewhere the flood is undone and leaves no trace. And the check of a closed skin it relies on.

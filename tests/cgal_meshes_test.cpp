@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Real data: the vertices of CGAL's meshes (Debian's libcgal-demo, unpacked by the
 // unpack_cgal_meshes fixture), reconstructed by both methods and compared with the mesh itself:
 // its topology and the share of its triangles reproduced.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The methods CGAL computes for us, beside ours on the same stages: the Advancing Front keeps
 // its promise (a closed manifold on smooth dense samples, never a non-manifold edge), and the
 // alpha shape takes the smallest alpha that makes one solid holding every sample (the alpha

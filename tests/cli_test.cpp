@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The `sculpt` command as a user runs it: outputs, statistics, and one clear line and a
 // non-zero exit on bad input, with no output file left behind.
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The cut-away plane of 3D stages: whole primitives whose centre lies beyond the plane go, the
 // rest stay as they were; the plane's position runs across the samples' box along its normal.
 #include "scene/clipping.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The co-cone's undersampling detection (Dey & Giesen 2001) and the tight co-cone (Dey &
 // Goswami 2003): on dense samples of smooth closed shapes nothing is undersampled and both give
 // the same closed surface (the tight co-cone's solid bounded by it); where a cap of samples is

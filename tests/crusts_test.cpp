@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The crusts, siblings of the sculpting methods over the same first stages: the crust of Amenta,
 // Bern and Kamvysselis and the NN-crust of Dey and Kumar give the polygon through consecutive
 // samples on closed curves sampled densely enough, keep their own stage as data, and refuse

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // 2D: sampled closed curves come back as exactly the polygon through consecutive samples,
 // oriented counterclockwise around the region they bound.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The readers' numbers in the browser: where the C++ library lacks the floating-point
 // std::from_chars (Emscripten's libc++), io::decimal_from_chars_portable reads the same syntax
 // to the same value. Checked here against the library's own from_chars, on tricky words and on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Explanation panel: every stage of every method, in each dimension it works in and for
 // either kind of surface, has its own paragraph that names what it draws.
 #include "frontend/explanations.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `sculpt figures`: the list covers every figure of the paper, each image is written, shows
 // something, and every layer it was drawn with has content; the tables and gallery are there.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Files for the io and command-line tests, in a folder of the build tree.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every input a fuzzer once failed on (fuzz/regressions/TARGET/), replayed through the same
 // checks the fuzzers make, in every build: the sanitizer build catches what ASan caught then.
 #include <gtest/gtest.h>

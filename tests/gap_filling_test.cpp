@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Gaps in the sampling filled after the bordered rule (methods/robust/gap_filling.hpp): the loops
 // found, the fills made, and the fills refused.
 #include "methods/robust/gap_filling.hpp"

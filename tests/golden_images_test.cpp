@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Golden images: every 2D stage of a built-in curve and three 3D stages of a built-in shape,
 // rendered headless and compared with tests/golden/*.png within a per-pixel tolerance and a
 // mismatch ratio. A failure writes the actual image and a diff next to the build and prints

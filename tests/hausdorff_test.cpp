@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The Hausdorff distance `sculpt compare` measures results with: zero for a mesh and itself,
 // the gap between parallel copies, a lifted point inside a triangle, a scaled sphere.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile input through the `sculpt` command: every file below is generated here, most are a
 // few bytes, and each must give its exit code (1 bad input, 2 bad usage), exactly one line on
 // stderr, and an output folder left empty. Nothing may crash, hang or leave a temporary.

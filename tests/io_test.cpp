@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading points from every input format, and writing every output format and reading it back.
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Slow (ctest label "slow", run with SCULPT_SLOW_TESTS=1 scripts/test): large inputs keep the
 // guarantees the small ones have. Times are measured by `sculpt bench`, not asserted here.
 #include "shapes/shapes.hpp"

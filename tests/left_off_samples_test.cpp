@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Mending a bordered surface's border (methods/robust/left_off_samples.hpp): samples left off
 // attached, sharp notches closed, each only where a triangle may be added.
 #include "methods/robust/left_off_samples.hpp"

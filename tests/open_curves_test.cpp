@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // 2D curves that end: the robust method's bordered rule (src/methods/robust/open_curves.hpp)
 // gives every stroke as one open polyline through its samples, with no chord between its ends
 // and no branch point, and keeps closed curves closed.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every layer a stage shows has a colour of its own, told apart at a glance: for every method,
 // in 2D and 3D, every stage, with and without a picked sample or pole, mid-replay. Colours are
 // compared as people see them (CIELAB distance), not as RGB numbers: a dark and a light green

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper in the viewer: the tour reaches every panel of every figure (Paper menu, --figure,
 // script and keys), each panel's picture is the gallery's (both through the headless renderer,
 // within the golden tolerance), and a short tour runs from the keyboard alone.

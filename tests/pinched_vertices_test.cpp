@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fans of triangles pinched at a vertex, joined (methods/robust/pinched_vertices.hpp).
 #include "methods/robust/pinched_vertices.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The viewer's point editor on its own: every edit is undone exactly, a drag is one edit, and
 // what the triangulation would refuse (a repeated point, a missing index) is refused here first.
 #include "viewer/point_editor.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The k-d tree's answers against brute force: the k-th nearest distances and neighbours that
 // measure the samples' spacing (spanning_openings.hpp) and the "any point within" query of the
 // circumball tests (circumball_query.hpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The power crust (Amenta, Choi & Kolluri 2001): on densely sampled closed shapes it is a closed,
 // outward-facing 2-manifold of the shape's genus (closed curves running counterclockwise in 2D),
 // through vertices of its own near the samples, not through the samples, and more of them.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Progress: every method runs the stages planned for it (so the overall progress crosses them
 // all), and the overall fraction a caller sees only grows, from 0 to 1.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The inside test's index (methods/extraction/ray_crossings.hpp) against testing every triangle.
 #include "methods/extraction/ray_crossings.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A reconstruction made into bytes and back (how the browser's worker hands it to the page) is
 // the same reconstruction: every stage of every method draws the same scene from it, with a
 // sample and a pole picked, and its statistics and verdict are the same; bytes that are not a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A layer that silently disappears must fail a test, not only drift pixels: every layer of
 // every stage puts something on screen, removing it changes the picture, and the paper's
 // colours are where they belong.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rendering for the tests: one headless renderer for the whole test program, and scenes of
 // built-in examples.
 #pragma once

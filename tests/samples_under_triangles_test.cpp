@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Samples left off beneath a bordered surface, set into the triangle or edge over them
 // (methods/robust/samples_under_triangles.hpp).
 #include "methods/robust/samples_under_triangles.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checks shared by the tests of the scenes a reconstruction's stages make.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The scene layer without GL: which layers each stage has, the propagation replay, the camera.
 #include "scene/scene.hpp"
 

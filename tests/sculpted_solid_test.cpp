@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's solid and surface read off DT(S ∪ BBV) by circumball queries (what the command
 // line runs) are the ones inserting OUP gives (what the viewer shows), triangle for triangle,
 // including inputs full of cospherical points, where only CGAL's symbolic perturbation decides.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The intermediate stages are what the viewer shows and a student reads: check that each one
 // means what the API says it means.
 #include <cmath>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The methods that filter Delaunay triangles and extract a manifold from them: the crust for
 // surfaces (Amenta, Bern & Kamvysselis) and the co-cone (Amenta, Choi, Dey & Leekha). Their
 // papers promise a closed manifold through every sample on well-sampled smooth closed surfaces;

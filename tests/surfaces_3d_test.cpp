@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // 3D: closed samples give closed, outward-oriented 2-manifolds of the right genus whose
 // vertices are the samples; bordered samples give a manifold sheet with its border.
 #include <cmath>

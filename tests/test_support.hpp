@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Checks shared by the tests: what makes a reconstructed curve or surface right.
 #pragma once
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Unpacks the CGAL meshes the tests read from Debian's libcgal-demo archive.
 if(NOT EXISTS "${ARCHIVE}")
   message(FATAL_ERROR "${ARCHIVE} is missing: install Debian's libcgal-demo (scripts/install-dependencies)")

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Running the viewer in a virtual X display (Xvfb), driven by a script (src/viewer/script.hpp).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The viewer in a real window under Xvfb, driven by scripts: it steps through every stage of a
 // 2D and a 3D example, its pictures change from stage to stage with the panel present, it keeps
 // drawing while a 100k-point reconstruction runs, it saves pictures through the headless

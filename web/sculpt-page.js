@@ -131,6 +131,14 @@ async function fileBytes(path) {
   return bytes.slice();
 }
 
+async function prefetchMeshes() {
+  const names = await (await fetch(new URL('meshes/list.json', import.meta.url))).json();
+  for (const name of names) {
+    if (!Module.FS.analyzePath(`/cgal/${name}`).exists) await fileBytes(`/cgal/${name}`);
+  }
+  window.sculpt.meshesLoaded = true;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Files in and out (src/viewer/platform/web.cpp).
 
@@ -170,6 +178,8 @@ const page = {
     window.sculpt.started = true;
     status.hidden = true;
     canvas.focus();  // the keys (arrows, Page Down, E, ...) work before any click
+    // Then, while the page is idle, the figures' meshes: once loaded, the tour needs no network.
+    setTimeout(() => prefetchMeshes().catch(() => {}), 2000);
   },
 };
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Samples a sphere, reconstructs it through the installed libsculpt, and prints the verdict:
 // what a program outside the project needs is include/sculpt/sculpt.hpp and Sculpt::sculpt.
 // Exits 0 when the result is a closed 2-manifold and bad input is reported as the API says.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Lesson 2: the pole separation replayed event by event (Kuo & Yau sec. 3.2).
 
 Runs the paper's method on the built-in star and walks through its labelling events: which pole

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Lesson 3: a 3D scan to a watertight STL, and the truth about the result.
 
 Reads a point file (or uses the built-in bumpy sphere), drops repeated points, reconstructs with

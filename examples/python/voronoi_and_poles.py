@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Lesson 1: the Voronoi diagram of samples on a curve, and its poles (Amenta's; Kuo & Yau sec. 3).
 
 Reconstructs the built-in star, then draws with matplotlib what the first stages hold:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sculpt: Delaunay-based curve and surface reconstruction by sculpting
 // (Kuo & Yau, "A Delaunay-based region-growing approach to surface reconstruction from
 // unorganized points", 2003, sections 3 and 4), and methods beyond the paper over the same stages.

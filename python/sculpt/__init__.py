@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Sculpt: Delaunay-based curve and surface reconstruction (Kuo & Yau 2003, and its peers).
 
     import sculpt

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `sculpt bench`: every method next to CGAL's Delaunay triangulation and CGAL's Advancing Front
 // on the same points. Each measurement is a process of its own (`sculpt bench-job`, started
 // afresh, not forked), so its CPU time and peak memory are the whole process's, reading the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `sculpt compare`: the methods side by side on the same inputs, as the paper argues (Kuo & Yau
 // sec. 7, Table 2) and a course needs: one table (markdown on standard output, and JSON) of the
 // time and memory of each method against CGAL's Delaunay triangulation of the same points

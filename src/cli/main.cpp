@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The `sculpt` command: reconstruct a curve or surface from a point file, or from a built-in
 // example, and write it with the sculpted solid and the run's statistics.
 #include <fmt/format.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // `sculpt render`: pictures of any stage, headless (OSMesa), one shot or a list of shots in
 // one process.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What `sculpt reconstruct` tells the user: the stages with their times and memory, and the
 // statistics of the result, as a table on standard output or as JSON.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One mode for real scans: closed or bordered, chosen from the samples.
 //
 // A user should not have to know whether a scan is closed. The closed reconstruction is right on

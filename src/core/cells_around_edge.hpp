@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether a cell around an edge of a 3D triangulation passes a test: the question both hull
 // carvings (the robust one and Boissonnat's) ask of the edge opposite two facets of a cell that
 // touch the outside, whose removal is a manifold only if no cell around that edge is outside.

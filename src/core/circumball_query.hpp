@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Which all-sample cells of DT(S ∪ BBV) a set of poles would destroy if they were inserted, as
 // the paper's sculpting inserts the outer concave poles (section 3.2), found without inserting.
 //

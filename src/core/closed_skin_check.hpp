@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether a solid's skin (its oriented facets, solid_and_skin.hpp) is a closed 2-manifold (a set
 // of closed curves in 2D) through every sample, and how its pieces are sized: the check the
 // robust carving's flood must pass to stand for the carving (manifold_carving.hpp), and

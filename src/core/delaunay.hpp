@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage 1: DT(S ∪ BBV), the Delaunay triangulation of the samples and the 2^D corners of the
 // box BB, the samples' bounding box scaled about its centre by the box factor. The corners make
 // every sample's Voronoi cell bounded, so every sample has two finite poles (section 3).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The circumcentre of a Delaunay cell, as every stage measures with: CGAL's floating-point
 // construction, except for a cell so flat that its floating-point denominator vanishes (CGAL
 // asserts, or divides by zero when its assertions are compiled out) or its centre overflows.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Extreme but finite scales (a sphere of radius 1e80 or 1e-105, denormal coordinates) overflow
 // or underflow the squared distances and circumradii every stage computes in floating point,
 // and a small object far from the origin loses the digits its circumcentres need. So the

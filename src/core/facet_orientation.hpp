@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Which vertices of a cell make its facets, in the order that faces away from the cell: the
 // convention of CGAL's positively oriented cells (counterclockwise faces in 2D), shared by the
 // core (surface extraction) and the scene layer (the hull), which needs no CGAL.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Topology of a reconstruction's facets (triangles in 3D, edges in 2D), as reported in the
 // statistics and checked by the tests: boundary and non-manifold ridges, boundary loops,
 // connected components, Euler characteristic and unused samples.

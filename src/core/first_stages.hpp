@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stages 1-2 (DT(S ∪ BBV) and the poles) handed from one attempt of a reconstruction to the
 // next on the same samples: the automatic kind's bordered attempt follows a closed one
 // (automatic_kind.hpp), and the robust method's bordered surface never reads the first

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The conditions under which the sculpting algorithm is defined: enough points, all finite, no
 // two alike (found by the triangulation, named by refuse_duplicates), and not all on a line (2D)
 // or plane (3D). Each failure is an Input_error with a one-line message that names the offending

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The label counts of the statistics, the same for every method's pole labelling.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Names of the core's enumerations, as the command line and the statistics print them.
 #include <sculpt/sculpt.hpp>
 

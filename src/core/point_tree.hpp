@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A k-d tree of points answering two questions. Is there a point strictly closer to x than r
 // that a test accepts? The circumball queries (circumball_query.hpp) ask it of the poles for
 // every all-sample cell: x its circumcentre, r its circumradius plus a margin, the test CGAL's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage 2: Amenta's poles. The Voronoi cell of a sample s is bounded (thanks to the box), and its
 // vertices are the circumcentres of the Delaunay cells incident to s, each at distance equal to
 // that cell's circumradius. So

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Asking the memory for what a loop will read next, before it reads it.
 //
 // The stages after the Delaunay walk the triangulation's cells in the order CGAL stores them and,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A reconstruction, written once for every dimension: Traits is Traits_2 or Traits_3. Each
 // stage is a function of its own file. This driver runs the stages every method shares (checks,
 // Delaunay, poles), hands the triangulation to the chosen method (src/methods), then

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage 3, shared by every method: the seeds of the pole labelling (section 3.1.1). The convex
 // poles, whose cells touch a corner of the box, lie outside any surface of the samples. A closed
 // surface starts from all of them; a bordered one (section 4) from a single convex pole, since

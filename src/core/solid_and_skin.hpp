@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stages 7 and 8 for a solid given as a set of cells of a triangulation (the all-sample cells of
 // DT(S ∪ OUP), those that survive the circumball queries, those the robust carving leaves):
 // the solid's cells, counted and kept when asked for (Options::keep_solid), and its skin, the

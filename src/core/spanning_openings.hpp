@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Facets that span an opening: where the samples end, a reconstruction that closes the shape
 // bridges the gap with facets far wider than the gaps between samples around them.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Times each stage of a reconstruction, records the process's peak memory after it, and gives
 // the caller's progress callback a chance to cancel between stages.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a reconstruction will do before it runs: the stages it times, in order (the overall
 // progress runs across them), and whether the paper's stages 6-7 build DT(S ∪ OUP).
 #pragma once

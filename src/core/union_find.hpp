@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Disjoint sets over 0..size-1 (union-find with path halving): the connected pieces of a
 // surface's vertices, of a vertex's link, of border edges.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The verdict on a result: one line that says whether it is what was asked for (a closed
 // 2-manifold or closed curves; a bordered 2-manifold or open curves) and, if not, what is wrong.
 #include <fmt/format.h>

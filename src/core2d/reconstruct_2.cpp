@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one place the 2D algorithm is compiled: everything else links against it.
 #include "../core/automatic_kind.hpp"
 #include "../core/reconstruction.hpp"

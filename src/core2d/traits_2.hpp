@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the sculpting algorithm needs to know about 2D: CGAL's Delaunay_triangulation_2 with an
 // index on every vertex (its site) and every face (its place among the finite faces). The
 // algorithm calls faces "cells" in every dimension.

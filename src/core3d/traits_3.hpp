@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the sculpting algorithm needs to know about 3D: CGAL's Delaunay_triangulation_3 with an
 // index on every vertex (its site) and every cell (its place among the finite cells).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The CGAL meshes some figures are drawn from, unpacked on demand from Debian's libcgal-demo
 // archive into a temporary folder of their own that lives as long as this object (in the
 // browser, fetched from the site).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's figures and tables, regenerated headless: `generate` renders the shots of every
 // figure of paper_figures.hpp (built-in shapes or CGAL's meshes from Debian's libcgal-demo),
 // writes Tables 1 and 2 as Markdown, a manifest, and the gallery page figures/README.md.

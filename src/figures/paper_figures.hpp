@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's figures as data: for each figure its caption, the sentence of the paper that
 // describes it, and its panels, each a shot of one of our reconstructions with a sentence on
 // what it shows and what changed from the panel before. One list drives both the headless

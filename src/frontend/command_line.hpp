@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What `sculpt` and `sculpt-view` share about their command lines: the exit codes, and usage
 // errors as one line on stderr with exit code 2 (CLI11 prints two lines and exits 105 and up).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Messages for a terminal or a log: whatever a message holds, one line.
 #pragma once
 

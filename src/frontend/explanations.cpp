@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paragraphs of the Explanation panel. Each says what is drawn, why it matters and what to
 // look for; where a method reads a stage differently (the labelling of the paper against the
 // confidence labelling, the solid of sculpting against the alpha shape's), it says so.

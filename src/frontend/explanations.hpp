@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What each stage of each method shows, for a class: a short paragraph (what is drawn, why it
 // matters, what to look for) that the viewer's Explanation panel and its `explain` script
 // command give for the stage on screen.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The one line a failure is reported in, as `sculpt` prints it after "sculpt: ": the command
 // line, the JavaScript module and the viewer in the browser say the same words.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Where the samples of a command or the viewer come from: a point file or a built-in example, in
 // the dimension the file gives or the user forces.
 #pragma once

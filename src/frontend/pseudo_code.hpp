@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Each method's pseudo-code, in the order our implementation runs it (the paper method: its
 // Fig. 5), and which lines a moment of the algorithm is at: every line is reached by some stage
 // or some event of the replay (tests/explanations_test.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "frontend/reconstruction_request.hpp"
 
 #include "io/io_error.hpp"
@@ -27,6 +28,10 @@ Reconstruction_outcome run_request(Reconstruction_request request,
     outcome.reconstruction = reconstruct_input(input, request.options);
   } catch (const Cancelled&) {
     outcome.error = "cancelled";
+  } catch (const Duplicate_points& e) {
+    // The command line's words, with the viewer's way out instead of its flag.
+    outcome.error = std::string(e.what()) +
+                    " (Reconstruction options > merge repeated points removes repeated points)";
   } catch (const std::exception& e) {
     outcome.error = e.what();
   }

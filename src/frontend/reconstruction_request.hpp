@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A reconstruction the viewer asks for: its input (a file, an example or points edited by hand)
 // and options, run to an outcome (the reconstruction, or the one-line error the command line
 // would give). Written as JSON, it crosses into the browser's reconstruction worker.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A shot: one picture of one stage of one input, as `sculpt render`, the viewer's "save
 // picture", the paper's figures and the viewer's tour of them describe it. Plain data.
 #pragma once

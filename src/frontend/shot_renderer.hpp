@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A renderer of shots that reconstructs each input once however many shots show it, and draws
 // them headless (`sculpt render`, `sculpt figures`).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shots read from JSON, checked, and drawn from a reconstruction into pictures and animations
 // through any picture renderer: the headless one (frontend/shot_renderer.hpp: `sculpt render`,
 // `sculpt figures`) or the viewer's window (its exports, on the desktop and in the browser).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "frontend/statistics_json.hpp"
 
 namespace sculpt::frontend {

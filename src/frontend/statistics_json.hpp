@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The statistics of a reconstruction as JSON, the fields `sculpt reconstruct --stats` writes about
 // the result (the command adds its input, its read and write times): shared by the command line
 // and the Python module, so that both name every number the same way.

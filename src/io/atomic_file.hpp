@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An output file that appears completely or not at all: it is written beside its destination
 // under a temporary name and renamed over it only once everything was written.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // 2D curves: chained into polylines where the curve is a manifold (every sample starts and ends
 // at most one edge), one element per edge otherwise.
 #include <algorithm>

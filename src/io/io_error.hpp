@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Everything the io layer can refuse: a file that is missing, unreadable, malformed, truncated,
 // or in a format Sculpt does not know. The message is one line, ready for the user.
 #pragma once

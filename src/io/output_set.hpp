@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The outputs of one run, written all or none. Each output is written under a temporary name
 // beside its destination (same folder, same extension, so that writers choose the same format);
 // commit() renames them all into place once every one was written. An error, or leaving without

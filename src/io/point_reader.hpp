@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Reading samples: the vertices of a point or mesh file, whatever its format.
 //   text:   .xyz .pwn .pts .txt .xy .p2d .csv  ("x y [z]" per line; `#` comments, a leading word
 //           such as `p` or `v`, a count header, commas and extra columns, as the normals of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "io/reconstruction_bytes.hpp"
 
 #include <cstring>
@@ -26,6 +27,7 @@ class Byte_writer {
   void values(const std::vector<T>& v) {
     static_assert(std::is_trivially_copyable_v<T>);
     value(std::uint64_t(v.size()));
+    if (v.empty()) return;  // data() may be null
     const auto* p = reinterpret_cast<const std::uint8_t*>(v.data());
     bytes_.insert(bytes_.end(), p, p + v.size() * sizeof(T));
   }
@@ -59,7 +61,8 @@ class Byte_reader {
     const auto count = value<std::uint64_t>();
     if (count > std::uint64_t(end_ - at_) / sizeof(T)) cut_short();
     v.resize(count);
-    std::memcpy(v.data(), take(count * sizeof(T)), count * sizeof(T));
+    const std::uint8_t* source = take(count * sizeof(T));
+    if (count > 0) std::memcpy(v.data(), source, count * sizeof(T));  // data() may be null
   }
   void text(std::string& s) {
     const auto count = value<std::uint64_t>();

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A reconstruction with every stage, as bytes and back: how a reconstruction made in the
 // browser's Web Worker reaches the page (their WebAssembly instances share no memory without
 // cross-origin isolation). Both ends are the same build: the bytes are the values' own, in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The sculpted solid as a volume mesh: tetrahedra in 3D, triangles in 2D.
 #include <iomanip>
 

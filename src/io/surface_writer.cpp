@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // 3D surfaces: STL and PLY through CGAL's polygon-soup writers; OFF and OBJ, plain text, written
 // here with fmt, each coordinate in the shortest form that reads back as the same double.
 // (CGAL's text writers print 17 digits through iostreams: 0.04 s for bunny00's 75k triangles, 7%

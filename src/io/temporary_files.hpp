@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Temporary files of a run, removed if the run is interrupted: a SIGINT, SIGTERM or SIGHUP while
 // writing leaves no half-written file behind (the outputs themselves appear only by rename).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Writing results. Every writer chooses the format by the path's extension, writes the file
 // completely or not at all, and throws io::Error with a one-line message.
 //   surface (3D triangles): .stl (binary unless ascii), .ply (binary unless ascii), .off, .obj

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The compiled part of the Python module `sculpt` (sculpt._sculpt; python/sculpt/__init__.py is
 // what users import). It calls the same core as the command line: methods and stages by the same
 // names, the same one-line messages for bad input, the same statistics (statistics_json).

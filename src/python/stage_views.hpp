@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stages of a reconstruction as numpy arrays for the Python module. Every array is a
 // read-only view of the result's own vectors (no copy: a 150k-point result costs nothing to
 // look at), and keeps the Python object that owns the result alive.

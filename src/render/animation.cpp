@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "animation.hpp"
 
 #include <webp/encode.h>

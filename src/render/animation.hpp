@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An animation of pictures (the replay of the labelling, a sweep through the stages) as an
 // animated WebP (libwebpmux), which browsers, slide software and image viewers play.
 #pragma once

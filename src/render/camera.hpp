@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The camera of a picture: orthographic for 2D (centre and zoom), a perspective orbit for 3D
 // (target, distance, yaw, pitch). It fits a scene's bounds, moves as the viewer's mouse asks,
 // and saves to JSON so a shot can be repeated exactly.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pictures drawn offscreen in the GL context current on this thread: into a 4x multisampled
 // framebuffer object, resolved and read back, whatever the window shows. OpenGL 3.3 and WebGL 2
 // both have what this needs.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The OpenGL functions the renderer calls, declared for the platform: OpenGL 3.3 core on the
 // desktop (libOSMesa headless and libOpenGL in a window both export every gl* function, so one
 // renderer source serves both; the executable picks the library it links), OpenGL ES 3.0 in the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "headless.hpp"
 
 #include <dlfcn.h>

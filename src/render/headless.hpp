@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Rendering without a display: an OSMesa OpenGL 3.3 core context (Mesa's llvmpipe) drawing into
 // a 4x multisampled offscreen framebuffer, read back as an Image. The renderer is the viewer's.
 // The GL side lives in a module (offscreen.hpp) loaded by the first Headless_renderer, so that a

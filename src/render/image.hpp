@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // An RGBA picture in memory: written and read as PNG (stb), and compared with a golden image by
 // a per-pixel tolerance and the share of pixels beyond it.
 #pragma once

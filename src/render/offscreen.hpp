@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the headless rendering module offers (libsculpt_osmesa.so, src/render/osmesa_offscreen.cpp):
 // an OpenGL 3.3 core context of Mesa's llvmpipe through OSMesa, drawing scenes into offscreen
 // images. It lives in a module loaded on first use (headless.cpp) because libOSMesa brings

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The headless rendering module: an OSMesa OpenGL 3.3 core context (Mesa's llvmpipe) drawing
 // into a 4x multisampled offscreen framebuffer (render/framebuffer.hpp), read back as an Image.
 // Built as libsculpt_osmesa.so and loaded by headless.cpp when a picture is first asked for.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The viewer's picture of the scene, kept in an offscreen framebuffer and drawn again only when
 // what it shows changes: the scene, the camera, the layers shown, the size. Every other frame
 // (the panel's progress bar while a reconstruction runs, the mouse over a menu) copies it to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What draws a scene into a picture in memory: the headless renderer (an OSMesa context of its
 // own, for the command line, the figures and Python) or a framebuffer of the window's own context
 // (the viewer's exports, on the desktop and in the browser). The shots (frontend/shots.hpp) draw

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "renderer.hpp"
 
 #include <stb/stb_easy_font.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Draws a scene with OpenGL 3.3 core into whatever framebuffer is bound: the viewer's window or
 // the headless renderer's offscreen buffer. Knows nothing of windows or contexts; it needs only
 // a current GL 3.3 context when constructed and used.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The GLSL programs of shaders/, compiled into the binary (see cmake/embed_shaders.cmake); each
 // is compiled after render::shader_header (render/gl.hpp), the platform's #version line.
 #pragma once

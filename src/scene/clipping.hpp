@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A cut-away for the 3D stages that fill space (the Delaunay triangulations, the Voronoi
 // diagram, the solid): everything whose centre lies beyond a plane is left out, so whole cells
 // are seen in section, as mesh viewers show tetrahedra (scene::Clip says where the plane is),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The colours of the paper's figures: samples green, inner poles red, outer concave poles blue
 // in 2D and orange in 3D, Delaunay edges blue, Voronoi edges green, polar circles dark. Shades
 // are set apart where the paper's would be mistaken for one another (dark green samples on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A scene is what one picture of the algorithm shows: coloured layers of points, lines,
 // triangles and balls, built from any stage of a reconstruction. It knows nothing of GL, so the
 // viewer, the headless renderer and the tests all read the same scene.

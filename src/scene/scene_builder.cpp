@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Turns a stage of a reconstruction into layers. One builder serves both dimensions: 2D
 // positions get z = 0, and the few differences (cube or square, circle or sphere) follow D.
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Small geometric helpers of the scene layer, in plain doubles (the pictures need no exactness).
 #pragma once
 

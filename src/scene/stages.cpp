@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The names of the stages, as the command line, the viewer's stepper and the figures use them.
 #include <algorithm>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Sampled shapes with known answers: the built-in examples of the command line and the viewer,
 // and the ground truth of the tests. Every generator is deterministic (fixed seeds).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // clang-format off
 // Our GL header first: it must be the first to include the platform's GL header.
 #include "render/gl.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The viewer's program around the Viewer: its window, Dear ImGui, the script that may drive it,
 // and one frame of all of them. main.cpp makes it from the command line (in the browser, from
 // the page's address) and hands its frames to the platform's main loop.

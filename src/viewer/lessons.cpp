@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "viewer/lessons.hpp"
 
 #include <sstream>
@@ -9,7 +10,9 @@ std::string lesson_title(const Lesson& lesson) {
   std::string line;
   while (std::getline(lines, line)) {
     const auto start = line.find_first_not_of("# \t");
-    if (line.rfind('#', 0) == 0 && start != std::string::npos) return line.substr(start);
+    if (line.rfind('#', 0) == 0 && start != std::string::npos &&
+        line.find("SPDX-License-Identifier") == std::string::npos)
+      return line.substr(start);
   }
   return lesson.name;
 }

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // sculpt-view: the workbench window. GLFW + Dear ImGui 1.86 + the shared renderer, on the desktop
 // (OpenGL 3.3) and in the browser (WebGL 2), where the page's address gives the options below.
 // clang-format off

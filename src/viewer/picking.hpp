@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Picking: which of some points lies nearest the mouse on screen, within a few pixels.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Live editing of a 2D point set, the classic way to teach Voronoi, Delaunay, poles and
 // undersampling: add a sample, drag one, delete one, draw a stroke of samples, and watch every
 // stage change. The editor holds the points and an undo history; the viewer reconstructs them

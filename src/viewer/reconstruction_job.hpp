@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Runs a reconstruction off the UI thread: loading the input and every stage, with the stage
 // name and progress readable at any time, and a cancel that returns at once (the UI stays live).
 // The platform's runner does the work (platform/): a thread on the desktop, a Web Worker in the

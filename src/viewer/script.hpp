@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scripted runs of the viewer, for tests and demonstrations: one command a line, run in order
 // between frames, e.g.
 //   example star        open a built-in example (open PATH for a file; bordered on|off before)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tour of the paper's figures: which figure and panel the viewer shows, in the order of
 // paper_figures(), and whether the student has left the panel to explore. Navigation only;
 // the viewer turns a panel into a reconstruction, a stage and a camera.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The viewer's state and its frame: what is reconstructed (each input a background job, the last
 // few kept), what is shown of it (stage, selection, camera), and one frame drawn. The panels,
 // the input, the replay, the tour and the files each have a file of their own (viewer_*.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The viewer's state and one frame of it: the reconstruction being shown, the stage and
 // propagation step, the camera, layer visibility, the selection, the tour of the paper's
 // figures, and the ImGui panels. Scripted runs (tests) drive the same object through Script.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The viewer's live 2D editing: the shown samples become editable, each edit (the mouse, the
 // Edit samples panel or a script) reconstructs them with the chosen method, and the curve a
 // built-in example was sampled from is drawn beside the result.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the viewer writes and reads besides the input: pictures and animations of the view,
 // drawn in-process as the figures are, the result as a mesh or curve, and the camera as JSON.
 // In the browser each file written is handed to the user as a download (platform::deliver_file).

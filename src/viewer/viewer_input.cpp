@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The mouse and the keys: the camera moved by hand, a click picking a sample or a pole, the
 // keys of the stepper, the replay, the tour and editing. ImGui's panels take them first.
 // clang-format off

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the viewer's own files (viewer*.cpp) share and nobody else needs: small questions about
 // the shown reconstruction and the options chosen in the panel.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The menu bar: File (open, save what is shown, the link to this view), Examples and View; the
 // Paper menu is the tour's (viewer_tour.cpp). In the browser files come from the file picker and
 // leave as downloads, so the File menu asks for no paths.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The panel left of the picture: the message and progress, the reconstruction options, the
 // verdict, the stage stepper, the explanation, the method's pseudo-code with the statement
 // running, the layers, the selection, the statistics, the 3D cut-away; and the controls window.

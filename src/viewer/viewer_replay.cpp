@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The replay of the pole labelling, event by event: the step shown, play and pause, its
 // controls. It follows the action: the pole just labelled is kept in view (render::follow_point:
 // near the shape the camera pans, keeping its zoom; a seed far out is framed with the shape),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tour of the paper's figures: a panel's reconstruction loaded (or taken from the recent
 // ones), the stage walked, the labelling played and the camera flown to the panel's view; the
 // Paper menu and the caption under the picture; exploring from a panel and back.

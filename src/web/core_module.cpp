@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The core as a WebAssembly module for JavaScript, in Node and in browsers (web/package/sculpt.mjs
 // wraps these functions): reconstruct points with any method, read a point file with the command
 // line's readers, and run the viewer's reconstruction requests in a Web Worker. A failure is the

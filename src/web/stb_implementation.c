@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 /* The stb libraries' implementations for the browser build. On Debian they come compiled in
  * libstb (libstb-dev); Emscripten cannot link that, so the same headers are compiled here, with
  * the parts Dear ImGui uses from them (Debian builds ImGui against libstb the same way). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The two-sided Hausdorff distance between two triangle meshes, the measure of `sculpt compare`
 // against a reference mesh. Each side is sampled (every vertex, every edge's midpoint, every
 // triangle's centroid, and a finer barycentric grid on triangles long against the meshes' size),

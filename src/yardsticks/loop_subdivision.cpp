@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A denser mesh on the same surface for the benchmark (the "bunny00 Loop-subdivided"):
 // one step of Loop subdivision by CGAL's Subdivision_method_3.
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the benchmark measures Sculpt against, on the same points: CGAL's Delaunay triangulation
 // (plain vertices and cells, no information attached: the leanest CGAL offers) and CGAL's
 // Advancing Front Surface Reconstruction with its default parameters.

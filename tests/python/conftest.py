@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Python suite runs from ctest (tests/CMakeLists.txt), which puts the build's package on
 PYTHONPATH and names the command line and the examples folder in the environment."""
 import os

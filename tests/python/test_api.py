@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """The Python module against the core and the command line: the same results, stages, verdicts,
 statistics and messages; the GIL released; progress and cancel; pictures as `sculpt render`
 draws them."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 """Every example of examples/python runs headless and writes what it says."""
 import os
 import subprocess

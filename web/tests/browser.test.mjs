@@ -147,6 +147,11 @@ test('every figure of the paper opens from its link and reaches each of its pane
   // A panel of its own: ?figure=fig06&panel=c.
   const viewer = await openViewer(browser, site.url, '?figure=fig06&panel=c');
   await runScript(viewer, 'wait\nexpect-panel fig06c\n');
+  // Once loaded, the page needs no network: the figures' meshes came while it was idle.
+  await viewer.page.waitForFunction(() => window.sculpt.meshesLoaded, { timeout: 30000 });
+  await viewer.page.setOfflineMode(true);
+  await runScript(viewer, 'figure fig11\nwait\nexpect-panel fig11\nfigure fig15\nwait\n');
+  await viewer.page.setOfflineMode(false);
   await close(viewer);
 });
 
@@ -237,6 +242,18 @@ test('a link copied from a view opens that view', async () => {
   assert.ok(again.lines.includes(`link: ${link.replace(/^http:\/\/[^/]+\//, site.url)}`), again.lines.join('\n'));
   assert.equal((await statistics(opened)).method, 'paper');
   await close(opened);
+});
+
+test('the JavaScript module works in the page too', async () => {
+  const viewer = await openViewer(browser, site.url);
+  const verdict = await viewer.page.evaluate(async () => {
+    const { reconstruct } = await import('./sculpt/sculpt.mjs');
+    const points = [];
+    for (let i = 0; i < 30; ++i) points.push(Math.cos(i * Math.PI / 15), Math.sin(i * Math.PI / 15));
+    return reconstruct(points, { dimension: 2 }).verdict.line;
+  });
+  assert.equal(verdict, 'closed curve: 1 component, all 30 samples on it');
+  await close(viewer);
 });
 
 test('an unknown option in the address is refused in one line, on the page', async () => {

@@ -3,7 +3,8 @@
 // with every method where it applies, gives the command line's triangles for the same points,
 // says what the command line says when it refuses, reports progress and cancels.
 import assert from 'node:assert/strict';
-import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { spawnSync } from 'node:child_process';
+import { mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
@@ -185,4 +186,26 @@ test('the package: version, types and files', () => {
     assert.ok(name in sculpt, `the module exports no ${name}`);
     assert.match(types, new RegExp(`export (function|const|class) ${name}\\b`));
   }
+});
+
+test('npm pack gives a package that installs and runs in a project of its own', () => {
+  const packed = spawnSync('npm', ['pack', packageDir, '--pack-destination', scratch, '--silent'],
+                           { encoding: 'utf8' });
+  assert.equal(packed.status, 0, packed.stderr);
+  const tarball = join(scratch, packed.stdout.trim().split('\n').pop());
+  const project = join(scratch, 'project');
+  mkdirSync(project);
+  writeFileSync(join(project, 'package.json'), '{"name": "user", "version": "1.0.0", "type": "module"}');
+  const installed = spawnSync('npm', ['install', tarball, '--no-audit', '--no-fund', '--offline', '--silent'],
+                              { cwd: project, encoding: 'utf8' });
+  assert.equal(installed.status, 0, installed.stderr);
+  writeFileSync(join(project, 'use.mjs'), `
+import { reconstruct } from 'sculpt-reconstruction';
+const points = [];
+for (let i = 0; i < 40; ++i) points.push(Math.cos(i * Math.PI / 20), Math.sin(i * Math.PI / 20));
+console.log(reconstruct(points, { dimension: 2 }).verdict.line);
+`);
+  const used = spawnSync(process.execPath, ['use.mjs'], { cwd: project, encoding: 'utf8' });
+  assert.equal(used.status, 0, used.stderr);
+  assert.equal(used.stdout.trim(), 'closed curve: 1 component, all 40 samples on it');
 });

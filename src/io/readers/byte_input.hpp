@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The bytes of an input file, read through a bounded buffer: never more in memory than one
 // buffer (and the line being read), never more read than a limit, and a count announced by a
 // header can always be checked against the bytes that can still follow it. Regular files,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A double read as std::from_chars reads it (its general format: an optional '-', digits with an
 // optional point, an optional exponent; inf, infinity, nan, nan(chars) in any case; nothing
 // before or after). Where the C++ library lacks the floating-point from_chars (Emscripten's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // One reader per input format, each from a Byte_input. All of them bound every count by the
 // bytes that can follow it, refuse trailing data, and throw io::Error with one line.
 #pragma once

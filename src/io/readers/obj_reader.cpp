@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Wavefront OBJ: `v x y z [w]` vertices (a colour after them is ignored) and `f` faces whose
 // corners are `i`, `i/t`, `i//n` or `i/t/n`, negative indices counting back from the last
 // vertex. Every other record (normals, texture coordinates, groups, materials, lines) is read

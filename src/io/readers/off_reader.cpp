@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // OFF (Geomview): a keyword `[ST][C][N][4][n]OFF`, the counts, one vertex per line (texture
 // coordinates, colours and normals after the coordinates are ignored), one face per line
 // (its corner count, the corners, maybe a colour). Text only; `#` starts a comment.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PLY (Turk 1994): a text header declaring elements and their typed properties, then the
 // elements in ASCII or binary (either byte order). Coordinates may have any scalar type; every
 // element count and list length is checked against the bytes that can follow it; elements

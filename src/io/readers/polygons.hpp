@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What the mesh readers share about faces: a polygon becomes a fan of triangles, and once the
 // whole file is read every corner must name one of its vertices.
 #pragma once

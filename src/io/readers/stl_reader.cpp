@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // STL: a soup of triangles, in binary (an 80-byte header, a triangle count, 50 bytes per
 // triangle) or ASCII (`solid`, then `facet ... outer loop, vertex x y z ..., endloop endfacet`).
 // Corners at equal positions are one vertex, numbered in order of first appearance.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The lines of a text format (point lists, OFF, OBJ, ASCII PLY and STL bodies), numbered for
 // messages. A file that holds binary bytes, or a line too long for text, is refused before it
 // is read further; a UTF-8 byte order mark is skipped.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Point lists as scanners and people write them: one point per line, numbers separated by
 // spaces, tabs, commas or semicolons; `#` comments; a leading `p` or `v` (Hoppe's .pts, OBJ-like
 // lists); an optional count on the first line; extra columns (normals, colours) ignored.

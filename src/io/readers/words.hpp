@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Words and numbers of text formats, read strictly: a number is a whole word, a count is
 // digits only, and anything quoted back to the user is made printable first.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Boissonnat's sculpting (1984, "Geometric structures for three-dimensional shape
 // representation", sec. 4), the greedy method Kuo & Yau start from (their sec. 1.3):
 //   solid <- the Delaunay cells of S (its convex hull)

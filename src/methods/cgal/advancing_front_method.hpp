@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // CGAL's Advancing Front Surface Reconstruction (Cohen-Steiner & Da, 2004), as a method beside
 // the others: it grows a surface from a seed triangle of its own Delaunay triangulation,
 // adding at each border edge the candidate triangle of smallest radius that keeps the surface an

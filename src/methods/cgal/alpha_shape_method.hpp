@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Alpha shapes (Edelsbrunner & Mücke, 1994) through CGAL: the Delaunay cells whose circumball is
 // smaller than a ball of radius alpha make a solid, and its boundary is the surface. One alpha
 // serves the whole shape, so where the sampling is coarser than alpha the solid has holes, and

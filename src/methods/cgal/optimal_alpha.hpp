@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The alpha CGAL's Alpha_shape_3::find_optimal_alpha(k) returns in REGULARIZED mode, found in one
 // sweep over the cells instead of a binary search that walks the whole solid at every step.
 //

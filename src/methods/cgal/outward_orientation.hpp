@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A consistently oriented closed surface bounds a positive volume when its normals point
 // outward: the surfaces made by other libraries are turned that way, as ours are, one connected
 // piece at a time (a piece with a border bounds no volume and is left as it is).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The co-cone of Amenta, Choi, Dey and Leekha (2000), with the undersampling detection of Dey
 // and Giesen (2001) that Kuo & Yau compare against (their Fig. 15b, the "modified co-cone"):
 //   for each sample p: v_p <- p+ - p, the direction to its positive pole (stage 2)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The tight co-cone of Dey and Goswami (2003), a watertight surface from the co-cone's:
 //   S0 <- the co-cone's surface (cocone_method.hpp: undersampling, candidates, extraction)
 //   good <- the samples whose triangles in S0 make one closed fan around them (an umbrella)

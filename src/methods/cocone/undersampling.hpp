@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Undersampling detection for the co-cone (Dey & Giesen 2001, "Detecting undersampling in
 // surface reconstruction"; the boundary co-cone of Dey's book, 2007, sec. 5.2): where the
 // samples are dense enough, a sample's Voronoi cell is long and thin along the normal, and its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The crust of Amenta, Bern and Kamvysselis (1998), for plane curves:
 //   V <- the Voronoi vertices of S           (circumcentres of the cells of stage 1)
 //   DT' <- Delaunay(S ∪ V)

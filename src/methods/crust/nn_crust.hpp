@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The nearest-neighbour crust of Dey and Kumar (1999), for plane curves:
 //   for each sample s:
 //       q <- the nearest sample to s                  (always a Delaunay neighbour)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The crust of Amenta, Bern and Kamvysselis (1998), for surfaces:
 //   P <- the poles of S (stage 2)
 //   DT' <- Delaunay(S ∪ P)

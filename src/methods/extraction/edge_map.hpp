@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The triangles on every edge of a set of triangles: what the pruning, the walk and the
 // bordered rule ask of each edge they cross.
 //

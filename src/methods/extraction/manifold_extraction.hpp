@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Manifold extraction (Amenta, Choi, Dey & Leekha 2000, section 4; the crust's "trimming",
 // Amenta, Bern & Kamvysselis 1998): the methods that choose Delaunay triangles by a local rule
 // (the crust, the co-cone) get a set that is a manifold only where the samples are dense and

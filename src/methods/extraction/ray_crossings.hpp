@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Whether a point lies inside a closed piece of surface: the ray from it crosses the piece an odd
 // number of times. The walk (manifold_extraction.hpp) asks this of every piece it has walked,
 // from the extreme sample of each new piece, to tell a cavity's wall from a second object. On a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The few vector operations the extraction's geometry needs, on points of the samples.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The paper's method, after the shared stages 1-3 (Delaunay, poles, seeds), exactly as Kuo & Yau
 // publish it (sections 3.1-3.2, Fig. 5):
 //   4. propagation  breadth-first pole separation by inscribed cubes and pairing

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stages 5 and 6: choose the poles that sculpt (they become the last sites, after the samples
 // and the box corners), and insert them into the first triangulation, as the paper's
 // implementation does (section 6), which turns DT(S ∪ BBV) into DT(S ∪ OUP); or build that

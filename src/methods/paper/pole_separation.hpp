@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stages 3 and 4: the pole separation of section 3.1.1 (the paper's Fig. 5).
 //
 //   seeds:   (core/seeds.hpp) convex poles are outer; the poles paired with them are inner.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A k-d tree over the poles that knows their labels, for the range searches of the pole
 // separation (paper, section 3.1.1.2).
 //

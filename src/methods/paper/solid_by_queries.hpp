@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stages 6-7 of the paper's method for a closed surface, without building DT(S ∪ OUP); the
 // surface (stage 8) is then the solid's skin (core/solid_and_skin.hpp).
 //

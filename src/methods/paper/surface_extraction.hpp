@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stages 7 and 8 (section 3.2): the sculpted solid and the surface, read off DT(S ∪ OUP).
 //
 // Every facet whose vertices are all samples has two apexes, the vertices opposite it in its two

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The power crust of Amenta, Choi and Kolluri (2001), for closed curves and surfaces:
 //   for each sample s: p+(s), p-(s) <- its poles, each with its polar ball   (stage 2, shared)
 //   label the poles inner or outer, most confident first                      (ACK 2001, sec. 5)

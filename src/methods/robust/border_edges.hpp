@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The border of an oriented set of triangles: the edges on one triangle only, each directed as
 // its triangle has it, with the triangle's third vertex. Mending a bordered surface starts from
 // it: the front over the left-off samples, the notches, the gaps (left_off_samples.hpp,

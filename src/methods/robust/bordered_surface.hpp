@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robust method's rule for bordered surfaces: borders where the samples end.
 //
 // The paper's bordered rule (section 4: insert every pole, keep the all-sample facets with an

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robust method's judgement of every all-sample cell of DT(S ∪ BBV): inner or outer, from the
 // labelled poles alone. A cell is outer when
 //   - its circumball holds an outer pole whose polar ball is not tiny beside it: inserting the

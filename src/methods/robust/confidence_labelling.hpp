@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage 4 of the robust method: the poles labelled inner or outer by confidence, not by arrival.
 //
 // Why: the paper's breadth-first separation (section 3.1.1) keeps the first label a pole is

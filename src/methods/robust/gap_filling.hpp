@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Gaps in the sampling, filled: after the openings are taken out of a bordered surface and the
 // rest is made a manifold (bordered_surface.hpp), a border loop can be a gap rather than an
 // opening. Where the paper's candidates fold (slivers of nearly cospherical samples, as along the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The triangulation of a border loop that folds least: of all triangulations of the loop, one
 // whose sharpest fold (between two adjacent triangles of it, or one of it and the surface's
 // triangle on a loop edge) is the least sharp, folds within 1e-9 of each other counting as the

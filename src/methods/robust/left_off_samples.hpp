@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Samples left off a bordered surface, attached to its border, and the border's sharp notches
 // closed. Where the paper's candidates fold along a border (the corners of a sheet, a patch of
 // a flat face at its edge), the extraction can keep border edges that pass by samples belonging

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage 6b of the robust method: carve the hull of the samples from the outside in, one cell at
 // a time, keeping the surface a 2-manifold (a closed curve in 2D) after every removal.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plane curves that may end: the robust method's bordered rule in 2D (the paper's section 4 asks
 // for reconstruction "with or without boundaries").
 //

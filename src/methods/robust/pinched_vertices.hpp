@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pinched vertices of a bordered surface, joined. Where the extraction leaves holes close
 // together, two fans of triangles can meet at one vertex and nowhere else, as a bow tie does:
 // the surface is not a manifold there (CGAL's ChineseDragon --bordered: 96 such vertices, most

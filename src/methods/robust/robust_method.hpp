@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The robust method, after the shared stages 1-3 (Delaunay, poles, seeds):
 //   4.  labelling   poles labelled by confidence (confidence_labelling.hpp)
 //   6b. carving     the hull's all-sample cells carved from the outside in, keeping a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Samples left off a bordered surface in the middle of it, set into the triangle beside them.
 //
 // With noise, a sheet of samples is a thin slab: DT(S ∪ UP) has tetrahedra across it, and the

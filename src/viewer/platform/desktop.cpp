@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The desktop: a GLFW window with an OpenGL 3.3 core context, frames in a loop, files where the
 // user names them.
 // clang-format off

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What differs between the desktop and the browser under the viewer, and nothing else: the
 // window and its GL context, how frames are driven, how files reach the user and the clipboard.
 // desktop.cpp implements it with GLFW on X11/Wayland, web.cpp in the browser (Emscripten's GLFW

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The desktop's reconstruction job: a thread of its own; a cancel takes effect at the next
 // progress report, and a new job waits for the cancelled one to end.
 #include <atomic>

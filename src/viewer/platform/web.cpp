@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The browser: Emscripten's GLFW on the page's canvas with a WebGL 2 context, frames called by
 // the browser (requestAnimationFrame), files taken from the file picker or a drop and handed back
 // as downloads, through the page's script (web/sculpt-page.js).

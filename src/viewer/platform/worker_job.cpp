@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The browser's reconstruction job: the request goes to a Web Worker running the core's
 // WebAssembly module (src/web/core_module.cpp, through web/sculpt-page.js), which posts its
 // progress and, at the end, the reconstruction with every stage as bytes (io/reconstruction_bytes
