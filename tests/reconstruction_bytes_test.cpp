@@ -130,7 +130,8 @@ TEST(ReconstructionBytes, StagesOnlyNoiseAndBordersFillComeBackToo) {
 
 TEST(ReconstructionBytes, RefusesWhatIsNotAReconstruction) {
   const auto bytes = io::to_bytes(reconstruct(shapes::example_points_2("star")));
-  // Another dimension, other bytes, and every length short of the whole.
+  // Another dimension, other bytes, and lengths short of the whole: none, the header alone, a
+  // few stages, half, all but the last byte.
   EXPECT_THROW(io::reconstruction_from_bytes<3>(bytes.data(), bytes.size()), io::Error);
   const std::vector<std::uint8_t> text = {'h', 'e', 'l', 'l', 'o', ' ',
                                           'w', 'o', 'r', 'l', 'd', '!'};

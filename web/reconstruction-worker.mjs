@@ -7,21 +7,46 @@ import createSculptCore from './sculpt/sculpt-core.mjs';
 let core = null;
 const waiting = [];
 
+let failure = '';  // why the core could not be started, if it could not
+
 onmessage = async ({ data }) => {
   if (data.type === 'init') {
-    core = await createSculptCore({
-      instantiateWasm(imports, receive) {
-        WebAssembly.instantiate(data.module, imports).then((instance) => receive(instance, data.module));
-        return {};
-      },
-      print: (line) => console.log(line),
-      printErr: (line) => console.warn(line),
-    });
-    while (waiting.length) run(waiting.shift());
+    try {
+      core = await createSculptCore({
+        instantiateWasm(imports, receive) {
+          WebAssembly.instantiate(data.module, imports)
+            .then((instance) => receive(instance, data.module))
+            .catch((error) => fail(`the reconstruction module does not start: ${error.message}`));
+          return {};
+        },
+        print: (line) => console.log(line),
+        printErr: (line) => console.warn(line),
+      });
+    } catch (error) {
+      fail(`the reconstruction module does not start: ${error.message}`);
+      return;
+    }
+    while (waiting.length) attempt(waiting.shift());
   } else if (data.type === 'run') {
-    if (core) run(data); else waiting.push(data);
+    if (failure) postMessage({ type: 'done', id: data.id, error: failure });
+    else if (core) attempt(data);
+    else waiting.push(data);
   }
 };
+
+function fail(why) {
+  failure = why;
+  while (waiting.length) postMessage({ type: 'done', id: waiting.shift().id, error: failure });
+}
+
+// A run always answers: with its result, or with why it has none.
+function attempt(job) {
+  try {
+    run(job);
+  } catch (error) {
+    postMessage({ type: 'done', id: job.id, error: `the reconstruction stopped: ${error.message ?? error}` });
+  }
+}
 
 function run({ id, request, path, bytes }) {
   // The file is read by its name alone, in a folder of its own: the description and any refusal

@@ -48,30 +48,53 @@ function argumentsFromAddress() {
 // module is compiled once and handed to each worker; a cancel ends the worker and starts another.
 
 const coreUrl = new URL('sculpt/sculpt-core.wasm', import.meta.url);
-const compiledCore = WebAssembly.compileStreaming(fetch(coreUrl)).catch(async () =>
-  WebAssembly.compile(await (await fetch(coreUrl)).arrayBuffer()));
+const compiledCore = WebAssembly.compileStreaming(fetch(coreUrl)).catch(async () => {
+  const response = await fetch(coreUrl);
+  if (!response.ok) throw new Error(`${coreUrl} answers ${response.status}`);
+  return WebAssembly.compile(await response.arrayBuffer());
+});
+let coreFailure = '';  // why the core cannot be had, once it is known
+compiledCore.catch((error) => {
+  coreFailure = `the reconstruction module cannot be loaded (${error.message})`;
+  if (jobs.current) jobs.finish(jobs.current, coreFailure, '', null);
+});
 
 const jobs = {
   worker: null,
   current: 0,  // the job the viewer waits for (0: none)
+  started: 0,  // how many the viewer asked for (the tests wait for a dropped file's)
 
+  // A worker of its own for what follows; the messages of the ones before are not listened to.
   spawn() {
-    this.worker = new Worker(new URL('reconstruction-worker.mjs', import.meta.url),
-                             { type: 'module' });
-    this.worker.onmessage = ({ data }) => this.receive(data);
-    this.worker.onerror = (event) => {
-      if (this.current) this.finish(this.current, `internal error: ${event.message}`, '', null);
+    const worker = new Worker(new URL('reconstruction-worker.mjs', import.meta.url),
+                              { type: 'module' });
+    this.worker = worker;
+    worker.onmessage = ({ data }) => {
+      if (worker === this.worker) this.receive(data);
     };
-    compiledCore.then((module) => this.worker.postMessage({ type: 'init', module }));
+    worker.onerror = (event) => {
+      if (worker !== this.worker) return;
+      // A worker that failed is not trusted with the next job.
+      const failed = this.current;
+      worker.terminate();
+      this.spawn();
+      if (failed) this.finish(failed, `the reconstruction stopped: ${event.message}`, '', null);
+    };
+    compiledCore.then((module) => worker.postMessage({ type: 'init', module }), () => {});
   },
 
   async start(id, request, path) {
     this.current = id;
+    ++this.started;
+    if (coreFailure) {
+      this.finish(id, coreFailure, '', null);
+      return;
+    }
     let bytes = null;
     try {
       bytes = await fileBytes(path);
     } catch (error) {
-      this.finish(id, `error: ${error.message}`, '', null);
+      this.finish(id, error.message, '', null);
       return;
     }
     if (id !== this.current) return;  // cancelled or replaced meanwhile
@@ -97,13 +120,22 @@ const jobs = {
     }
   },
 
+  // Hands the end of a job to the viewer: its error (a bare message, the viewer says "error: "),
+  // or its reconstruction's bytes.
   finish(id, error, description, bytes) {
     if (id === this.current) this.current = 0;
     const memory = bytes ? Module._malloc(bytes.length) : 0;
-    if (bytes) Module.HEAPU8.set(bytes, memory);
-    withText(error, (errorText) => withText(description, (descriptionText) =>
-      Module._sculpt_job_finished(id, errorText, descriptionText, memory, bytes ? bytes.length : 0)));
-    if (memory) Module._free(memory);
+    if (bytes && !memory) {
+      bytes = null;
+      error = 'out of memory: the page cannot hold this reconstruction';
+    }
+    try {
+      if (bytes) Module.HEAPU8.set(bytes, memory);
+      withText(error, (errorText) => withText(description, (descriptionText) =>
+        Module._sculpt_job_finished(id, errorText, descriptionText, memory, bytes ? bytes.length : 0)));
+    } finally {
+      if (memory) Module._free(memory);
+    }
   },
 };
 
@@ -256,8 +288,9 @@ window.sculpt = {
     while (Module._sculpt_script_state() === 1) await new Promise((resolve) => setTimeout(resolve, 20));
     withText(script, (text) => Module._sculpt_run_script(text));
     for (;;) {
+      // 2 succeeded, 3 failed, 4 a lesson waiting at a picture (its Next is the user's).
       const state = Module._sculpt_script_state();
-      if (state === 2 || state === 3) return state === 2;
+      if (state === 2 || state === 3 || state === 4) return state !== 3;
       await new Promise((resolve) => setTimeout(resolve, 20));
     }
   },

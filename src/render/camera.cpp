@@ -73,7 +73,8 @@ Camera framing(const Camera& camera, const glm::vec3& lower, const glm::vec3& up
   box.upper = {upper.x, upper.y, upper.z};
   Camera framed = fit(box, aspect);
   const auto half_angle = [&](float fov) { return glm::radians(fov) / 2 * std::min(1.0f, aspect); };
-  framed.distance *= std::sin(half_angle(framed.fov_degrees)) / std::sin(half_angle(camera.fov_degrees));
+  framed.distance *=
+      std::sin(half_angle(framed.fov_degrees)) / std::sin(half_angle(camera.fov_degrees));
   framed.fov_degrees = camera.fov_degrees;
   framed.yaw = camera.yaw;
   framed.pitch = camera.pitch;
@@ -102,8 +103,8 @@ Follow follow_point(Camera& camera, const glm::vec3& point, const glm::vec3& low
 
 bool same_view(const Camera& a, const Camera& b) {
   return a.dimension == b.dimension && a.center == b.center && a.half_height == b.half_height &&
-         a.target == b.target && a.distance == b.distance && a.yaw == b.yaw &&
-         a.pitch == b.pitch && a.fov_degrees == b.fov_degrees;
+         a.target == b.target && a.distance == b.distance && a.yaw == b.yaw && a.pitch == b.pitch &&
+         a.fov_degrees == b.fov_degrees;
 }
 
 void Camera::orbit(float yaw_delta, float pitch_delta) {

@@ -10,8 +10,8 @@ namespace sculpt::render {
 
 namespace {
 
-// A framebuffer of one or several samples with colour and depth renderbuffers; the one bound
-// before is bound again when it goes.
+// A framebuffer of one or several samples with colour and depth renderbuffers; when it goes,
+// the window's (0) is bound.
 class Framebuffer {
  public:
   Framebuffer(int width, int height, int samples) {

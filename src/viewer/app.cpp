@@ -57,7 +57,7 @@ App::Script_state App::script_state() const {
 }
 
 int App::exit_status() const {
-  return status_ != 0 || (script_ && script_->failed()) ? 1 : 0;
+  return status_ != 0 || (script_ && script_ends_program_ && script_->failed()) ? 1 : 0;
 }
 
 bool App::start_lesson(const std::string& name) {
@@ -68,7 +68,7 @@ bool App::start_lesson(const std::string& name) {
   return true;
 }
 
-// A window over the picture's top right: the lesson's title, the narration of the step on
+// A strip along the bottom of the picture: the lesson's title, the narration of the step on
 // screen, and Next (Page Down, what presentation remotes send) when it waits at a picture.
 void App::draw_lesson() {
   if (!script_ || !script_->is_lesson()) {
@@ -126,13 +126,16 @@ bool App::frame() {
   if (glfwWindowShouldClose(window_)) return false;
   // A page is not closed by a program: Quit and a script's end leave it open.
   if (viewer_->wants_to_quit() && !platform::in_browser) return false;
-  platform::take_events(window_, script_ || viewer_->animating());
+  // A script drives frames (a lesson waiting at a picture does not: the user does).
+  platform::take_events(window_, (script_ && !script_->paused()) || viewer_->animating());
   std::string screenshot;
   if (script_) {
     screenshot = script_->before_frame(*viewer_);
     if (script_->finished() && screenshot.empty()) {
       finished_script_ = script_->failed() ? Script_state::failed : Script_state::succeeded;
-      if (script_->failed()) status_ = 1;
+      // Only a script that is the program's run decides its exit status: a first view that
+      // could not be shown said so on screen.
+      if (script_->failed() && script_ends_program_) status_ = 1;
       script_.reset();
       if (script_ends_program_ && !platform::in_browser) return false;
     }

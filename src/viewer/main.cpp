@@ -124,7 +124,11 @@ int main(int argc, char** argv) {
       ->check([](const std::string& name) {
         return sculpt::viewer::find_lesson(name) ? std::string() : "no lesson '" + name + "'";
       })
-      ->excludes(script_option);
+      ->excludes(script_option)
+      ->excludes(frames_option)
+      ->excludes("--stage")
+      ->excludes("--step")
+      ->excludes("--pick-sample");
   command_line.footer(sculpt::frontend::exit_codes_help);
   if (const auto stop =
           sculpt::frontend::parse_command_line(command_line, argc, argv, "sculpt-view")) {
@@ -152,20 +156,26 @@ int main(int argc, char** argv) {
   auto app = std::make_unique<sculpt::viewer::App>(window, font_scale);
   sculpt::viewer::Viewer& viewer = app->viewer();
   try {
+    // The first view, before anything a script or --frames does with it.
     std::string first_view;
     if (!stage.empty()) first_view += "stage " + stage + "\n";
     if (step >= 0) first_view += "step " + std::to_string(step) + "\n";
     if (picked_sample >= 0) first_view += "pick-sample " + std::to_string(picked_sample) + "\n";
-    if (!first_view.empty())
-      app->run_script(sculpt::viewer::Script::from_text("wait\n" + first_view), false);
-    if (!lesson.empty()) app->start_lesson(lesson);
-    if (!script_path.empty()) app->run_script(sculpt::viewer::Script::from_file(script_path), true);
+    if (!first_view.empty()) first_view = "wait\n" + first_view;
+    std::optional<sculpt::viewer::Script> script;
+    if (!script_path.empty()) script = sculpt::viewer::Script::from_file(script_path);
     if (frames > 0) {
-      app->run_script(sculpt::viewer::Script::from_text(
-                          "wait\nframes " + std::to_string(frames) +
-                          (screenshot.empty() ? "" : "\nscreenshot " + screenshot) + "\nquit\n"),
-                      true);
+      script = sculpt::viewer::Script::from_text(
+          "wait\nframes " + std::to_string(frames) +
+          (screenshot.empty() ? "" : "\nscreenshot " + screenshot) + "\nquit\n");
     }
+    if (script) {
+      script->run_first(first_view);
+      app->run_script(std::move(*script), true);
+    } else if (!first_view.empty()) {
+      app->run_script(sculpt::viewer::Script::from_text(first_view), false);
+    }
+    if (!lesson.empty()) app->start_lesson(lesson);
   } catch (const std::exception& e) {
     std::cerr << "sculpt-view: " << e.what() << '\n';
     return 1;

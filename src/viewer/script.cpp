@@ -130,6 +130,11 @@ Script Script::from_text(const std::string& text, Mode mode) {
   return script;
 }
 
+void Script::run_first(const std::string& commands) {
+  Script first = from_text(commands);
+  commands_.insert(commands_.begin(), first.commands_.begin(), first.commands_.end());
+}
+
 void Script::resume() {
   if (!paused_) return;
   paused_ = false;
@@ -226,7 +231,7 @@ std::string Script::before_frame(Viewer& viewer) {
                    "save-points F, save-result F, link, message, figures, explain, stats, "
                    "figure ID, panel ID, "
                    "expect-panel ID, key K, "
-                   "animation on|off, wait, wait-idle, expect-busy, cancel, frames N, "
+                   "animation on|off, wait, wait-idle, expect-busy, expect-idle, cancel, frames N, "
                    "screenshot F.png, export F.png [WxH], export-animation F.webp [WxH [FRAMES]], "
                    "quit\n";
     } else if (command == "example") {
@@ -472,6 +477,9 @@ std::string Script::before_frame(Viewer& viewer) {
       viewer.cancel();
     } else if (command == "expect-busy") {
       if (!viewer.busy()) fail("expected a reconstruction to be running");
+    } else if (command == "expect-idle") {
+      // No reconstruction runs (right after `cancel`: a cancel takes effect at once).
+      if (viewer.reconstructing()) fail("expected no reconstruction to be running");
     } else if (command == "quit") {
       commands_.clear();
       return "";

@@ -6,6 +6,7 @@
 //                       has ended (fail if the reconstruction failed)
 //   wait-idle           until no reconstruction runs, whatever its outcome
 //   cancel              ask the running reconstruction to stop
+//   expect-idle         fail if a reconstruction runs (right after cancel: the cancel was at once)
 //   expect-busy         fail unless a reconstruction is running (the UI is not blocked)
 //   stage poles         show a stage (next / previous step through them)
 //   method crust        reconstruct the loaded input again with another method
@@ -60,6 +61,8 @@ class Script {
   // Runs commands until one needs frames to pass. Returns a screenshot path to save after this
   // frame is drawn, if a command asked for one.
   std::string before_frame(Viewer& viewer);
+  // Commands run before the script's own (the first view the command line asks for).
+  void run_first(const std::string& commands);
   bool finished() const { return commands_.empty() && frames_to_wait_ == 0 && !paused_; }
   bool failed() const { return failed_; }
 

@@ -129,6 +129,7 @@ class Viewer {
     return job_->running() || job_->outcome_waiting() || moving_to_panel() || edits_pending_;
   }
   void cancel() { job_->request_cancel(); }
+  bool reconstructing() const { return job_->running(); }
   const std::string& message() const { return message_; }
   bool has_reconstruction() const { return reconstruction_ != nullptr; }
   // The shown reconstruction's dimension (0 before any), whether its method has a replay of the

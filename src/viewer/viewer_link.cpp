@@ -2,6 +2,7 @@
 // The view on screen as the options that open it again: a link to the viewer in the browser
 // (?example=torus&method=paper&stage=poles), the command line on the desktop (sculpt-view
 // --example torus --method paper --stage poles). main.cpp reads both the same way.
+#include <cctype>
 #include <sstream>
 
 #include "platform/platform.hpp"

@@ -5,10 +5,12 @@
 // command line's one line (frontend/failure.hpp), never an abort.
 #include <emscripten/emscripten.h>
 
+#include <cmath>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <sculpt/sculpt.hpp>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "frontend/failure.hpp"
@@ -31,7 +33,8 @@ struct Result {
 
 // The progress of a run, handed to the JavaScript side: Module.onProgress(stage, fraction,
 // overall) if it is set; it returns false to cancel.
-// clang-format off (it would split JavaScript's "===")
+// JavaScript below: clang-format would split its "===".
+// clang-format off
 EM_JS(int, report_progress, (const char* stage, double fraction, double overall), {
   const report = Module["onProgress"];
   if (!report) return 1;
@@ -160,20 +163,25 @@ EMSCRIPTEN_KEEPALIVE Result* sculpt_read_points(const char* path, int forced_dim
 }
 
 // The viewer's request (frontend::Reconstruction_request as JSON): the reconstruction with
-// every stage, as bytes (io/reconstruction_bytes.hpp), and the input's description.
+// every stage, as bytes (io/reconstruction_bytes.hpp), and the input's description. Its error is
+// the bare message (the viewer says "error: " before it), as run_request gives it.
 EMSCRIPTEN_KEEPALIVE Result* sculpt_run_request(const char* request_json) {
-  return run([&](Result& result) {
+  auto* result = new Result;
+  try {
     const auto request = sculpt::frontend::request_from_json(nlohmann::json::parse(request_json));
     sculpt::frontend::Reconstruction_outcome outcome =
         sculpt::frontend::run_request(request, progress);
     if (!outcome.error.empty()) {
-      result.error = outcome.error;
-      return;
+      result->error = outcome.error;
+      return result;
     }
-    result.bytes =
+    result->bytes =
         std::visit([](const auto& r) { return sculpt::io::to_bytes(r); }, *outcome.reconstruction);
-    result.json = nlohmann::json{{"description", outcome.description}}.dump();
-  });
+    result->json = nlohmann::json{{"description", outcome.description}}.dump();
+  } catch (const std::exception& e) {
+    result->error = e.what();
+  }
+  return result;
 }
 
 EMSCRIPTEN_KEEPALIVE const char* sculpt_result_error(const Result* r) {

@@ -26,7 +26,8 @@ async function compileCore() {
   }
 }
 
-// An instance of the core on a compiled module (the viewer's worker passes the page's).
+// An instance of the core on a compiled module (a worker can make its own from a module the
+// page compiled once).
 export async function instantiateCore(compiled) {
   return createSculptCore({
     instantiateWasm(imports, receive) {
@@ -115,6 +116,7 @@ export function reconstruct(points, options = {}) {
   }
   const count = coordinates.length / dimension;
   const memory = core._malloc(Math.max(8, coordinates.byteLength));
+  if (!memory) throw new SculptError('error: out of memory');
   core.onProgress = onProgress
     ? (stage, fraction, overall) => onProgress({ stage, fraction, overall }) !== false
     : null;

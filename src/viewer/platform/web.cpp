@@ -9,7 +9,9 @@
 #include <GLFW/glfw3.h>
 // clang-format on
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 
 #include "viewer/platform/platform.hpp"
@@ -28,7 +30,8 @@ void call_frame() {
   if (!frame_function()) emscripten_cancel_main_loop();
 }
 
-// clang-format off (JavaScript inside)
+// JavaScript below, which clang-format would reshape.
+// clang-format off
 EM_JS(void, download_file, (const char* path), {
   const name = UTF8ToString(path);
   const bytes = FS.readFile(name);

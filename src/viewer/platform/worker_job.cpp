@@ -16,7 +16,8 @@ namespace sculpt::viewer {
 
 namespace {
 
-// clang-format off (JavaScript inside)
+// JavaScript below, which clang-format would reshape.
+// clang-format off
 EM_JS(void, start_in_worker, (int id, const char* request, const char* path),
       { Module["sculptJobs"].start(id, UTF8ToString(request), UTF8ToString(path)); });
 
