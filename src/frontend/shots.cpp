@@ -92,9 +92,6 @@ Shot shot_from_json(const nlohmann::json& j) {
   return shot;
 }
 
-namespace {
-
-// What a shot asks of the scene builder; throws io::Error for an unknown stage.
 scene::Request request_of(const Shot& shot) {
   scene::Request request;
   if (!scene::parse_stage(shot.stage, request.stage)) {
@@ -148,8 +145,6 @@ scene::Request request_of(const Shot& shot) {
   request.smooth = shot.smooth;
   return request;
 }
-
-}  // namespace
 
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* inline_camera) {
@@ -291,6 +286,5 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
   render::write_png(shot.output, picture.image);
   return std::move(picture.scene);
 }
-
 
 }  // namespace sculpt::frontend

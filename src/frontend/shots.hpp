@@ -38,6 +38,10 @@ struct Picture {
   render::Camera camera;
   render::Image image;
 };
+// What a shot asks of the scene builder: its stage, step, focus, clip, layers and drawing options.
+// Throws io::Error with a one-line message (an unknown stage, a malformed clip, ...).
+scene::Request request_of(const Shot& shot);
+
 // `camera`, if given, replaces the fitted camera. Throws io::Error with a one-line message.
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 
+#include "frontend/shots.hpp"
 #include "viewer.hpp"
 #include "viewer_internals.hpp"
 
@@ -166,15 +167,8 @@ void Viewer::move_to_panel_view() {
 
 void Viewer::arrive_at_panel() {
   const frontend::Shot& shot = tour_.image().shot;
-  scene::Request request;
-  scene::parse_stage(shot.stage, request.stage);
-  request.step = shot.step;
-  request.focus_sample = shot.focus_sample;
-  request.focus_pole = shot.focus_pole;
-  request.wireframe = shot.wireframe;
-  request.smooth = shot.smooth;
-  request.ball_every = shot.ball_every;
-  request.layers = shot.layers;
+  // The panel's own view: its stage, step, focus, clip and layers, as the gallery draws it.
+  const scene::Request request = frontend::request_of(shot);
   request_ = request;
   // A panel in the middle of the labelling: play it up to there.
   if (walk_stages_ && request.stage == scene::Stage::propagation && shot.step > 0) {

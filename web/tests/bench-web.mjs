@@ -16,6 +16,7 @@ import {
   launchBrowser, nativeSculpt, openViewer, packageDir, requireFile, runScript, serveSite, siteDir,
   statistics,
 } from './support.mjs';
+import { torus } from './samples.mjs';
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -28,18 +29,6 @@ const jsonPath = option('--json', '');
 const scratch = mkdtempSync(join(tmpdir(), 'sculpt-bench-web-'));
 
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
-
-function torus(count, seed = 1) {
-  let state = seed;
-  const random = () => (state = (state * 48271) % 2147483647) / 2147483647;
-  const points = new Float64Array(3 * count);
-  for (let i = 0; i < count; ++i) {
-    const u = 2 * Math.PI * random(), v = 2 * Math.PI * random();
-    points.set([(1 + 0.4 * Math.cos(v)) * Math.cos(u), (1 + 0.4 * Math.cos(v)) * Math.sin(u),
-                0.4 * Math.sin(v)], 3 * i);
-  }
-  return points;
-}
 
 function xyz(points) {
   const lines = [];

@@ -9,24 +9,12 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { test } from 'node:test';
 import { packageDir, requireFile, runNative } from './support.mjs';
+import { torus } from './samples.mjs';
 
 requireFile(join(packageDir, 'sculpt.mjs'), 'build the package first (scripts/web)');
 const sculpt = await import(join(packageDir, 'sculpt.mjs'));
 const { reconstruct, readPoints, methods, version, SculptError } = sculpt;
 const scratch = mkdtempSync(join(tmpdir(), 'sculpt-module-'));
-
-// A torus of radii 1 and 0.4, sampled at random (a fixed seed): `count` points, flat.
-function torus(count, seed = 7) {
-  let state = seed;
-  const random = () => (state = (state * 48271) % 2147483647) / 2147483647;
-  const points = new Float64Array(3 * count);
-  for (let i = 0; i < count; ++i) {
-    const u = 2 * Math.PI * random(), v = 2 * Math.PI * random();
-    points.set([(1 + 0.4 * Math.cos(v)) * Math.cos(u), (1 + 0.4 * Math.cos(v)) * Math.sin(u),
-                0.4 * Math.sin(v)], 3 * i);
-  }
-  return points;
-}
 
 function circle(count) {
   const points = new Float64Array(2 * count);
