@@ -20,6 +20,17 @@ const options = {
   sample: '--pick-sample', figure: '--figure', panel: '--panel', lesson: '--lesson',
   text: '--font-scale',
 };
+// A refusal of the command line in the address's words: `stage` for `--stage`, and no pointer
+// to a --help the page cannot show.
+function inAddressWords(line) {
+  let words = line.replace(/^sculpt-view: usage error: /, 'This link cannot be opened: ')
+    .replace(/ \(see sculpt-view --help\)$/, '');
+  for (const [key, option] of Object.entries(options)) {
+    words = words.replaceAll(new RegExp(`${option}\\b`, 'g'), key);
+  }
+  return words;
+}
+
 function argumentsFromAddress() {
   const args = [];
   for (const [key, value] of new URLSearchParams(location.search)) {
@@ -320,7 +331,7 @@ if (!document.createElement('canvas').getContext('webgl2')) {
       // each: shown on the page as well as in the console.
       console.warn(line);
       window.sculpt.errors.push(line);
-      if (!window.sculpt.started) show(line, true);
+      if (!window.sculpt.started) show(inAddressWords(line), true);
     },
   };
   window.sculpt.firstFrame = new Promise((resolve) => {

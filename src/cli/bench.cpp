@@ -19,6 +19,7 @@
 #include "frontend/input.hpp"
 #include "frontend/shot.hpp"
 #include "io/atomic_file.hpp"
+#include "io/destinations.hpp"
 #include "io/writers.hpp"
 #include "render/headless.hpp"
 #include "report.hpp"
@@ -521,6 +522,8 @@ struct Subdivided_meshes {
 };
 
 int run_bench(const Bench_arguments& given) {
+  // Before any work (a benchmark runs for minutes): the JSON table can be written, over no input.
+  io::check_destination(given.json, given.inputs);
   Bench_arguments args = given;
   const Subdivided_meshes subdivided(args.loop_subdivided);
   args.inputs.insert(args.inputs.end(), subdivided.paths.begin(), subdivided.paths.end());

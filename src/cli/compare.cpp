@@ -15,6 +15,7 @@
 #include "frontend/input.hpp"
 #include "frontend/shots.hpp"
 #include "io/atomic_file.hpp"
+#include "io/destinations.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
 #include "render/headless.hpp"
@@ -287,11 +288,14 @@ void check_outputs(const Compare_arguments& args) {
       throw frontend::Usage_error(
           fmt::format("the {} must end in {}: '{}'", what, extension, path));
     }
-    io::check_output_folder(path);
   };
   check(args.markdown, ".md", "markdown table");
   check(args.json, ".json", "JSON table");
   check(args.pictures, ".png", "picture grid");
+  // Before any work: every output can be written, and none is an input or the reference.
+  std::vector<std::string> inputs = args.inputs.inputs;
+  inputs.push_back(args.reference);
+  io::check_destinations({args.markdown, args.json, args.pictures}, inputs);
   try {
     frontend::parse_size(args.tile);
   } catch (const io::Error& e) {

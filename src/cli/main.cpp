@@ -15,6 +15,7 @@
 #include "frontend/failure.hpp"
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
+#include "io/destinations.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
 #include "io/temporary_files.hpp"
@@ -98,10 +99,8 @@ void check_output_formats(const Reconstruct_arguments& args, int dimension) {
   if (!args.stats.empty() && io::extension_of(args.stats) != ".json") {
     throw Usage_error("the statistics file must end in .json: '" + args.stats + "'");
   }
-  // Every output's folder must exist before any work is done.
-  for (const std::string* path : {&args.output, &args.solid, &args.stats}) {
-    io::check_output_folder(*path);
-  }
+  // Before any work: every output can be written, none is the input, no two are the same file.
+  io::check_destinations(io::with_companions({args.output, args.solid, args.stats}), {args.input});
 }
 
 template <int D>
@@ -356,7 +355,7 @@ int main(int argc, char** argv) {
     std::cerr << "sculpt: " << sculpt::frontend::one_line(message) << '\n';
     return code;
   };
-  try {
+  const auto run = [&]() -> int {
     if (examples->parsed()) return run_examples();
     if (bench->parsed()) return run_bench(bench_args);
     if (compare->parsed()) return run_compare(compare_args);
@@ -367,6 +366,14 @@ int main(int argc, char** argv) {
       throw Usage_error("give an input file or --example NAME");
     }
     return run_reconstruct(args);
+  };
+  try {
+    const int code = run();
+    // A report that could not be written (a full disk behind stdout) is a failure, not a success.
+    if (!std::cout.flush()) {
+      return fail(exit_bad_input, "error: cannot write the report to standard output");
+    }
+    return code;
   } catch (const Usage_error& e) {
     return fail(exit_bad_usage, std::string("usage error: ") + e.what() + " (see sculpt --help)");
   } catch (const std::exception& e) {

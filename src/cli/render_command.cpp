@@ -7,7 +7,9 @@
 
 #include "frontend/command_line.hpp"
 #include "frontend/shot_renderer.hpp"
+#include "io/destinations.hpp"
 #include "io/io_error.hpp"
+#include "io/output_set.hpp"
 #include "io/point_reader.hpp"
 #include "scene/scene.hpp"
 
@@ -94,6 +96,31 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
                      "\"star\", \"stage\": \"poles\", \"output\": \"a.png\", ...}]}");
 }
 
+namespace {
+
+// Draws every shot, each picture (and camera) under a temporary name, and renames them into
+// place together: every file of the list, or none. All are checked before the first is drawn.
+void render_all(frontend::Shot_renderer& renderer, const std::vector<Shot>& shots,
+                const std::vector<const nlohmann::json*>& cameras, const std::string& shots_file) {
+  std::vector<std::string> outputs, inputs{shots_file};
+  for (const Shot& shot : shots) {
+    frontend::check_shot(shot);
+    outputs.insert(outputs.end(), {shot.output, shot.save_camera});
+    inputs.insert(inputs.end(), {shot.input, shot.camera_file});
+  }
+  io::check_destinations(outputs, inputs);
+  io::Output_set written;
+  for (std::size_t i = 0; i < shots.size(); ++i) {
+    Shot staged = shots[i];
+    staged.output = written.stage(shots[i].output);
+    if (!staged.save_camera.empty()) staged.save_camera = written.stage(shots[i].save_camera);
+    renderer.render(staged, cameras[i]);
+  }
+  written.commit();
+}
+
+}  // namespace
+
 int run_render(const Render_arguments& args) {
   frontend::Shot_renderer renderer;
   if (args.shots_file.empty()) {
@@ -102,19 +129,21 @@ int run_render(const Render_arguments& args) {
     // A usage error here, before any work (Shot_renderer checks the same for --shots lists).
     if (const std::string problem = frontend::output_format_problem(args.shot); !problem.empty())
       throw frontend::Usage_error(problem);
-    renderer.render(args.shot, nullptr);
+    render_all(renderer, {args.shot}, {nullptr}, "");
     return 0;
   }
   const nlohmann::json list = frontend::read_json(args.shots_file);
   if (!list.contains("shots") || !list["shots"].is_array()) {
     throw io::Error("'" + args.shots_file + "' has no \"shots\" list");
   }
+  std::vector<Shot> shots;
+  std::vector<const nlohmann::json*> cameras;
   for (const auto& entry : list["shots"]) {
-    const Shot shot = frontend::shot_from_json(entry);
-    const nlohmann::json* camera = entry.contains("camera") ? &entry["camera"] : nullptr;
-    renderer.render(shot, camera);
-    std::cout << "wrote " << shot.output << '\n';
+    shots.push_back(frontend::shot_from_json(entry));
+    cameras.push_back(entry.contains("camera") ? &entry["camera"] : nullptr);
   }
+  render_all(renderer, shots, cameras, args.shots_file);
+  for (const Shot& shot : shots) std::cout << "wrote " << shot.output << '\n';
   return 0;
 }
 

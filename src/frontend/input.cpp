@@ -15,7 +15,10 @@ Input load_input(const std::string& path, const std::string& example, int forced
   if (!example.empty()) {
     const shapes::Example* found = shapes::find_example(example);
     if (!found) {
-      throw io::Error("no built-in example named '" + example + "' (see `sculpt examples`)");
+      std::string names;
+      for (const auto& known : shapes::examples())
+        names += (names.empty() ? "" : ", ") + known.name;
+      throw io::Error("no built-in example named '" + example + "' (examples: " + names + ")");
     }
     input.description = "example " + found->name;
     if (found->dimension == 2) {

@@ -10,6 +10,7 @@
 
 #include "frontend/input.hpp"
 #include "io/atomic_file.hpp"
+#include "io/destinations.hpp"
 #include "io/io_error.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
@@ -224,8 +225,8 @@ void check_shot(const Shot& shot) {
     throw io::Error("an animation has 2 to 2000 frames, each shown 0 ms (automatic) to 60,000 ms");
   if (const std::string problem = output_format_problem(shot); !problem.empty())
     throw io::Error(problem);
-  io::check_output_folder(shot.output);  // before any work
-  io::check_output_folder(shot.save_camera);
+  // Before any work: the picture and the camera can be written, and neither is an input.
+  io::check_destinations({shot.output, shot.save_camera}, {shot.input, shot.camera_file});
   request_of(shot);  // an unknown stage or size fails before any work
   parse_size(shot.size);
 }

@@ -3,7 +3,6 @@
 
 #include <pthread.h>
 #include <signal.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -15,32 +14,43 @@
 #include "temporary_files.hpp"
 
 namespace sculpt::io {
+namespace {
 
-void check_output_folder(const std::string& path) {
-  const auto folder = std::filesystem::path(path).parent_path();
-  if (!path.empty() && !folder.empty() && !std::filesystem::is_directory(folder)) {
-    throw Error("cannot write '" + path + "': there is no folder '" + folder.string() + "'");
+bool is_tetgen(const std::string& extension) {
+  return extension == ".node" || extension == ".ele";
+}
+
+std::string companion_extension(const std::string& extension) {
+  return extension == ".node" ? ".ele" : ".node";
+}
+
+}  // namespace
+
+std::vector<std::string> with_companions(std::vector<std::string> paths) {
+  const std::size_t given = paths.size();
+  for (std::size_t i = 0; i < given; ++i) {
+    if (is_tetgen(extension_of(paths[i]))) {
+      paths.push_back(std::filesystem::path(paths[i])
+                          .replace_extension(companion_extension(extension_of(paths[i])))
+                          .string());
+    }
   }
+  return paths;
 }
 
 std::string Output_set::stage(const std::string& destination) {
-  const std::filesystem::path path(destination);
+  const std::string temporary = make_temporary(destination);
+  staged_.emplace_back(temporary, destination);
   const std::string extension = extension_of(destination);
-  const std::string stem = path.stem().string();
-  const auto temporary_for = [&](const std::string& ext) {
-    return (path.parent_path() / ("." + stem + ".sculpt-" + std::to_string(::getpid()) + ext))
-        .string();
-  };
-  const auto add = [&](const std::string& ext) {
-    const std::string temporary = temporary_for(ext);
-    register_temporary(temporary);
-    staged_.emplace_back(temporary, (path.parent_path() / (stem + ext)).string());
-    return temporary;
-  };
-  if (extension == ".node" || extension == ".ele") {
-    add(extension == ".node" ? ".ele" : ".node");
+  if (is_tetgen(extension)) {
+    // The writer names the companion after the temporary: same stem, the other extension.
+    const auto other = companion_extension(extension);
+    const std::string companion = std::filesystem::path(temporary).replace_extension(other);
+    register_temporary(companion, std::filesystem::path(destination).replace_extension(other));
+    staged_.emplace_back(companion,
+                         std::filesystem::path(destination).replace_extension(other).string());
   }
-  return add(path.extension().string());
+  return temporary;
 }
 
 void Output_set::commit() {
@@ -48,7 +58,7 @@ void Output_set::commit() {
   // are in place (and then ends the run, with every output written).
   sigset_t stopping, previous;
   sigemptyset(&stopping);
-  for (int signal : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&stopping, signal);
+  add_ending_signals(stopping);
   pthread_sigmask(SIG_BLOCK, &stopping, &previous);
   for (const auto& [temporary, destination] : staged_) {
     if (std::rename(temporary.c_str(), destination.c_str()) != 0) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The outputs of one run, written all or none. Each output is written under a temporary name
-// beside its destination (same folder, same extension, so that writers choose the same format);
-// commit() renames them all into place once every one was written. An error, or leaving without
-// commit, removes the temporaries, so a failed run leaves no output, new or half-written.
+// beside its destination (io/temporary_files.hpp); commit() renames them all into place once
+// every one was written. An error, or leaving without commit, removes the temporaries, so a
+// failed run leaves no output, new or half-written.
 #pragma once
 
 #include <string>
@@ -11,9 +11,9 @@
 
 namespace sculpt::io {
 
-// Throws io::Error if the folder an output would go into does not exist: checked for every
-// output before any work, so a run never fails after it.
-void check_output_folder(const std::string& path);
+// The files that writing `paths` makes: a TetGen solid's .node brings its .ele and the other way
+// round. What io::check_destinations must check before the work.
+std::vector<std::string> with_companions(std::vector<std::string> paths);
 
 class Output_set {
  public:
@@ -26,7 +26,8 @@ class Output_set {
   // companion file, which its writer writes beside it.
   std::string stage(const std::string& destination);
 
-  // Renames every staged file into place; throws io::Error if one cannot be.
+  // Renames every staged file into place, with the signals that would end the run held until
+  // the last is in place; throws io::Error if one cannot be (one that is a folder by now).
   void commit();
 
  private:

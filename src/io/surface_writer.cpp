@@ -10,6 +10,7 @@
 
 #include "atomic_file.hpp"
 #include "point_reader.hpp"
+#include "temporary_files.hpp"
 #include "writers.hpp"
 
 namespace sculpt::io {
@@ -91,7 +92,8 @@ void write_surface(const std::string& path, const std::vector<Point<3>>& samples
   bool written = false;
   if (extension == ".stl") written = CGAL::IO::write_STL(out, points, faces, precise);
   if (extension == ".ply") written = CGAL::IO::write_PLY(out, points, faces, precise);
-  if (!written) throw Error("failed while writing '" + path + "'");
+  // A stream that failed (a full disk, a file-size limit) is reported by commit(), with why.
+  if (!written && out) throw Error("failed while writing '" + destination_of(path) + "'");
   file.commit();
 }
 

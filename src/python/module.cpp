@@ -21,13 +21,15 @@
 #include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "frontend/shots.hpp"
-#include "render/headless.hpp"
 #include "frontend/statistics_json.hpp"
+#include "io/destinations.hpp"
 #include "io/io_error.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
+#include "io/temporary_files.hpp"
 #include "io/writers.hpp"
 #include "python/stage_views.hpp"
+#include "render/headless.hpp"
 #include "scene/scene.hpp"
 #include "shapes/shapes.hpp"
 
@@ -229,8 +231,8 @@ void write_result(const Result& result, const std::filesystem::path& path_name,
     if (!solid.empty() && !io::writes_solid(io::extension_of(solid))) {
       throw io::Error("cannot write a solid as '" + solid + "' (known: " + io::solid_formats + ")");
     }
-    io::check_output_folder(path);
-    io::check_output_folder(solid);
+    // Before any work: both can be written, and neither replaces a file read_points read.
+    io::check_destinations(io::with_companions({path, solid}));
     io::Output_set outputs;
     const std::vector<Point<D>>& vertices = r.interpolates() ? samples : r.surface_vertices;
     if constexpr (D == 3) {
@@ -329,6 +331,9 @@ PYBIND11_MODULE(_sculpt, m) {
   using namespace sculpt;
   using namespace sculpt::python;
   m.doc() = "Sculpt's compiled core: see the package sculpt";
+  // A write() ended by a signal (SIGTERM, ...) leaves no hidden temporary; Python's own handlers
+  // (SIGINT) stay as they are.
+  io::remove_temporaries_on_signals();
 
   // Bad input raises one of these with the line the command line prints after "sculpt: error: ".
   static py::exception<Input_error> input_error(m, "InputError", PyExc_ValueError);
@@ -418,7 +423,10 @@ PYBIND11_MODULE(_sculpt, m) {
       [](const std::filesystem::path& path, int dimension, bool merge_duplicates) {
         if (dimension != 0 && dimension != 2 && dimension != 3)
           throw Input_error("the dimension is 0 (the file's), 2 or 3");
-        return points_array(frontend::load_input(path.string(), "", dimension, merge_duplicates));
+        auto points =
+            points_array(frontend::load_input(path.string(), "", dimension, merge_duplicates));
+        io::remember_input(path.string());  // no write() may replace it
+        return points;
       },
       py::arg("path"), py::arg("dimension") = 0, py::arg("merge_duplicates") = false,
       "The points of a file (.xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl; a mesh gives "

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <utility>
 
 #include "lessons.hpp"
 #include "platform/platform.hpp"
@@ -27,6 +28,18 @@ void on_drop(GLFWwindow* window, int count, const char** paths) {
   if (count > 0 && viewer && !viewer->busy()) viewer->open_file(paths[0]);
 }
 
+// Every key press since the last frame, from GLFW's events. ImGui 1.86 reads keys as a state
+// once a frame, so a tap whose press and release fall between two frames (a presentation
+// remote's Page Down, on a slow software renderer) would be lost.
+std::vector<int>& key_presses() {
+  static std::vector<int> presses;
+  return presses;
+}
+
+void on_key(GLFWwindow*, int key, int, int action, int) {
+  if (action == GLFW_PRESS || action == GLFW_REPEAT) key_presses().push_back(key);
+}
+
 }  // namespace
 
 App::App(GLFWwindow* window, float font_scale) : window_(window) {
@@ -35,6 +48,8 @@ App::App(GLFWwindow* window, float font_scale) : window_(window) {
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
   ImGui::GetIO().FontGlobalScale = font_scale;
   ImGui::StyleColorsDark();
+  // Ours first: ImGui's backend installs its own callback and calls the one it replaced.
+  glfwSetKeyCallback(window, on_key);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init(platform::imgui_glsl_version());
   viewer_ = std::make_unique<Viewer>();
@@ -76,7 +91,7 @@ void App::draw_lesson() {
     return;
   }
   if (script_->paused() && !ImGui::GetIO().WantCaptureKeyboard &&
-      ImGui::IsKeyPressed(GLFW_KEY_PAGE_DOWN))
+      std::count(pressed_.begin(), pressed_.end(), GLFW_KEY_PAGE_DOWN) > 0)
     script_->resume();
   // A strip along the bottom of the picture, which it takes from the picture (as the tour's
   // caption does), so that the narration never covers what it speaks of.
@@ -128,6 +143,9 @@ bool App::frame() {
   if (viewer_->wants_to_quit() && !platform::in_browser) return false;
   // A script drives frames (a lesson waiting at a picture does not: the user does).
   platform::take_events(window_, (script_ && !script_->paused()) || viewer_->animating());
+  // The presses since the last frame: from this poll on the desktop, from the page's events
+  // between two animation frames in the browser.
+  pressed_ = std::exchange(key_presses(), {});
   std::string screenshot;
   if (script_) {
     screenshot = script_->before_frame(*viewer_);
@@ -147,6 +165,7 @@ bool App::frame() {
   glfwGetFramebufferSize(window_, &width, &height);
   const double now = glfwGetTime();
   viewer_->set_lesson_running(script_ && script_->is_lesson());
+  viewer_->set_key_presses(pressed_);
   viewer_->frame(width, height, now - last_frame_);
   last_frame_ = now;
   draw_lessons_menu();

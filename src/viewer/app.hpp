@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "script.hpp"
 #include "viewer.hpp"
@@ -50,6 +51,7 @@ class App {
 
   GLFWwindow* window_;
   std::unique_ptr<Viewer> viewer_;
+  std::vector<int> pressed_;  // the keys pressed since the last frame (GLFW key codes)
   std::optional<Script> script_;
   bool script_ends_program_ = false;
   std::string lesson_title_;

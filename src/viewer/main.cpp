@@ -14,6 +14,7 @@
 #include "app.hpp"
 #include "figures/paper_figures.hpp"
 #include "frontend/command_line.hpp"
+#include "io/temporary_files.hpp"
 #include "lessons.hpp"
 #include "platform/platform.hpp"
 #include "scene/scene.hpp"
@@ -29,6 +30,8 @@ void on_glfw_error(int code, const char* description) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // A save interrupted by a signal leaves no hidden temporary behind.
+  sculpt::io::remove_temporaries_on_signals();
   CLI::App command_line{"sculpt-view: step through the sculpting reconstruction, in 2D and 3D"};
   std::string file, example = "star", script_path, screenshot;
   int frames = 0;
@@ -104,10 +107,14 @@ int main(int argc, char** argv) {
   command_line.add_option("--stage", stage, "Show this stage once reconstructed (e.g. poles)")
       ->check([](const std::string& id) {
         sculpt::scene::Stage parsed;
-        return sculpt::scene::parse_stage(id, parsed) ? std::string() : "no stage '" + id + "'";
+        if (sculpt::scene::parse_stage(id, parsed)) return std::string();
+        std::string stages;
+        for (auto known : sculpt::scene::all_stages())
+          stages += (stages.empty() ? "" : ", ") + std::string(sculpt::scene::stage_id(known));
+        return "no stage '" + id + "' (stages: " + stages + ")";
       });
   command_line.add_option("--step", step, "With --stage propagation: the labelling events shown")
-      ->check(CLI::Range(0L, 1L << 40));
+      ->check(CLI::Range(0L, 1L << 30));
   command_line.add_option("--pick-sample", picked_sample, "Select this sample once reconstructed")
       ->check(CLI::NonNegativeNumber);
   std::string lesson;

@@ -255,7 +255,7 @@ std::string Script::before_frame(Viewer& viewer) {
         fail("'" + line + "': this method has no replay of the labelling");
         continue;
       }
-      if (const auto events = count("a number of events (or -1 for all)", -1, 1L << 40)) {
+      if (const auto events = count("a number of events (or -1 for all)", -1, 1L << 30)) {
         viewer.set_step(*events);
       }
     } else if (command == "clip") {

@@ -10,6 +10,7 @@
 // clang-format on
 #include <imgui.h>
 
+#include "io/destinations.hpp"
 #include "shapes/shapes.hpp"
 #include "viewer_internals.hpp"
 
@@ -50,7 +51,8 @@ void Viewer::open_file(const std::string& path) {
   stop_editing();
   Job_request request;
   request.path = path;
-  kind_ = file_kind_;  // a file: as asked on the command line, else chosen from its samples
+  io::remember_input(path);  // no save of this session may replace it
+  kind_ = file_kind_;        // a file: as asked on the command line, else chosen from its samples
   std::snprintf(path_field_, sizeof path_field_, "%s", path.c_str());
   start_job(request);
 }

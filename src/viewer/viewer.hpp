@@ -119,6 +119,9 @@ class Viewer {
   void press_key(int key);  // a GLFW key, as if pressed (scripts)
   // A lesson runs (App): Page Down and Page Up are its, not the tour's.
   void set_lesson_running(bool running) { lesson_running_ = running; }
+  // The keys pressed since the last frame (GLFW key codes, a held key's repeats too), each acted
+  // on once, however short the press.
+  void set_key_presses(std::vector<int> keys) { key_presses_ = std::move(keys); }
   // Pixels along the window's bottom that another window takes (App's lesson), under the picture
   // and the tour's caption.
   void set_reserved_height(int pixels) { reserved_height_ = std::max(0, pixels); }
@@ -220,6 +223,9 @@ class Viewer {
   void draw_download_items();
   // A file name for what is shown: "torus-paper-poles" and the extension.
   std::string download_name(const std::string& extension) const;
+  // Whether a save may write `path` (not a folder, not a file this session opened); if not, the
+  // reason is on screen.
+  bool can_save_to(const std::string& path);
   void draw_paper_menu();
   void draw_caption(int width, int height);
   void draw_panel(int height);
@@ -323,6 +329,7 @@ class Viewer {
   int picture_size_[2] = {1600, 1200};
   bool show_help_ = false;
   bool lesson_running_ = false;
+  std::vector<int> key_presses_;
   bool quit_ = false;
   int frame_width_ = 0, frame_height_ = 0;
 };

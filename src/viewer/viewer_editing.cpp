@@ -10,6 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "frontend/statistics_json.hpp"
+#include "io/destinations.hpp"
+#include "io/point_reader.hpp"
 #include "picking.hpp"
 #include "platform/platform.hpp"
 #include "scene/palette.hpp"
@@ -107,7 +109,12 @@ bool Viewer::save_points(const std::string& path) {
     message_ = "only 2D samples are saved as points";
     return false;
   }
+  if (io::extension_of(path) != ".xy") {
+    message_ = "error: the samples are saved as .xy text (x y per line): '" + path + "'";
+    return false;
+  }
   try {
+    io::check_destination(path);
     const auto& r = std::get<Reconstruction<2>>(*reconstruction_);
     const std::vector<Point<2>> samples =
         editor_.active()

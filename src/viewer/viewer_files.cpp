@@ -11,6 +11,7 @@
 
 #include "frontend/shots.hpp"
 #include "io/atomic_file.hpp"
+#include "io/destinations.hpp"
 #include "io/point_reader.hpp"
 #include "io/writers.hpp"
 #include "platform/platform.hpp"
@@ -38,6 +39,7 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
     message_ = "nothing to save yet";
     return false;
   }
+  if (!can_save_to(path)) return false;
   // The layers below are those of the stage on screen, even before a frame has drawn it.
   rebuild_scene();
   // The view on screen as a shot of the shown reconstruction, drawn by the figures' code into a
@@ -98,6 +100,7 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
 
 bool Viewer::save_camera(const std::string& path) {
   try {
+    io::check_destination(path);
     io::Atomic_file file(path, false);
     file.stream() << render::to_json(camera_).dump(2) << '\n';
     file.commit();
@@ -133,6 +136,7 @@ bool Viewer::save_result(const std::string& path) {
     return false;
   }
   try {
+    io::check_destination(path);
     std::visit(
         [&](const auto& r) {
           constexpr int D = std::decay_t<decltype(r)>::dimension;
@@ -156,6 +160,16 @@ bool Viewer::save_result(const std::string& path) {
   platform::deliver_file(path);
   message_ = "saved " + path;
   return true;
+}
+
+bool Viewer::can_save_to(const std::string& path) {
+  try {
+    io::check_destination(path);  // not a folder, not a file this session opened
+    return true;
+  } catch (const std::exception& e) {
+    message_ = std::string("error: ") + e.what();
+    return false;
+  }
 }
 
 std::string Viewer::download_name(const std::string& extension) const {

@@ -7,6 +7,7 @@
 // clang-format on
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "picking.hpp"
@@ -43,7 +44,9 @@ void Viewer::handle_input(int width, int height) {
                     GLFW_KEY_BACKSPACE}) {
       // A lesson running takes the page keys (App): it goes on with Page Down.
       const bool lesson_key = key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_PAGE_UP;
-      if (ImGui::IsKeyPressed(key) && !(lesson_running_ && lesson_key)) on_key(key);
+      const int presses =
+          static_cast<int>(std::count(key_presses_.begin(), key_presses_.end(), key));
+      for (int i = 0; i < presses && !(lesson_running_ && lesson_key); ++i) on_key(key);
     }
   }
   if (io.WantCaptureMouse || !reconstruction_) return;

@@ -3,6 +3,7 @@
 // (?example=torus&method=paper&stage=poles), the command line on the desktop (sculpt-view
 // --example torus --method paper --stage poles). main.cpp reads both the same way.
 #include <cctype>
+#include <cstdio>
 #include <sstream>
 
 #include "platform/platform.hpp"
@@ -70,8 +71,15 @@ std::vector<std::pair<std::string, std::string>> Viewer::view_options(std::strin
 }
 
 std::string Viewer::link_to_view(std::string& why_not) const {
-  const auto options = view_options(why_not);
+  auto options = view_options(why_not);
   if (options.empty()) return "";
+  // The text size chosen for a projector goes with the view it was chosen for.
+  const float text_scale = ImGui::GetIO().FontGlobalScale;
+  if (text_scale != 1.0f) {
+    char scale[32];
+    std::snprintf(scale, sizeof scale, "%g", double(text_scale));
+    options.push_back({"text", scale});
+  }
   std::ostringstream text;
   if (platform::in_browser) {
     text << platform::page_address();
@@ -87,7 +95,10 @@ std::string Viewer::link_to_view(std::string& why_not) const {
       if (key == "kind") {
         text << " --" << value;
       } else {
-        text << " --" << (key == "sample" ? "pick-sample" : key) << ' ' << value;
+        const std::string option = key == "sample" ? "pick-sample"
+                                   : key == "text" ? "font-scale"
+                                                   : key;
+        text << " --" << option << ' ' << value;
       }
     }
   }

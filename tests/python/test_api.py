@@ -275,6 +275,21 @@ def test_writes_every_file_or_none(bumpy, tmp_path):
     assert not (tmp_path / "again.stl").exists()
 
 
+def test_write_never_replaces_a_file_read_points_read(tmp_path):
+    # A mesh read for its vertices and written back under its own name would lose its faces.
+    mesh = tmp_path / "sphere.off"
+    sculpt.write(sculpt.reconstruct(sculpt.example("bumpy")), str(mesh))
+    original = mesh.read_bytes()
+    points = sculpt.read_points(mesh)
+    result = sculpt.reconstruct(points)
+    for name in (mesh, tmp_path / "sub" / ".." / "sphere.off", tmp_path / "." / "sphere.off"):
+        (tmp_path / "sub").mkdir(exist_ok=True)
+        with pytest.raises(sculpt.InputError, match="never replaces an input"):
+            sculpt.write(result, name)
+    assert mesh.read_bytes() == original
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["sphere.off", "sub"]
+
+
 def test_a_method_without_a_solid_writes_none(sculpt_cli, tmp_path):
     cocone = sculpt.reconstruct(sculpt.example("bumpy"), method="cocone")
     with pytest.raises(sculpt.InputError) as raised:
