@@ -59,6 +59,13 @@ TEST(Bad_input, DegenerateSets) {
             std::string::npos);
   EXPECT_NE(refusal<3>({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}}).find("coplanar"),
             std::string::npos);
+  // One point given again and again is named as such, not as a plane or a line.
+  const std::vector<Point<3>> same(10, Point<3>{0.5, 2, -1});
+  EXPECT_NE(refusal<3>(same).find("all 10 points are the same point (0.5, 2, -1)"),
+            std::string::npos)
+      << refusal<3>(same);
+  EXPECT_NE(refusal<2>(std::vector<Point<2>>(5, Point<2>{1, 1})).find("all 5 points are the same"),
+            std::string::npos);
 }
 
 TEST(Bad_input, Options) {

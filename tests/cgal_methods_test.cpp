@@ -72,6 +72,32 @@ TEST(CgalMethods, TheAlphaShapeIsOneSolidHoldingEverySample) {
   testing::expect_every_stage_builds(result);
 }
 
+// CGAL's structures list simplices in an order that follows memory addresses; the results are
+// put in one order (each simplex from its smallest vertex, orientation kept; the list sorted), so
+// that a run writes the same bytes whatever ran before it in the process.
+TEST(CgalMethods, TheirTrianglesAndCellsComeInOneOrder) {
+  const auto samples = shapes::torus(3000);
+  for (const Method method : {Method::alpha_shape, Method::advancing_front}) {
+    SCOPED_TRACE(to_string(method));
+    Options options = testing::with_method(method);
+    options.keep_solid = true;
+    const auto first = reconstruct(samples, options);
+    ASSERT_FALSE(first.surface.empty());
+    EXPECT_TRUE(std::is_sorted(first.surface.begin(), first.surface.end()));
+    for (const auto& t : first.surface) ASSERT_TRUE(t[0] < t[1] && t[0] < t[2]);
+    EXPECT_TRUE(std::is_sorted(first.solid.begin(), first.solid.end()));
+    for (const auto& c : first.solid) ASSERT_TRUE(c[0] < c[1] && c[0] < c[2] && c[0] < c[3]);
+    if (method == Method::advancing_front) {
+      EXPECT_TRUE(testing::consistently_oriented_closed(first.surface)) << "orientation kept";
+    }
+    // Other work in between (other allocations), then the same points: the same lists.
+    reconstruct(shapes::sphere(5000), testing::with_method(Method::alpha_shape));
+    const auto again = reconstruct(samples, options);
+    EXPECT_EQ(again.surface, first.surface);
+    EXPECT_EQ(again.solid, first.solid);
+  }
+}
+
 TEST(CgalMethods, TheAlphaShapeTakesTheRadiusItIsGiven) {
   const auto samples = shapes::torso(8000);
   Options options = testing::with_method(Method::alpha_shape);

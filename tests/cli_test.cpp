@@ -434,5 +434,53 @@ TEST(Cli, VersionAndHelp) {
   EXPECT_NE(help.out.find("--box-factor"), std::string::npos);
 }
 
+// A shots file with a field of the wrong type, or a number out of its range, is refused in one
+// line naming the shot, the key and what it takes: not the JSON library's internal error, and
+// not a number wrapped into a negative one.
+TEST(Cli, ShotFieldsOfTheWrongKindAreNamed) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"step": 1e300})", R"(shot 1: "step" takes a whole number from -1 to)"},
+      {R"({"step": 2.5})", R"(shot 1: "step" takes a whole number)"},
+      {R"({"size": 640})", R"(shot 1: "size" takes text in quotes, not 640)"},
+      {R"({"layers": "samples"})", R"(shot 1: "layers" takes a list of names in quotes)"},
+      {R"({"wireframe": "yes"})", R"(shot 1: "wireframe" takes true or false)"},
+      {R"({"ball_every": 0})", R"(shot 1: "ball_every" takes a whole number from 1 to)"},
+      {R"(42)", "shot 1 is not a JSON object"}};
+  for (const auto& [fields, says] : cases) {
+    SCOPED_TRACE(fields);
+    std::string shot = fields;
+    if (shot.front() == '{') {
+      shot = R"({"example": "star", "output": ")" + output_path("never.png") + "\", " +
+             fields.substr(1);
+    }
+    const auto file = write_file("typed-shots.json", R"({"shots": [)" + shot + "]}");
+    const Command_result run = run_sculpt("render --shots " + file);
+    EXPECT_EQ(run.exit_code, 1) << run.err;
+    EXPECT_NE(run.err.find(says), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_EQ(run.err.find("json.exception"), std::string::npos) << run.err;
+  }
+}
+
+// A value with something after it, a flag for another kind of input, or two ways of naming the
+// output: each refused in one line, nothing written.
+TEST(Cli, WhatDoesNotApplyIsRefused) {
+  const auto picture = output_path("refused.png");
+  const auto shots = write_file("empty-shots.json", R"({"shots": []})");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"render --example star -o " + picture + " --size 64x64garbage", "WIDTHxHEIGHT"},
+      {"render --example star -o " + picture + " --clip 0.5,0,90", "2D curve"},
+      {"reconstruct --example star -o " + output_path("s.svg") + " --seed-sample -2", "-2"},
+      {"render --shots " + shots + " -o " + picture, "excludes"}};
+  for (const auto& [arguments, says] : cases) {
+    SCOPED_TRACE(arguments);
+    const Command_result run = run_sculpt(arguments);
+    EXPECT_NE(run.exit_code, 0);
+    EXPECT_NE(run.err.find(says), std::string::npos) << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+    EXPECT_FALSE(std::filesystem::exists(picture));
+  }
+}
+
 }  // namespace
 }  // namespace sculpt

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -129,6 +130,8 @@ TEST(Viewer, AMalformedScriptCommandIsOneLineAndAFailureNotACrash) {
       {"export", "needs a PNG path"},
       {"export e.png 12xy", "WIDTHxHEIGHT"},
       {"screenshot", "needs a PNG path"},
+      {"screenshot shot.bmp", "must end in .png"},
+      {"save-points star.png", "saved as .xy text"},
       {"animation maybe", "on or off"},
       {"figure fig99", "no figure 'fig99'"},
       {"stage nowhere", "no stage 'nowhere'"},
@@ -158,6 +161,44 @@ TEST(Viewer, AMalformedScriptCommandIsOneLineAndAFailureNotACrash) {
   }
   EXPECT_EQ(complaints, commands.size()) << log;
   EXPECT_EQ(render::read_png(picture).width, 64);
+}
+
+// What did not happen is a failure: a file that could not be opened behind an older result, a
+// script that is a folder or binary, a save over the file the viewer opened.
+TEST(Viewer, FailuresAreFailures) {
+  EXPECT_EQ(
+      run_viewer_script("open-bad", "example star\nwait\nopen /nonexistent/p.xy\nwait\nquit\n"), 1);
+  EXPECT_NE(testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/open-bad.log")
+                .find("no reconstruction"),
+            std::string::npos);
+
+  const std::string input = testing::write_file("viewer-input.xy", [] {
+    std::string text;
+    for (int i = 0; i < 40; ++i)
+      text +=
+          std::to_string(std::cos(0.157 * i)) + " " + std::to_string(std::sin(0.157 * i)) + "\n";
+    return text;
+  }());
+  const std::string before = testing::read_file(input);
+  EXPECT_EQ(run_viewer_script("save-over-input", "open " + input + "\nwait\nsave-points " + input +
+                                                     "\nsave-result " + input + "\nquit\n"),
+            1);
+  EXPECT_EQ(testing::read_file(input), before) << "the input is intact";
+  EXPECT_NE(testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/save-over-input.log")
+                .find("never replaces an input"),
+            std::string::npos);
+
+  const std::string folder = std::string(SCULPT_TEST_OUTPUT) + "/a-script-folder";
+  std::filesystem::create_directories(folder);
+  const std::string binary = testing::write_file("binary.script", std::string("wait\0\x01\x02", 7));
+  for (const std::string& script : {folder, binary}) {
+    const std::string log = testing::output_path("bad-script.log");
+    EXPECT_NE(run("xvfb-run -a " + std::string(SCULPT_VIEW_EXECUTABLE) + " --script " + script +
+                  " >" + log + " 2>&1"),
+              0)
+        << script;
+    EXPECT_NE(testing::read_file(log).find("script"), std::string::npos) << testing::read_file(log);
+  }
 }
 
 // A class flips between methods on the same points; each method's own stages can be shown.

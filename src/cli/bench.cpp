@@ -527,28 +527,49 @@ int run_bench(const Bench_arguments& given) {
   Bench_arguments args = given;
   const Subdivided_meshes subdivided(args.loop_subdivided);
   args.inputs.insert(args.inputs.end(), subdivided.paths.begin(), subdivided.paths.end());
+  const auto inputs = bench_inputs(args);
+  if (inputs.empty() && !args.edits && args.render_triangles <= 0) {
+    throw frontend::Usage_error(
+        "bench needs something to measure: a point file, --example or "
+        "--torus N (or --edits, --render-triangles N)");
+  }
   std::vector<nlohmann::json> rows;
-  for (const auto& [name, source] : bench_inputs(args)) {
+  for (const auto& [name, source] : inputs) {
     rows.push_back(measure_input(name, source, args));
     if (isatty(STDERR_FILENO)) {  // progress for a person watching; never in a log
       std::cerr << "sculpt bench: " << name << " done\n";
     }
   }
   print_rows(rows);
+  // A measurement that failed fails the benchmark (after the table and its JSON, which say which).
+  int failed = 0;
+  const auto count = [&](const nlohmann::json& measured) { failed += measured.contains("error"); };
+  for (const auto& row : rows) {
+    count(row["delaunay_only"]);
+    for (const auto& [method, measured] : row["methods"].items()) count(measured);
+    if (row.contains("advancing_front")) count(row["advancing_front"]);
+  }
   if (args.edits) {
     std::vector<nlohmann::json> edits;
     for (int n : {200, 1000, 5000})
       edits.push_back(run_job_process({"--job", "edit", "--torus", std::to_string(n)}));
+    for (const auto& edit : edits) count(edit);
     print_edits(edits);
   }
   if (args.render_triangles > 0) {
-    print_rendering(
-        run_job_process({"--job", "render", "--torus", std::to_string(args.render_triangles)}));
+    const nlohmann::json rendering =
+        run_job_process({"--job", "render", "--torus", std::to_string(args.render_triangles)});
+    count(rendering);
+    print_rendering(rendering);
   }
   if (!args.json.empty()) {
     io::Atomic_file file(args.json, false);
     file.stream() << nlohmann::json(rows).dump(2) << '\n';
     file.commit();
+  }
+  if (failed > 0) {
+    throw io::Error(fmt::format("{} measurement{} failed (the table says which)", failed,
+                                failed == 1 ? "" : "s"));
   }
   return 0;
 }

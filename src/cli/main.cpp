@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <iostream>
+#include <limits>
 
 #include "bench.hpp"
 #include "compare.hpp"
@@ -243,8 +244,10 @@ int main(int argc, char** argv) {
                    "skin or extraction")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
-  reconstruct->add_option("--seed-sample", args.seed_sample,
-                          "Bordered: seed with the convex pole of this sample");
+  reconstruct
+      ->add_option("--seed-sample", args.seed_sample,
+                   "Bordered: seed with the convex pole of this sample (-1: chosen)")
+      ->check(CLI::Range(-1, std::numeric_limits<int>::max()));
   reconstruct
       ->add_option("--dim", args.dimension,
                    "Force 2 or 3 dimensions (2 drops a constant coordinate)")

@@ -90,10 +90,12 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->add_option("--frame-ms", shot.frame_ms,
                    "How long each picture shows, in ms (0: 80 a replay's, 1200 a stage's)")
       ->check(CLI::Range(0, 60000));
-  render->add_option("-o,--output", shot.output, "PNG file");
-  render->add_option("--shots", args.shots_file,
-                     "Render a list of shots in one process: JSON {\"shots\": [{\"example\": "
-                     "\"star\", \"stage\": \"poles\", \"output\": \"a.png\", ...}]}");
+  auto* output = render->add_option("-o,--output", shot.output, "PNG file");
+  render
+      ->add_option("--shots", args.shots_file,
+                   "Render a list of shots in one process: JSON {\"shots\": [{\"example\": "
+                   "\"star\", \"stage\": \"poles\", \"output\": \"a.png\", ...}]}")
+      ->excludes(output);  // each shot names its own output
 }
 
 namespace {
@@ -139,7 +141,7 @@ int run_render(const Render_arguments& args) {
   std::vector<Shot> shots;
   std::vector<const nlohmann::json*> cameras;
   for (const auto& entry : list["shots"]) {
-    shots.push_back(frontend::shot_from_json(entry));
+    shots.push_back(frontend::shot_from_json(entry, "shot " + std::to_string(shots.size() + 1)));
     cameras.push_back(entry.contains("camera") ? &entry["camera"] : nullptr);
   }
   render_all(renderer, shots, cameras, args.shots_file);

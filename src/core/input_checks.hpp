@@ -100,7 +100,12 @@ void check_input(const std::vector<Point<Traits::dimension>>& samples, const Opt
   std::vector<typename Traits::Cgal_point> points;
   points.reserve(samples.size());
   for (const auto& p : samples) points.push_back(Traits::to_cgal(p));
-  if (affine_dimension<Traits>(points) < D) {
+  const int spanned = affine_dimension<Traits>(points);
+  if (spanned == 0) {
+    throw Input_error("all " + std::to_string(samples.size()) + " points are the same point " +
+                      describe_point<D>(samples.front()) + ": there is nothing to reconstruct");
+  }
+  if (spanned < D) {
     throw Input_error(D == 2 ? "all points are collinear: there is no curve to reconstruct"
                              : "all points are coplanar: there is no surface to reconstruct "
                                "(a planar curve needs --dim 2)");

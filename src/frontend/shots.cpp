@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <type_traits>
@@ -36,8 +38,8 @@ std::pair<int, int> parse_size(const std::string& size) {
   int width = 0, height = 0;
   char x = 0;
   std::istringstream in(size);
-  if (!(in >> width >> x >> height) || x != 'x' || width <= 0 || height <= 0 ||
-      width > render::max_image_side || height > render::max_image_side) {
+  if (!(in >> width >> x >> height) || x != 'x' || !(in >> std::ws).eof() || width <= 0 ||
+      height <= 0 || width > render::max_image_side || height > render::max_image_side) {
     throw io::Error("the size must be WIDTHxHEIGHT, each from 1 to " +
                     std::to_string(render::max_image_side) + " pixels, e.g. 800x600: '" + size +
                     "'");
@@ -55,41 +57,118 @@ nlohmann::json read_json(const std::string& path) {
   }
 }
 
-Shot shot_from_json(const nlohmann::json& j) {
+namespace {
+
+// A shot's fields read with the type each must have: a wrong type, or a number out of the
+// field's range, is one line naming the shot, the key and what it takes; never the JSON
+// library's own error, and never a number wrapped into another.
+class Shot_fields {
+ public:
+  Shot_fields(const nlohmann::json& json, std::string name) : json_(json), name_(std::move(name)) {
+    if (!json.is_object()) throw io::Error(name_ + " is not a JSON object of fields");
+  }
+
+  std::string text(const char* key, const std::string& fallback) const {
+    const auto* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_string()) refuse(key, "text in quotes", *value);
+    return value->get<std::string>();
+  }
+  bool flag(const char* key, bool fallback) const {
+    const auto* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_boolean()) refuse(key, "true or false", *value);
+    return value->get<bool>();
+  }
+  long whole(const char* key, long fallback, long lowest, long highest) const {
+    const auto* value = find(key);
+    if (!value) return fallback;
+    const std::string range =
+        "a whole number from " + std::to_string(lowest) + " to " + std::to_string(highest);
+    // JSON reads 7 as unsigned and -7 as signed; 1e300 and 2.5 are not whole numbers.
+    if (value->is_number_unsigned()) {
+      const auto number = value->get<std::uint64_t>();
+      if (number <= static_cast<std::uint64_t>(highest) && static_cast<long>(number) >= lowest)
+        return static_cast<long>(number);
+    } else if (value->is_number_integer()) {
+      const auto number = value->get<std::int64_t>();
+      if (number >= lowest && number <= highest) return static_cast<long>(number);
+    }
+    refuse(key, range, *value);
+  }
+  double number(const char* key, double fallback) const {
+    const auto* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_number()) refuse(key, "a number", *value);
+    return value->get<double>();
+  }
+  std::vector<std::string> texts(const char* key) const {
+    const auto* value = find(key);
+    if (!value) return {};
+    if (!value->is_array()) refuse(key, "a list of names in quotes", *value);
+    std::vector<std::string> texts;
+    for (const auto& item : *value) {
+      if (!item.is_string()) refuse(key, "a list of names in quotes", *value);
+      texts.push_back(item.get<std::string>());
+    }
+    return texts;
+  }
+
+ private:
+  const nlohmann::json* find(const char* key) const {
+    const auto found = json_.find(key);
+    return found == json_.end() || found->is_null() ? nullptr : &*found;
+  }
+  [[noreturn]] void refuse(const char* key, const std::string& takes,
+                           const nlohmann::json& value) const {
+    std::string shown = value.dump();
+    if (shown.size() > 60) shown = shown.substr(0, 57) + "...";
+    throw io::Error(name_ + ": \"" + key + "\" takes " + takes + ", not " + shown);
+  }
+
+  const nlohmann::json& json_;
+  std::string name_;
+};
+
+}  // namespace
+
+Shot shot_from_json(const nlohmann::json& j, const std::string& name) {
+  const Shot_fields f(j, name);
+  constexpr long most = std::numeric_limits<int>::max();
   Shot shot;
-  shot.input = j.value("input", "");
-  shot.example = j.value("example", "");
-  shot.bordered = j.value("bordered", false);
-  shot.closed = j.value("closed", false);
-  shot.dimension = j.value("dimension", 0);
-  shot.stage = j.value("stage", shot.stage);
-  shot.step = j.value("step", -1L);
-  shot.focus_sample = j.value("focus_sample", -1);
-  shot.focus_pole = j.value("focus_pole", -1);
-  shot.method = j.value("method", shot.method);
-  shot.box_factor = j.value("box_factor", shot.box_factor);
-  shot.alpha = j.value("alpha", shot.alpha);
-  shot.merge_duplicates = j.value("merge_duplicates", false);
-  shot.rule = j.value("rule", shot.rule);
-  shot.layers = j.value("layers", std::vector<std::string>{});
-  shot.clip = j.value("clip", "");
-  shot.camera_file = j.value("camera_file", "");
-  shot.save_camera = j.value("save_camera", "");
-  shot.size = j.value("size", shot.size);
-  shot.wireframe = j.value("wireframe", false);
-  shot.smooth = j.value("smooth", false);
-  shot.no_legend = !j.value("legend", true);
-  shot.zoom = j.value("zoom", shot.zoom);
-  shot.ball_every = j.value("ball_every", 1);
-  shot.polar_balls = j.value("polar_balls", false);
-  shot.neighbourhood = j.value("neighbourhood", false);
-  shot.yaw = j.value("yaw", shot.yaw);
-  shot.pitch = j.value("pitch", shot.pitch);
-  shot.title = j.value("title", "");
-  shot.animate = j.value("animate", "");
-  shot.frames = j.value("frames", shot.frames);
-  shot.frame_ms = j.value("frame_ms", shot.frame_ms);
-  shot.output = j.value("output", "");
+  shot.input = f.text("input", "");
+  shot.example = f.text("example", "");
+  shot.bordered = f.flag("bordered", false);
+  shot.closed = f.flag("closed", false);
+  shot.dimension = static_cast<int>(f.whole("dimension", 0, 0, 3));
+  shot.stage = f.text("stage", shot.stage);
+  shot.step = f.whole("step", -1, -1, most);
+  shot.focus_sample = static_cast<int>(f.whole("focus_sample", -1, -1, most));
+  shot.focus_pole = static_cast<int>(f.whole("focus_pole", -1, -1, most));
+  shot.method = f.text("method", shot.method);
+  shot.box_factor = f.number("box_factor", shot.box_factor);
+  shot.alpha = f.number("alpha", shot.alpha);
+  shot.merge_duplicates = f.flag("merge_duplicates", false);
+  shot.rule = f.text("rule", shot.rule);
+  shot.layers = f.texts("layers");
+  shot.clip = f.text("clip", "");
+  shot.camera_file = f.text("camera_file", "");
+  shot.save_camera = f.text("save_camera", "");
+  shot.size = f.text("size", shot.size);
+  shot.wireframe = f.flag("wireframe", false);
+  shot.smooth = f.flag("smooth", false);
+  shot.no_legend = !f.flag("legend", true);
+  shot.zoom = f.number("zoom", shot.zoom);
+  shot.ball_every = static_cast<int>(f.whole("ball_every", 1, 1, most));
+  shot.polar_balls = f.flag("polar_balls", false);
+  shot.neighbourhood = f.flag("neighbourhood", false);
+  shot.yaw = f.number("yaw", shot.yaw);
+  shot.pitch = f.number("pitch", shot.pitch);
+  shot.title = f.text("title", "");
+  shot.animate = f.text("animate", "");
+  shot.frames = static_cast<int>(f.whole("frames", shot.frames, 0, most));
+  shot.frame_ms = static_cast<int>(f.whole("frame_ms", shot.frame_ms, 0, most));
+  shot.output = f.text("output", "");
   return shot;
 }
 
@@ -151,6 +230,9 @@ Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* inline_camera) {
   const scene::Request request = request_of(shot);
   const auto [width, height] = parse_size(shot.size);
+  if (request.clipped && reconstruction.index() == 0) {
+    throw io::Error("a clip cuts a 3D scene open; this reconstruction is a 2D curve");
+  }
 
   Picture picture;
   try {

@@ -29,7 +29,7 @@ nlohmann::json read_json(const std::string& path);
 std::string output_format_problem(const Shot& shot);
 
 // Reads a shot's fields from JSON (the names of Shot's members; "legend": false for no legend).
-Shot shot_from_json(const nlohmann::json& json);
+Shot shot_from_json(const nlohmann::json& json, const std::string& name = "the shot");
 
 // A picture of a stage of a reconstruction as a shot describes it (the shot's input, method and
 // output are not read): the scene drawn, the camera, the image.

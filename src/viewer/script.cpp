@@ -2,6 +2,7 @@
 #include "script.hpp"
 
 #include "figures/paper_figures.hpp"
+#include "io/point_reader.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -9,6 +10,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -89,11 +91,22 @@ void Script::fail(const std::string& why) {
 }
 
 Script Script::from_file(const std::string& path) {
-  std::ifstream in(path);
+  // A script is a short text: a folder, a binary file or an endless device is refused at once,
+  // not read until memory runs out or taken for an empty script.
+  constexpr std::size_t longest_script = 1 << 20;
+  if (std::filesystem::is_directory(path))
+    throw std::runtime_error("the script '" + path + "' is a folder");
+  std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error("cannot open the script '" + path + "'");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return from_text(text.str());
+  std::string text(longest_script + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  if (in.bad()) throw std::runtime_error("cannot read the script '" + path + "'");
+  if (text.size() > longest_script)
+    throw std::runtime_error("the script '" + path + "' is longer than 1 MiB: not a script");
+  if (text.find('\0') != std::string::npos)
+    throw std::runtime_error("the script '" + path + "' is binary, not text");
+  return from_text(text);
 }
 
 Script Script::from_text(const std::string& text, Mode mode) {
@@ -156,7 +169,8 @@ std::string Script::before_frame(Viewer& viewer) {
     if (command == "wait" || command == "wait-idle") {
       if (viewer.busy()) return "";  // ask again next frame
       commands_.pop_front();
-      if (command == "wait" && !viewer.has_reconstruction()) {
+      // The reconstruction asked for must have come: an older one still on screen is not it.
+      if (command == "wait" && (!viewer.has_reconstruction() || viewer.last_job_failed())) {
         fail("no reconstruction: " + viewer.message());
       }
       continue;
@@ -316,7 +330,13 @@ std::string Script::before_frame(Viewer& viewer) {
         return "";
       }
     } else if (command == "screenshot") {
-      if (needs_argument("a PNG path")) return argument;
+      if (!needs_argument("a PNG path")) continue;
+      // Written as the extension says, or refused: never PNG bytes under another name.
+      if (io::extension_of(argument) != ".png") {
+        fail("'" + line + "': a screenshot is a PNG image: the path must end in .png");
+        continue;
+      }
+      return argument;
     } else if (command == "export") {
       if (!needs_argument("a PNG path")) continue;
       const auto size = extra.empty() ? std::pair<int, int>(800, 600) : picture_size(extra);

@@ -107,6 +107,7 @@ void Viewer::take_finished_job() {
   if (!outcome) return;
   if (!outcome->error.empty()) {
     message_ = outcome->error == "cancelled" ? "cancelled" : "error: " + outcome->error;
+    last_job_failed_ = outcome->error != "cancelled";
     // A panel whose reconstruction did not come cannot be shown: the tour ends there.
     if (panel_pending_) close_tour();
     return;
@@ -129,6 +130,7 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
                                               (shown_request_.path == last_request_.path &&
                                                shown_request_.example == last_request_.example));
   reconstruction_ = std::move(reconstruction);
+  last_job_failed_ = false;
   description_ = std::move(description);
   shown_request_ = last_request_;
   if (!shown_request_.edited_points) {

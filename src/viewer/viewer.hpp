@@ -135,6 +135,8 @@ class Viewer {
   bool reconstructing() const { return job_->running(); }
   const std::string& message() const { return message_; }
   bool has_reconstruction() const { return reconstruction_ != nullptr; }
+  // Whether the last reconstruction asked for failed (a bad file): what is shown is older.
+  bool last_job_failed() const { return last_job_failed_; }
   // The shown reconstruction's dimension (0 before any), whether its method has a replay of the
   // labelling, and the picked sample (-1: none).
   int shown_dimension() const;
@@ -329,6 +331,7 @@ class Viewer {
   int picture_size_[2] = {1600, 1200};
   bool show_help_ = false;
   bool lesson_running_ = false;
+  bool last_job_failed_ = false;
   std::vector<int> key_presses_;
   bool quit_ = false;
   int frame_width_ = 0, frame_height_ = 0;

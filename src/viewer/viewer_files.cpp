@@ -60,7 +60,7 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
     shot.animate = animate;
     shot.frames = frames;
   }
-  if (request_.clipped) {
+  if (request_.clipped && reconstruction_->index() == 1) {  // a cut-away is for 3D scenes
     const scene::Clip& c = request_.clip;
     std::ostringstream clip;
     clip << c.position << ',' << c.azimuth << ',' << c.elevation << ',' << c.slab;

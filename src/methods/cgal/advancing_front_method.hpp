@@ -16,6 +16,7 @@
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
+#include "../../core/canonical_order.hpp"
 #include "../../core/stage_clock.hpp"
 #include "outward_orientation.hpp"
 
@@ -27,6 +28,7 @@ inline void run_advancing_front_method(Reconstruction<3>& result, Stage_clock& c
   const auto n = static_cast<std::ptrdiff_t>(result.sample_count());
   result.surface = cgal_advancing_front({result.sites.begin(), result.sites.begin() + n});
   orient_outward(result.sites, result.surface);
+  put_in_canonical_order(result.surface);
 }
 
 }  // namespace sculpt

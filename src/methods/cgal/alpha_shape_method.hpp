@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/canonical_order.hpp"
 #include "../../core/stage_clock.hpp"
 #include "optimal_alpha.hpp"
 #include "outward_orientation.hpp"
@@ -85,6 +86,8 @@ void run_alpha_shape_method(Reconstruction<3>& result, Stage_clock& clock) {
     }
     result.surface.push_back(triangle);
   }
+  put_in_canonical_order(result.surface);
+  put_in_canonical_order(result.solid);
   if (!result.options.keep_solid) result.solid.clear();
 }
 
