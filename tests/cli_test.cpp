@@ -380,9 +380,9 @@ TEST(Cli, RenderMergesRepeatedPointsWhenTold) {
   EXPECT_EQ(refused.exit_code, 1);
   EXPECT_NE(refused.err.find("--merge-duplicates"), std::string::npos) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(picture));
-  EXPECT_EQ(
-      run_sculpt("render " + scan + " --merge-duplicates --stage samples -o " + picture).exit_code,
-      0);
+  const Command_result merged =
+      run_sculpt("render " + scan + " --merge-duplicates --stage samples -o " + picture);
+  EXPECT_EQ(merged.exit_code, 0) << merged.err;
   EXPECT_TRUE(std::filesystem::exists(picture));
 }
 

@@ -17,6 +17,14 @@ inline std::string output_path(const std::string& name) {
   return path;
 }
 
+// An empty folder below the test output, made afresh for one test.
+inline std::filesystem::path fresh_folder(const std::string& relative) {
+  const std::filesystem::path path = std::filesystem::path(SCULPT_TEST_OUTPUT) / relative;
+  std::filesystem::remove_all(path);
+  std::filesystem::create_directories(path);
+  return path;
+}
+
 inline std::string write_file(const std::string& name, const std::string& content) {
   const std::string path = output_path(name);
   std::ofstream(path, std::ios::binary) << content;

@@ -23,10 +23,7 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string folder(const std::string& name) {
-  const fs::path path = fs::path(SCULPT_TEST_OUTPUT) / "hostile" / name;
-  fs::remove_all(path);
-  fs::create_directories(path);
-  return path.string();
+  return testing::fresh_folder("hostile/" + name).string();
 }
 
 struct Command_run {

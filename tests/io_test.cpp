@@ -211,6 +211,29 @@ TEST(Point_reader, NumbersInEverySpellingAndSeparator) {
       << "a word strtod would half-read is not a number";
 }
 
+// A decimal comma, as European spreadsheets write numbers, is named: read as a separator it
+// would make two numbers of one and shift every coordinate after it, silently.
+TEST(Point_reader, DecimalCommasAreNamedNotMisread) {
+  for (const auto& [text, extension] : std::vector<std::pair<std::string, std::string>>{
+           {"x;y;z\n1,5;2,25;3,0\n0,5;1,0;2,0\n", ".csv"},
+           {"1,5 2,25 3,0\n0,5 1,0 2,0\n", ".xyz"},
+           {"1,5\t2\t3\n", ".txt"}}) {
+    SCOPED_TRACE(text);
+    try {
+      io::read_points_from_memory(text, extension);
+      ADD_FAILURE() << "accepted";
+    } catch (const io::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("decimal comma"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("'1,5'"), std::string::npos) << e.what();
+    }
+  }
+  // Commas that part the fields stay separators.
+  const std::vector<Point<3>> expected = {{1, 2, 3}, {4, 5, 6}};
+  EXPECT_EQ(io::read_points_from_memory("1,2,3\n4,5,6\n", ".csv").points, expected);
+  EXPECT_EQ(io::read_points_from_memory("1, 2, 3\n4, 5, 6\n", ".csv").points, expected);
+  EXPECT_EQ(io::read_points_from_memory("1,2,3 # a,b c\n4;5;6\n", ".csv").points, expected);
+}
+
 TEST(Point_reader, LineEndsByteOrderMarksAndLastLinesWithoutNewline) {
   const std::vector<Point<3>> tetra = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   for (const std::string end : {"\n", "\r\n", "\r"}) {  // Unix, Windows, old Mac

@@ -27,10 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path fresh_folder(const std::string& name) {
-  const fs::path path = fs::path(SCULPT_TEST_OUTPUT) / "output-safety" / name;
-  fs::remove_all(path);
-  fs::create_directories(path);
-  return path;
+  return testing::fresh_folder("output-safety/" + name);
 }
 
 std::vector<std::string> names_in(const fs::path& folder) {

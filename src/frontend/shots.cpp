@@ -317,14 +317,24 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
                         const Any_reconstruction& shown, const nlohmann::json* inline_camera) {
   check_shot(shot);
   if (!shot.animate.empty()) {
-    std::vector<render::Image> images;
+    const int milliseconds = shot.frame_ms > 0          ? shot.frame_ms
+                             : shot.animate == "replay" ? 80
+                                                        : 1200;
+    const auto [width, height] = parse_size(shot.size);
+    // Each picture encoded as it is drawn: memory holds the compressed frames, not the pictures
+    // (2,000 frames of 8192x8192 would be 500 GB).
+    std::optional<render::Animation_writer> animation;
+    try {
+      animation.emplace(width, height, milliseconds);
+    } catch (const std::runtime_error& e) {
+      throw io::Error(e.what());
+    }
     scene::Scene last;
     // The replay follows the pole just labelled, as the viewer does (render::follow_point),
     // from the first picture's camera.
     std::optional<render::Camera> camera;
     glm::vec3 lower{}, upper{};  // the samples' box
     bool framed_far = false;     // the camera frames a far pole with the shape
-    const auto [width, height] = parse_size(shot.size);
     for (const Shot& frame : animation_frames(shot, shown)) {
       nlohmann::json followed;
       if (camera && shot.animate == "replay" && frame.step > 0) {
@@ -347,14 +357,15 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
         lower = render::to_glm(picture.scene.lower);
         upper = render::to_glm(picture.scene.upper);
       }
-      images.push_back(std::move(picture.image));
+      try {
+        animation->add(picture.image);
+      } catch (const std::runtime_error& e) {
+        throw io::Error(e.what());
+      }
       last = std::move(picture.scene);
     }
-    const int milliseconds = shot.frame_ms > 0          ? shot.frame_ms
-                             : shot.animate == "replay" ? 80
-                                                        : 1200;
     try {
-      render::write_animation(shot.output, images, milliseconds);
+      animation->write(shot.output);
     } catch (const std::runtime_error& e) {
       throw io::Error(e.what());
     }

@@ -12,54 +12,70 @@
 
 namespace sculpt::render {
 
-void write_animation(const std::string& path, const std::vector<Image>& frames, int milliseconds) {
-  if (frames.empty()) throw std::runtime_error("an animation needs at least one frame");
+Animation_writer::Animation_writer(int width, int height, int milliseconds)
+    : width_(width), height_(height), milliseconds_(milliseconds), encoder_(nullptr) {
   if (milliseconds <= 0)
     throw std::runtime_error("each picture of an animation shows for 1 ms or more");
-  const int width = frames.front().width, height = frames.front().height;
-  WebPAnimEncoderOptions encoder_options;
-  if (!WebPAnimEncoderOptionsInit(&encoder_options))
+  WebPAnimEncoderOptions options;
+  if (!WebPAnimEncoderOptionsInit(&options))
     throw std::runtime_error("the WebP library does not match its headers");
-  encoder_options.anim_params.loop_count = 0;  // forever
-  std::unique_ptr<WebPAnimEncoder, void (*)(WebPAnimEncoder*)> encoder(
-      WebPAnimEncoderNew(width, height, &encoder_options), WebPAnimEncoderDelete);
+  options.anim_params.loop_count = 0;  // forever
+  encoder_ = WebPAnimEncoderNew(width, height, &options);
+  if (!encoder_) throw std::runtime_error("cannot start a WebP encoder");
+}
+
+Animation_writer::~Animation_writer() {
+  WebPAnimEncoderDelete(encoder_);
+}
+
+void Animation_writer::add(const Image& frame) {
+  if (frame.width != width_ || frame.height != height_)
+    throw std::runtime_error("the frames of an animation must be of one size");
+  if (timestamp_ > std::numeric_limits<int>::max() - 4LL * milliseconds_)
+    throw std::runtime_error("an animation cannot last that long");
   WebPConfig config;
-  if (!encoder || !WebPConfigInit(&config)) throw std::runtime_error("cannot start a WebP encoder");
+  if (!WebPConfigInit(&config)) throw std::runtime_error("cannot start a WebP encoder");
   config.lossless = 1;
   config.quality = 50;  // lossless: effort, not loss
   config.method = 2;
-
-  long long timestamp = 0;
-  for (std::size_t i = 0; i < frames.size(); ++i) {
-    const Image& frame = frames[i];
-    if (frame.width != width || frame.height != height)
-      throw std::runtime_error("the frames of an animation must be of one size");
-    WebPPicture picture;
-    if (!WebPPictureInit(&picture)) throw std::runtime_error("cannot make a WebP picture");
-    picture.use_argb = 1;
-    picture.width = width;
-    picture.height = height;
-    std::unique_ptr<WebPPicture, void (*)(WebPPicture*)> owned(&picture, WebPPictureFree);
-    if (timestamp > std::numeric_limits<int>::max() - 4LL * milliseconds)
-      throw std::runtime_error("an animation cannot last that long");
-    if (!WebPPictureImportRGBA(&picture, frame.rgba.data(), 4 * width) ||
-        !WebPAnimEncoderAdd(encoder.get(), &picture, int(timestamp), &config)) {
-      throw std::runtime_error("WebP encoding failed at frame " + std::to_string(i + 1));
-    }
-    timestamp += i + 1 == frames.size() ? 3 * milliseconds : milliseconds;
+  WebPPicture picture;
+  if (!WebPPictureInit(&picture)) throw std::runtime_error("cannot make a WebP picture");
+  picture.use_argb = 1;
+  picture.width = width_;
+  picture.height = height_;
+  std::unique_ptr<WebPPicture, void (*)(WebPPicture*)> owned(&picture, WebPPictureFree);
+  if (!WebPPictureImportRGBA(&picture, frame.rgba.data(), 4 * width_) ||
+      !WebPAnimEncoderAdd(encoder_, &picture, int(timestamp_), &config)) {
+    throw std::runtime_error("WebP encoding failed at frame " + std::to_string(frames_ + 1));
   }
+  ++frames_;
+  last_start_ = timestamp_;
+  timestamp_ += milliseconds_;
+}
+
+void Animation_writer::write(const std::string& path) {
+  if (frames_ == 0) throw std::runtime_error("an animation needs at least one frame");
   WebPData data;
   WebPDataInit(&data);
   // Freed on every path, a failed assembly's part included.
   std::unique_ptr<WebPData, void (*)(WebPData*)> bytes(&data, WebPDataClear);
-  if (!WebPAnimEncoderAdd(encoder.get(), nullptr, int(timestamp), nullptr) ||
-      !WebPAnimEncoderAssemble(encoder.get(), &data)) {
+  // The last picture is held three times as long: the end comes 3 intervals after it starts.
+  const long long end = last_start_ + 3LL * milliseconds_;
+  if (!WebPAnimEncoderAdd(encoder_, nullptr, int(end), nullptr) ||
+      !WebPAnimEncoderAssemble(encoder_, &data)) {
     throw std::runtime_error("WebP encoding failed: " +
-                             std::string(WebPAnimEncoderGetError(encoder.get())));
+                             std::string(WebPAnimEncoderGetError(encoder_)));
   }
   io::Atomic_file file(path, true);
   file.stream().write(reinterpret_cast<const char*>(data.bytes), std::streamsize(data.size));
   file.commit();
+}
+
+void write_animation(const std::string& path, const std::vector<Image>& frames, int milliseconds) {
+  if (frames.empty()) throw std::runtime_error("an animation needs at least one frame");
+  Animation_writer writer(frames.front().width, frames.front().height, milliseconds);
+  for (const Image& frame : frames) writer.add(frame);
+  writer.write(path);
 }
 
 }  // namespace sculpt::render

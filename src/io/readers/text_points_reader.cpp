@@ -2,7 +2,9 @@
 // Point lists as scanners and people write them: one point per line, numbers separated by
 // spaces, tabs, commas or semicolons; `#` comments; a leading `p` or `v` (Hoppe's .pts, OBJ-like
 // lists); an optional count on the first line; extra columns (normals, colours) ignored.
+#include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "formats.hpp"
 #include "io/io_error.hpp"
@@ -14,6 +16,35 @@ namespace {
 
 bool is_letter(char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+bool is_digit(char c) {
+  return c >= '0' && c <= '9';
+}
+
+// A number written with a decimal comma ("1,5") in a line whose fields are apart by spaces, tabs
+// or semicolons, as spreadsheets in much of Europe save them; empty if there is none. Taking
+// its comma for a separator would make two numbers of one and shift every coordinate after it.
+std::string_view decimal_comma_field(std::string_view line) {
+  line = line.substr(0, line.find('#'));
+  if (line.find(',') == std::string_view::npos) return {};
+  const std::size_t first = line.find_first_not_of(" \t\r;");
+  if (first == std::string_view::npos) return {};
+  line = line.substr(first, line.find_last_not_of(" \t\r;") + 1 - first);
+  if (line.find_first_of(" \t;") == std::string_view::npos) return {};  // commas part fields
+  std::size_t start = 0;
+  while (start < line.size()) {
+    const std::size_t end = std::min(line.find_first_of(" \t;\r", start), line.size());
+    const std::string_view field = line.substr(start, end - start);
+    // One number with one comma between digits; "1,2,3" is three numbers.
+    const std::size_t comma = field.find(',');
+    if (comma != std::string_view::npos && field.find(',', comma + 1) == std::string_view::npos &&
+        comma > 0 && comma + 1 < field.size() && is_digit(field[comma - 1]) &&
+        is_digit(field[comma + 1]))
+      return field;
+    start = end + 1;
+  }
+  return {};
 }
 
 }  // namespace
@@ -37,6 +68,11 @@ Point_set read_text_points(Byte_input& input, int forced_dimension) {
       // normals, a header of column names) are not.
       if (words[0] != "p" && words[0] != "v" && words[0] != "P" && words[0] != "V") continue;
       first = 1;
+    }
+    if (const auto field = decimal_comma_field(lines.line()); !field.empty()) {
+      throw Error(lines.where() + ": '" + printable(field) +
+                  "' is written with a decimal comma; Sculpt reads a decimal point (1.5, not "
+                  "1,5): replace the commas first, e.g. sed 's/,/./g'");
     }
     numbers.clear();
     for (std::size_t k = first; k < words.size(); ++k) {
