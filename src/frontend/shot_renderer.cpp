@@ -12,10 +12,7 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* camer
     throw io::Error("a shot needs an input file or an example (one of them)");
   }
   const Any_reconstruction& shown = reconstruction(shot);
-  // Before a renderer is made: a clip cuts 3D scenes only.
-  if (!shot.clip.empty() && shown.index() == 0) {
-    throw io::Error("a clip cuts a 3D scene open; this reconstruction is a 2D curve");
-  }
+  check_shot_applies(shot, shown);  // before a renderer is made
   if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
   return write_shot(*renderer_, shot, shown, camera);
 }

@@ -229,13 +229,17 @@ scene::Request request_of(const Shot& shot) {
   return request;
 }
 
+void check_shot_applies(const Shot& shot, const Any_reconstruction& reconstruction) {
+  if (!shot.clip.empty() && reconstruction.index() == 0) {
+    throw io::Error("a clip cuts a 3D scene open; this reconstruction is a 2D curve");
+  }
+}
+
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* inline_camera) {
   const scene::Request request = request_of(shot);
   const auto [width, height] = parse_size(shot.size);
-  if (request.clipped && reconstruction.index() == 0) {
-    throw io::Error("a clip cuts a 3D scene open; this reconstruction is a 2D curve");
-  }
+  check_shot_applies(shot, reconstruction);
 
   Picture picture;
   try {

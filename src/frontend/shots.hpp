@@ -42,6 +42,10 @@ struct Picture {
 // Throws io::Error with a one-line message (an unknown stage, a malformed clip, ...).
 scene::Request request_of(const Shot& shot);
 
+// What can be known of a shot once its reconstruction is: a clip asks for a 3D one. Throws
+// io::Error with a one-line message.
+void check_shot_applies(const Shot& shot, const Any_reconstruction& reconstruction);
+
 // `camera`, if given, replaces the fitted camera. Throws io::Error with a one-line message.
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr);
