@@ -20,6 +20,7 @@
 #include "io/destinations.hpp"
 #include "io/io_error.hpp"
 #include "io/output_set.hpp"
+#include "sculpt_process.hpp"
 
 namespace sculpt {
 namespace {
@@ -28,13 +29,6 @@ namespace fs = std::filesystem;
 
 fs::path fresh_folder(const std::string& name) {
   return testing::fresh_folder("output-safety/" + name);
-}
-
-std::vector<std::string> names_in(const fs::path& folder) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(folder)) names.push_back(entry.path().filename());
-  std::sort(names.begin(), names.end());
-  return names;
 }
 
 std::string fibonacci_sphere(int n) {
@@ -46,51 +40,10 @@ std::string fibonacci_sphere(int n) {
   return text;
 }
 
-struct Command_run {
-  int exit_code = -1;  // -1: ended by a signal
-  int signal = 0;
-  std::string err;
-};
-
-// Runs `sculpt` with `arguments` in `folder`, stdout to /dev/null; `before_exec` runs in the child
-// (a resource limit), `signal_after_ms` sends a signal that long after the start.
-Command_run run_sculpt(const fs::path& folder, const std::vector<std::string>& arguments,
-                       int signal_to_send = 0, int signal_after_ms = 0, long file_size_limit = -1) {
-  const fs::path err_path = folder.parent_path() / (folder.filename().string() + ".stderr");
-  const pid_t child = ::fork();
-  if (child == 0) {
-    if (::chdir(folder.c_str()) != 0) ::_exit(126);
-    const int null = ::open("/dev/null", O_WRONLY);
-    const int err = ::open(err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    ::dup2(null, 1);
-    ::dup2(err, 2);
-    if (file_size_limit >= 0) {
-      const rlimit limit{static_cast<rlim_t>(file_size_limit),
-                         static_cast<rlim_t>(file_size_limit)};
-      ::setrlimit(RLIMIT_FSIZE, &limit);
-    }
-    std::vector<char*> argv{const_cast<char*>("sculpt")};
-    for (const auto& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-    argv.push_back(nullptr);
-    ::execv(SCULPT_EXECUTABLE, argv.data());
-    ::_exit(127);
-  }
-  if (signal_to_send != 0) {
-    ::usleep(signal_after_ms * 1000);
-    ::kill(child, signal_to_send);
-  }
-  int status = 0;
-  ::waitpid(child, &status, 0);
-  Command_run run;
-  if (WIFEXITED(status)) run.exit_code = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) run.signal = WTERMSIG(status);
-  run.err = testing::read_file(err_path.string());
-  return run;
-}
-
-int lines(const std::string& text) {
-  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
-}
+using testing::Command_run;
+using testing::lines;
+using testing::names_in;
+using testing::run_sculpt;
 
 TEST(Output_safety, AnOutputNeverReplacesAnInputWhateverItsName) {
   const fs::path folder = fresh_folder("same-file");
@@ -183,7 +136,7 @@ TEST(Output_safety, NoSignalLeavesATemporary) {
       const Command_run run = run_sculpt(
           folder,
           {"reconstruct", "in.xyz", "-o", "s.stl", "--solid", "s.node", "--stats", "s.json", "-q"},
-          signal, milliseconds);
+          {signal, milliseconds, -1, {}});
       const auto names = names_in(folder);
       if (names.size() > 1) {
         EXPECT_EQ(names,
@@ -201,7 +154,7 @@ TEST(Output_safety, AFileSizeLimitFailsTheRunCleanly) {
   const fs::path folder = fresh_folder("file-size");
   testing::write_file("output-safety/file-size/in.xyz", fibonacci_sphere(3000));
   const Command_run run =
-      run_sculpt(folder, {"reconstruct", "in.xyz", "-o", "s.stl", "-q"}, 0, 0, 64 * 1024);
+      run_sculpt(folder, {"reconstruct", "in.xyz", "-o", "s.stl", "-q"}, {0, 0, 64 * 1024, {}});
   EXPECT_EQ(run.exit_code, 1) << run.err;
   EXPECT_EQ(lines(run.err), 1) << run.err;
   EXPECT_NE(run.err.find("'s.stl'"), std::string::npos) << "the user's name: " << run.err;
@@ -250,6 +203,49 @@ TEST(Output_safety, AReportThatCannotBeWrittenIsAFailure) {
   EXPECT_EQ(WEXITSTATUS(status), 1);
   EXPECT_NE(testing::read_file((folder / "err").string()).find("standard output"),
             std::string::npos);
+}
+
+// The figures are one set of outputs in one folder: a run that fails makes no folder...
+TEST(Output_safety, AFailedGalleryLeavesNoFolder) {
+  const fs::path folder = fresh_folder("gallery-failed");
+  // A file-size limit too small for a picture: the disk full, as far as the run can tell.
+  const Command_run run =
+      run_sculpt(folder, {"figures", "--only", "fig01", "--size", "120x90", "--out", "new/gallery"},
+                 {0, 0, 2048, {}});
+  EXPECT_EQ(run.exit_code, 1) << run.err;
+  EXPECT_NE(run.err.find("file-size limit"), std::string::npos) << run.err;
+  EXPECT_EQ(names_in(folder), std::vector<std::string>{}) << "no folder, no temporary";
+}
+
+// ... and leaves a folder that was there as it was; every destination is checked first.
+TEST(Output_safety, AGalleryIsWrittenWholeOrNotAtAll) {
+  const fs::path folder = fresh_folder("gallery-set");
+  const fs::path gallery = folder / "gallery";
+  fs::create_directories(gallery / "table2.md");  // in the way of an output
+  testing::write_file("output-safety/gallery-set/gallery/notes.txt", "mine");
+  const std::vector<std::string> arguments = {"figures", "--only", "fig01",  "--size",
+                                              "120x90",  "--out",  "gallery"};
+  const Command_run refused = run_sculpt(folder, arguments);
+  EXPECT_EQ(refused.exit_code, 1);
+  EXPECT_EQ(lines(refused.err), 1) << refused.err;
+  EXPECT_NE(refused.err.find("table2.md': it is a folder"), std::string::npos) << refused.err;
+  EXPECT_EQ(refused.err.find("sculpt figures: fig01"), std::string::npos) << "before any work";
+  EXPECT_EQ(names_in(gallery), (std::vector<std::string>{"notes.txt", "table2.md"}));
+
+  fs::remove(gallery / "table2.md");
+  const Command_run written = run_sculpt(folder, arguments);
+  EXPECT_EQ(written.exit_code, 0) << written.err;
+  const auto names = names_in(gallery);
+  EXPECT_EQ(std::count_if(names.begin(), names.end(),
+                          [](const std::string& name) { return name.rfind("fig01", 0) == 0; }),
+            2);  // fig01a, fig01b
+  for (const char* expected : {"figures.json", "notes.txt", "table1.md", "table2.md"}) {
+    EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
+  }
+  EXPECT_EQ(std::count_if(names.begin(), names.end(),
+                          [](const std::string& name) { return name.front() == '.'; }),
+            0);
+  EXPECT_EQ(testing::read_file((gallery / "notes.txt").string()), "mine");
 }
 
 // The library's own check, as the viewer and Python use it: a file read earlier in the process.

@@ -20,6 +20,7 @@
 #include "frontend/shot.hpp"
 #include "io/atomic_file.hpp"
 #include "io/destinations.hpp"
+#include "io/point_reader.hpp"
 #include "io/writers.hpp"
 #include "render/headless.hpp"
 #include "report.hpp"
@@ -428,12 +429,33 @@ int run_bench_job(const Bench_job& job) {
   return 0;
 }
 
+void check_a_method_measured(const std::vector<std::string>& methods,
+                             const std::vector<nlohmann::json>& rows) {
+  const bool any = std::any_of(rows.begin(), rows.end(),
+                               [](const nlohmann::json& row) { return !row["methods"].empty(); });
+  if (any || rows.empty()) return;
+  std::string why;
+  for (const auto& name : methods) {
+    Method method;
+    if (!parse_method(name, method)) continue;
+    const bool curves = reconstructs_in(method, 2);
+    why += (why.empty() ? "" : "; ") + name + " reconstructs " +
+           (curves ? "curves (2D points) only" : "surfaces (3D points) only");
+  }
+  throw frontend::Usage_error("no method asked applies to these inputs (" + why + ")");
+}
+
 std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
     const Bench_arguments& args) {
   for (const auto& method : args.methods) {
     Method parsed;
     if (!parse_method(method, parsed))
       throw frontend::Usage_error("unknown method '" + method + "'");
+  }
+  if (args.inputs.empty() && (args.bordered || args.merge_duplicates)) {
+    throw frontend::Usage_error(std::string(args.bordered ? "--bordered" : "--merge-duplicates") +
+                                " applies to point files; an example has its own kind and no "
+                                "repeated points, the torus is closed");
   }
   std::vector<std::pair<std::string, std::vector<std::string>>> inputs;
   for (const auto& path : args.inputs) {
@@ -486,6 +508,7 @@ nlohmann::json measure_input(const std::string& name, const std::vector<std::str
   }
   nlohmann::json row;
   row["input"] = name;
+  row["methods"] = nlohmann::json::object();  // none, where no method is for this dimension
   row["delaunay_only"] = median_run(runs["delaunay"]);
   row["samples"] = row["delaunay_only"].value("samples", 0);
   for (const auto& method : methods) {
@@ -523,6 +546,9 @@ struct Subdivided_meshes {
 
 int run_bench(const Bench_arguments& given) {
   // Before any work (a benchmark runs for minutes): the JSON table can be written, over no input.
+  if (!given.json.empty() && io::extension_of(given.json) != ".json") {
+    throw frontend::Usage_error("the JSON table must end in .json: '" + given.json + "'");
+  }
   io::check_destination(given.json, given.inputs);
   Bench_arguments args = given;
   const Subdivided_meshes subdivided(args.loop_subdivided);
@@ -540,6 +566,7 @@ int run_bench(const Bench_arguments& given) {
       std::cerr << "sculpt bench: " << name << " done\n";
     }
   }
+  check_a_method_measured(args.methods, rows);
   print_rows(rows);
   // A measurement that failed fails the benchmark (after the table and its JSON, which say which).
   int failed = 0;

@@ -34,6 +34,11 @@ int run_bench(const Bench_arguments& args);
 std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
     const Bench_arguments& args);
 
+// Throws Usage_error if none of the methods of --methods applies to any input measured (a
+// curve method given only surfaces): a table with no method in it. One that applies to some
+// inputs is measured on those (the others' rows say it is not for their dimension).
+void check_a_method_measured(const std::vector<std::string>& methods,
+                             const std::vector<nlohmann::json>& rows);
 // One input measured: CGAL's Delaunay triangulation of it ("delaunay_only"), CGAL's Advancing
 // Front if asked ("advancing_front") and every method that applies ("methods"), each in a
 // process of its own, the median of args.runs runs.

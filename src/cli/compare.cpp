@@ -20,6 +20,7 @@
 #include "io/point_reader.hpp"
 #include "render/headless.hpp"
 #include "render/image.hpp"
+#include "render/png_band_writer.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt::cli {
@@ -61,6 +62,10 @@ Reference read_reference(const std::string& path) {
 // curves and point files without one.
 std::optional<Reference> reference_of(const frontend::Input& input,
                                       const std::optional<Reference>& given) {
+  if (given && input.dimension() != 3) {
+    throw frontend::Usage_error("--reference is a mesh of a surface; " + input.description +
+                                " is 2D points");
+  }
   if (input.dimension() != 3) return std::nullopt;
   if (given) return given;
   if (input.reference_triangles.empty()) return std::nullopt;
@@ -90,7 +95,10 @@ void paste(render::Image& canvas, const render::Image& tile, int left, int top) 
 
 class Comparison {
  public:
-  explicit Comparison(const Compare_arguments& args) : args_(args) {
+  // `grid_path`, if given, receives the picture grid, a row of tiles per input, each row
+  // written as soon as it is drawn: memory holds one row of tiles, whatever the inputs.
+  Comparison(const Compare_arguments& args, std::string grid_path)
+      : args_(args), grid_path_(std::move(grid_path)) {
     methods_ = args.inputs.methods;
     if (methods_.empty()) methods_.assign(method_names().begin(), method_names().end());
   }
@@ -124,7 +132,10 @@ class Comparison {
       rows_.push_back(std::move(row));
       if (isatty(STDERR_FILENO)) std::cerr << "sculpt compare: " << name << " measured\n";
     }
+    grid_rows_ = inputs.size();
+    check_a_method_measured(methods_, rows_);
     for (std::size_t k = 0; k < inputs.size(); ++k) measure_results(inputs[k].second, rows_[k]);
+    if (grid_) grid_->finish();
   }
 
   std::string markdown() const {
@@ -173,7 +184,6 @@ class Comparison {
   }
 
   const std::vector<nlohmann::json>& rows() const { return rows_; }
-  const render::Image& pictures() const { return grid_; }
 
  private:
   // The results again, in this process (untimed): their vertices, their distance to the
@@ -259,17 +269,19 @@ class Comparison {
     return draw(shot, *samples_only_);
   }
 
+  // Every tile has the size --tile asks; every row one tile per method.
   void add_grid_row(const std::vector<render::Image>& tiles) {
     const int width = tiles.front().width, height = tiles.front().height;
-    render::Image grown;
-    grown.width = std::max(grid_.width, width * int(tiles.size()));
-    grown.height = grid_.height + height;
-    grown.rgba.assign(4 * std::size_t(grown.width) * grown.height, 255);
-    if (grid_.height > 0) paste(grown, grid_, 0, 0);
-    for (std::size_t k = 0; k < tiles.size(); ++k) {
-      paste(grown, tiles[k], int(k) * width, grid_.height);
+    if (!grid_) {
+      grid_ = std::make_unique<render::Png_band_writer>(grid_path_, width * int(methods_.size()),
+                                                        height * int(grid_rows_));
     }
-    grid_ = std::move(grown);
+    render::Image row;
+    row.width = width * int(methods_.size());
+    row.height = height;
+    row.rgba.assign(4 * std::size_t(row.width) * row.height, 255);
+    for (std::size_t k = 0; k < tiles.size(); ++k) paste(row, tiles[k], int(k) * width, 0);
+    grid_->add(row);
   }
 
   const Compare_arguments& args_;
@@ -278,7 +290,9 @@ class Comparison {
   std::optional<Reference> given_reference_;  // --reference
   std::unique_ptr<render::Headless_renderer> renderer_;
   std::optional<frontend::Any_reconstruction> samples_only_;  // this input's, for draw()
-  render::Image grid_;
+  std::string grid_path_;
+  std::size_t grid_rows_ = 0;
+  std::unique_ptr<render::Png_band_writer> grid_;
 };
 
 void check_outputs(const Compare_arguments& args) {
@@ -301,6 +315,9 @@ void check_outputs(const Compare_arguments& args) {
   } catch (const io::Error& e) {
     throw frontend::Usage_error(e.what());
   }
+  if (args.pictures.empty() && args.tile != Compare_arguments{}.tile) {
+    throw frontend::Usage_error("--tile sizes the pictures of --pictures; there are none");
+  }
 }
 
 }  // namespace
@@ -310,10 +327,10 @@ int run_compare(const Compare_arguments& args) {
   if (args.inputs.inputs.empty() && args.inputs.examples.empty()) {
     throw frontend::Usage_error("compare needs an input file or --example");
   }
-  Comparison comparison(args);
+  io::Output_set outputs;  // every file or none
+  Comparison comparison(args, args.pictures.empty() ? "" : outputs.stage(args.pictures));
   comparison.run();
   const std::string table = comparison.markdown();
-  io::Output_set outputs;  // every file or none
   if (!args.markdown.empty()) {
     io::Atomic_file file(outputs.stage(args.markdown), false);
     file.stream() << table;
@@ -324,8 +341,6 @@ int run_compare(const Compare_arguments& args) {
     file.stream() << nlohmann::json(comparison.rows()).dump(2) << '\n';
     file.commit();
   }
-  if (!args.pictures.empty())
-    render::write_png(outputs.stage(args.pictures), comparison.pictures());
   outputs.commit();
   std::cout << table;
   return 0;

@@ -15,6 +15,7 @@
 #include "frontend/command_line.hpp"
 #include "frontend/failure.hpp"
 #include "frontend/input.hpp"
+#include "frontend/option_use.hpp"
 #include "io/atomic_file.hpp"
 #include "io/destinations.hpp"
 #include "io/output_set.hpp"
@@ -104,6 +105,26 @@ void check_output_formats(const Reconstruct_arguments& args, int dimension) {
   io::check_destinations(io::with_companions({args.output, args.solid, args.stats}), {args.input});
 }
 
+// An option the method or kind would never read is refused, not ignored.
+void check_options_apply(const Reconstruct_arguments& args, Surface_kind kind) {
+  Options options;
+  if (!parse_method(args.method, options.method)) return;  // CLI11 refused it already
+  options.kind = kind;
+  parse_rule(args.rule, options.rule);
+  options.box_factor = args.box_factor;
+  options.alpha = args.alpha;
+  options.bordered_seed_sample = args.seed_sample;
+  const auto spelling = frontend::Spelling::command_line;
+  for (const std::string& problem :
+       {frontend::unused_reconstruction_option(options, spelling),
+        args.automatic ? frontend::unused_automatic_kind(options.method, spelling) : "",
+        args.ascii ? frontend::unused_ascii(args.output, spelling) : "",
+        frontend::unused_input_option(args.example, args.dimension, args.merge_duplicates,
+                                      spelling)}) {
+    if (!problem.empty()) throw Usage_error(problem);
+  }
+}
+
 template <int D>
 int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruct_arguments& args,
                           Surface_kind kind, Run_description run) {
@@ -161,6 +182,7 @@ int run_reconstruct(const Reconstruct_arguments& args) {
       args.automatic
           ? Surface_kind::automatic
           : frontend::input_kind(shapes::find_example(args.example), args.bordered, args.closed);
+  check_options_apply(args, kind);  // before any work
   const frontend::Input input =
       frontend::load_input(args.input, args.example, args.dimension, args.merge_duplicates);
   check_output_formats(args, input.dimension());
@@ -284,12 +306,15 @@ int main(int argc, char** argv) {
       "run in a process of its own: whole-process CPU time and peak memory, and stage times");
   bench->add_option("inputs", bench_args.inputs, "Point files");
   bench->add_option("--example", bench_args.examples, "Built-in examples");
-  bench->add_option("--torus", bench_args.torus_points, "Also N random points on a torus");
+  bench->add_option("--torus", bench_args.torus_points, "Also N random points on a torus")
+      ->check(sculpt::frontend::whole_number_above_zero());
   bench->add_option("--loop-subdivided", bench_args.loop_subdivided,
                     "Also these meshes after one step of Loop subdivision (about 4 times the "
                     "vertices, on the same surface)");
-  bench->add_option("--render", bench_args.render_triangles,
-                    "Also time a headless 1600x1200 render of a surface of N triangles");
+  bench
+      ->add_option("--render", bench_args.render_triangles,
+                   "Also time a headless 1600x1200 render of a surface of N triangles")
+      ->check(sculpt::frontend::whole_number_above_zero());
   bench->add_flag("--edits", bench_args.edits,
                   "Also time the viewer's live 2D edit on 200, 1,000 and 5,000 points");
   bench->add_flag("--bordered", bench_args.bordered, "Treat the point files as bordered");
@@ -364,7 +389,14 @@ int main(int argc, char** argv) {
     if (compare->parsed()) return run_compare(compare_args);
     if (bench_job_command->parsed()) return run_bench_job(bench_job);
     if (render->parsed()) return run_render(render_args);
-    if (figures_command->parsed()) return sculpt::figures::generate(figure_options) > 0 ? 0 : 1;
+    if (figures_command->parsed()) {
+      try {
+        sculpt::frontend::parse_size(figure_options.size);  // before any work
+      } catch (const sculpt::io::Error& e) {
+        throw Usage_error(std::string("--size: ") + e.what());
+      }
+      return sculpt::figures::generate(figure_options) > 0 ? 0 : 1;
+    }
     if (args.input.empty() && args.example.empty()) {
       throw Usage_error("give an input file or --example NAME");
     }

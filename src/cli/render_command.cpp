@@ -29,6 +29,7 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   Shot& shot = args.shot;
   auto* render = app.add_subcommand(
       "render", "Render a stage of the algorithm to PNG, headless (OSMesa, llvmpipe)");
+  args.command = render;
   auto* input = render->add_option("input", shot.input, "Point file");
   auto* example = render->add_option("--example", shot.example, "A built-in example instead");
   input->excludes(example);
@@ -104,6 +105,8 @@ namespace {
 // place together: every file of the list, or none. All are checked before the first is drawn.
 void render_all(frontend::Shot_renderer& renderer, const std::vector<Shot>& shots,
                 const std::vector<const nlohmann::json*>& cameras, const std::string& shots_file) {
+  const auto spelling =
+      shots_file.empty() ? frontend::Spelling::command_line : frontend::Spelling::shots_file;
   std::vector<std::string> outputs, inputs{shots_file};
   for (const Shot& shot : shots) {
     frontend::check_shot(shot);
@@ -116,7 +119,7 @@ void render_all(frontend::Shot_renderer& renderer, const std::vector<Shot>& shot
     Shot staged = shots[i];
     staged.output = written.stage(shots[i].output);
     if (!staged.save_camera.empty()) staged.save_camera = written.stage(shots[i].save_camera);
-    renderer.render(staged, cameras[i]);
+    renderer.render(staged, cameras[i], spelling);
   }
   written.commit();
 }
@@ -133,6 +136,14 @@ int run_render(const Render_arguments& args) {
       throw frontend::Usage_error(problem);
     render_all(renderer, {args.shot}, {nullptr}, "");
     return 0;
+  }
+  // Each shot of the list says all it asks: an option given beside --shots would be ignored.
+  for (const CLI::Option* option : args.command->get_options()) {
+    if (option->count() > 0 && option->get_name() != "--shots") {
+      throw frontend::Usage_error(option->get_name() +
+                                  " does not apply with --shots: each shot gives its own (put "
+                                  "it in the shots file)");
+    }
   }
   const nlohmann::json list = frontend::read_json(args.shots_file);
   if (!list.contains("shots") || !list["shots"].is_array()) {

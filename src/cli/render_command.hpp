@@ -18,7 +18,8 @@ using frontend::Shot;
 
 struct Render_arguments {
   Shot shot;
-  std::string shots_file;  // JSON: {"shots": [ {...}, ... ]} with the fields of Shot
+  std::string shots_file;       // JSON: {"shots": [ {...}, ... ]} with the fields of Shot
+  CLI::App* command = nullptr;  // the subcommand: which options were given
 };
 
 void add_render_command(CLI::App& app, Render_arguments& args);

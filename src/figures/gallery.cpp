@@ -16,7 +16,10 @@
 #include "frontend/pseudo_code.hpp"
 #include "frontend/shot_renderer.hpp"
 #include "io/atomic_file.hpp"
+#include "io/destinations.hpp"
 #include "io/io_error.hpp"
+#include "io/output_folder.hpp"
+#include "io/output_set.hpp"
 
 namespace sculpt::figures {
 namespace {
@@ -141,13 +144,30 @@ int generate(const Options& options) {
   }
   if (chosen.empty())
     throw io::Error("no figure '" + options.only + "' (figures are fig01 ... fig15)");
-  std::filesystem::create_directories(options.out);
+  // Every output checked before the work, and all of them or none left at the end: a failed
+  // run (a full disk, a signal) leaves the folder as it was, or no folder.
+  io::Output_folder folder(options.out);
+  const auto in_folder = [&](const std::string& name) {
+    return (std::filesystem::path(options.out) / name).string();
+  };
+  std::vector<std::string> destinations = {in_folder("table1.md"), in_folder("table2.md"),
+                                           in_folder("figures.json")};
+  if (options.only.empty()) destinations.push_back(in_folder("README.md"));
+  for (const auto& figure : chosen) {
+    for (const auto& image : figure.images)
+      destinations.push_back(in_folder(figure.id + image.suffix + ".png"));
+  }
+  io::check_destinations(destinations);
+  io::Output_set outputs;
 
   std::set<std::string> meshes;
   for (const auto& figure : chosen) {
     for (const auto& image : figure.images) {
       if (image.shot.input.rfind("cgal:", 0) == 0) meshes.insert(image.shot.input.substr(5));
     }
+  }
+  if (meshes.empty() && options.cgal_archive != Options{}.cgal_archive) {
+    throw io::Error("--cgal-data: the figures chosen draw no CGAL mesh");
   }
   Cgal_meshes cgal(options.cgal_archive);
   cgal.unpack(meshes);
@@ -163,7 +183,7 @@ int generate(const Options& options) {
       Shot s = cgal.resolve(image.shot);
       s.size = options.size;
       const std::string file = figure.id + image.suffix + ".png";
-      s.output = (std::filesystem::path(options.out) / file).string();
+      s.output = outputs.stage(in_folder(file));
       std::cerr << "sculpt figures: " << file << '\n';
       const scene::Scene scene = renderer.render(s);
       nlohmann::json layers = nlohmann::json::object();
@@ -181,7 +201,7 @@ int generate(const Options& options) {
   }
 
   const auto write = [&](const std::string& name, const std::string& text) {
-    io::Atomic_file file((std::filesystem::path(options.out) / name).string(), false);
+    io::Atomic_file file(outputs.stage(in_folder(name)), false);
     file.stream() << text;
     file.commit();
   };
@@ -238,6 +258,8 @@ int generate(const Options& options) {
     }
     write("README.md", gallery.str());
   }
+  outputs.commit();
+  folder.keep();
   std::cerr << fmt::format("sculpt figures: {} images in {} ({:.1f} s)\n", written, options.out,
                            seconds);
   return written;

@@ -68,6 +68,21 @@ inline CLI::Validator positive_length() {
       "LENGTH");
 }
 
+// A count (--torus N): CLI::PositiveNumber's message prints the largest double in full.
+inline CLI::Validator whole_number_above_zero() {
+  return CLI::Validator(
+      [](std::string& text) {
+        try {
+          std::size_t used = 0;
+          const long value = std::stol(text, &used);
+          if (used == text.size() && value > 0 && value <= 2'000'000'000) return std::string();
+        } catch (const std::exception&) {
+        }
+        return "'" + text + "' is not a whole number from 1 to 2,000,000,000";
+      },
+      "N");
+}
+
 // A mistake in the arguments themselves (exit code 2), found before any work is done.
 class Usage_error : public std::runtime_error {
  public:

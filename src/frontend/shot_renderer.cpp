@@ -2,17 +2,33 @@
 #include "frontend/shot_renderer.hpp"
 
 #include "frontend/input.hpp"
+#include "frontend/option_use.hpp"
 #include "io/io_error.hpp"
 
 namespace sculpt::frontend {
 
-scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* camera) {
+namespace {
+
+void refuse_if(const std::string& problem) {
+  if (!problem.empty()) throw io::Error(problem);
+}
+
+}  // namespace
+
+scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* camera,
+                                   Spelling spelling) {
   check_shot(shot);  // before any work
   if (shot.input.empty() == shot.example.empty()) {
     throw io::Error("a shot needs an input file or an example (one of them)");
   }
+  refuse_if(unused_animation_option(shot, spelling));
+  refuse_if(unused_input_option(shot.example, shot.dimension, shot.merge_duplicates, spelling));
+  refuse_if(unused_reconstruction_option(options_of(shot), spelling));
   const Any_reconstruction& shown = reconstruction(shot);
   check_shot_applies(shot, shown);  // before a renderer is made
+  // What a picture draws says which drawing options do something (an animation's pictures
+  // differ, each stage its own).
+  if (shot.animate.empty()) refuse_if(unused_drawing_option(shot, scene_of(shot, shown), spelling));
   if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
   return write_shot(*renderer_, shot, shown, camera);
 }
@@ -24,8 +40,14 @@ const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
                           "|" + std::to_string(shot.merge_duplicates);
   auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
+  const Options options = options_of(shot);
   const frontend::Input input =
       frontend::load_input(shot.input, shot.example, shot.dimension, shot.merge_duplicates);
+  Any_reconstruction result = reconstruct_input(input, options);
+  return cache_.emplace(key, std::move(result)).first->second;
+}
+
+Options Shot_renderer::options_of(const Shot& shot) {
   Options options;
   if (!parse_method(shot.method, options.method)) {
     std::string names;
@@ -39,8 +61,7 @@ const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   options.kind = kind_of(shot);
   options.box_factor = shot.box_factor;
   options.alpha = shot.alpha;
-  Any_reconstruction result = reconstruct_input(input, options);
-  return cache_.emplace(key, std::move(result)).first->second;
+  return options;
 }
 
 }  // namespace sculpt::frontend

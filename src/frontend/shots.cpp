@@ -7,6 +7,7 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <type_traits>
 #if defined(__GLIBC__)  // set by the C library's headers above
@@ -27,12 +28,27 @@ namespace sculpt::frontend {
 
 namespace {
 
-render::Camera camera_or_error(const nlohmann::json& json) {
+// A camera given for a scene must be one of its dimension: a 3D camera on a curve would draw it
+// in perspective, a 2D one a surface from straight above.
+render::Camera camera_or_error(const nlohmann::json& json, const scene::Scene& scene,
+                               const std::string& source) {
+  render::Camera camera;
   try {
-    return render::camera_from_json(json);
+    camera = render::camera_from_json(json);
   } catch (const std::invalid_argument& e) {
     throw io::Error(e.what());
   }
+  if (camera.dimension != scene.dimension) {
+    throw io::Error(source + " is a " + std::to_string(camera.dimension) +
+                    "D camera; this picture is of " + std::to_string(scene.dimension) + "D points");
+  }
+  return camera;
+}
+
+void save_camera(const render::Camera& camera, const std::string& path) {
+  io::Atomic_file file(path, false);
+  file.stream() << render::to_json(camera).dump(2) << '\n';
+  file.commit();
 }
 
 }  // namespace
@@ -119,6 +135,7 @@ class Shot_fields {
 
  private:
   const nlohmann::json* find(const char* key) const {
+    read_.insert(key);
     const auto found = json_.find(key);
     return found == json_.end() || found->is_null() ? nullptr : &*found;
   }
@@ -131,6 +148,21 @@ class Shot_fields {
 
   const nlohmann::json& json_;
   std::string name_;
+  mutable std::set<std::string> read_;
+
+ public:
+  // After every field was read: a key that is none of them (a typo: "stag") is refused, with
+  // the keys a shot takes, rather than silently ignored.
+  void refuse_unknown_keys(const std::set<std::string>& also_known) const {
+    for (const auto& item : json_.items()) {
+      if (read_.count(item.key()) || also_known.count(item.key())) continue;
+      std::set<std::string> known = read_;
+      known.insert(also_known.begin(), also_known.end());
+      std::string keys;
+      for (const auto& key : known) keys += (keys.empty() ? "" : ", ") + key;
+      throw io::Error(name_ + ": no field \"" + item.key() + "\" (a shot takes " + keys + ")");
+    }
+  }
 };
 
 }  // namespace
@@ -172,6 +204,7 @@ Shot shot_from_json(const nlohmann::json& j, const std::string& name) {
   shot.frames = static_cast<int>(f.whole("frames", shot.frames, 0, most));
   shot.frame_ms = static_cast<int>(f.whole("frame_ms", shot.frame_ms, 0, most));
   shot.output = f.text("output", "");
+  f.refuse_unknown_keys({"camera"});  // an inline camera, read with the shot's scene
   return shot;
 }
 
@@ -235,24 +268,31 @@ void check_shot_applies(const Shot& shot, const Any_reconstruction& reconstructi
   }
 }
 
-Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
-                  const Any_reconstruction& reconstruction, const nlohmann::json* inline_camera) {
+scene::Scene scene_of(const Shot& shot, const Any_reconstruction& reconstruction) {
   const scene::Request request = request_of(shot);
-  const auto [width, height] = parse_size(shot.size);
   check_shot_applies(shot, reconstruction);
-
-  Picture picture;
   try {
-    picture.scene =
-        std::visit([&](const auto& r) { return scene::build_scene(r, request); }, reconstruction);
+    return std::visit([&](const auto& r) { return scene::build_scene(r, request); },
+                      reconstruction);
   } catch (const std::invalid_argument& e) {
     throw io::Error(e.what());
   }
+}
+
+Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
+                  const Any_reconstruction& reconstruction, const nlohmann::json* inline_camera) {
+  const auto [width, height] = parse_size(shot.size);
+  Picture picture;
+  picture.scene = scene_of(shot, reconstruction);
   if (!shot.title.empty()) picture.scene.title = shot.title;
   picture.camera =
       render::fit(picture.scene, float(width) / float(height), shot.zoom, shot.yaw, shot.pitch);
-  if (inline_camera) picture.camera = camera_or_error(*inline_camera);
-  if (!shot.camera_file.empty()) picture.camera = camera_or_error(read_json(shot.camera_file));
+  if (inline_camera)
+    picture.camera = camera_or_error(*inline_camera, picture.scene, "the shot's \"camera\"");
+  if (!shot.camera_file.empty()) {
+    picture.camera = camera_or_error(read_json(shot.camera_file), picture.scene,
+                                     "the camera '" + shot.camera_file + "'");
+  }
   render::Draw_options options;
   options.legend = options.title = !shot.no_legend;
   picture.image = renderer.render(picture.scene, picture.camera, width, height, options);
@@ -346,9 +386,9 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
     scene::Scene last;
     // The replay follows the pole just labelled, as the viewer does (render::follow_point),
     // from the first picture's camera.
-    std::optional<render::Camera> camera;
-    glm::vec3 lower{}, upper{};  // the samples' box
-    bool framed_far = false;     // the camera frames a far pole with the shape
+    std::optional<render::Camera> camera;  // the first picture's
+    glm::vec3 lower{}, upper{};            // the samples' box
+    bool framed_far = false;               // the camera frames a far pole with the shape
     for (const Shot& frame : animation_frames(shot, shown)) {
       nlohmann::json followed;
       if (camera && shot.animate == "replay" && frame.step > 0) {
@@ -378,6 +418,7 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
       }
       last = std::move(picture.scene);
     }
+    if (!shot.save_camera.empty()) save_camera(*camera, shot.save_camera);
     try {
       animation->write(shot.output);
     } catch (const std::runtime_error& e) {
@@ -386,11 +427,7 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
     return last;
   }
   Picture picture = draw_shot(renderer, shot, shown, inline_camera);
-  if (!shot.save_camera.empty()) {
-    io::Atomic_file file(shot.save_camera, false);
-    file.stream() << render::to_json(picture.camera).dump(2) << '\n';
-    file.commit();
-  }
+  if (!shot.save_camera.empty()) save_camera(picture.camera, shot.save_camera);
   render::write_png(shot.output, picture.image);
   return std::move(picture.scene);
 }

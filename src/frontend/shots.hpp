@@ -46,6 +46,10 @@ scene::Request request_of(const Shot& shot);
 // io::Error with a one-line message.
 void check_shot_applies(const Shot& shot, const Any_reconstruction& reconstruction);
 
+// The scene a shot draws of a reconstruction (after check_shot_applies). Throws io::Error with
+// a one-line message.
+scene::Scene scene_of(const Shot& shot, const Any_reconstruction& reconstruction);
+
 // `camera`, if given, replaces the fitted camera. Throws io::Error with a one-line message.
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr);
@@ -55,7 +59,8 @@ Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
 void check_shot(const Shot& shot);
 
 // Writes a shot of `reconstruction` to its output: a PNG, or an animated WebP of the replay or
-// the stages (shot.animate), all or nothing; the camera too where the shot asks (save_camera).
+// the stages (shot.animate), all or nothing; the camera too where the shot asks (save_camera;
+// an animation's first picture's).
 // Returns the (last) scene drawn. Throws io::Error with a one-line message.
 scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
                         const Any_reconstruction& reconstruction,

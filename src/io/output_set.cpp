@@ -3,6 +3,7 @@
 
 #include <pthread.h>
 #include <signal.h>
+#include <sys/stat.h>
 
 #include <cerrno>
 #include <cstdio>
@@ -54,6 +55,14 @@ std::string Output_set::stage(const std::string& destination) {
 }
 
 void Output_set::commit() {
+  // Every file written before any is renamed: an output its writer never made (a bug, a file
+  // removed meanwhile) fails the set while nothing is in place yet.
+  for (const auto& [temporary, destination] : staged_) {
+    struct stat status {};
+    if (::stat(temporary.c_str(), &status) != 0) {
+      throw Error("cannot write '" + destination + "': it was not written");
+    }
+  }
   // A signal between two renames would leave some outputs and not others: it waits until all
   // are in place (and then ends the run, with every output written).
   sigset_t stopping, previous;

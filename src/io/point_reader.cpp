@@ -50,13 +50,13 @@ std::string extension_of(const std::string& path) {
   return extension;
 }
 
-Point_set read_points(const std::string& path, std::uint64_t limit) {
+Point_set read_points(const std::string& path, const Input_limits& limits) {
   const std::string extension = extension_of(path);
   if (!known_extension(extension)) {
     throw Error("unknown point format '" + printable(extension) + "' of '" + printable(path, 1000) +
                 "' (known: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl)");
   }
-  Byte_input input = Byte_input::open_file(path, limit);
+  Byte_input input = Byte_input::open_file(path, limits);
   return read_format(input, extension);
 }
 

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "input_limits.hpp"
 #include "io_error.hpp"
 
 namespace sculpt::io {
@@ -29,12 +30,9 @@ struct Point_set {
   std::vector<std::array<int, 3>> triangles;
 };
 
-// Files larger than this are refused (a pipe is read up to it): far beyond what a
-// reconstruction fits in memory, and a bound on what an endless input costs.
-constexpr std::uint64_t max_input_bytes = std::uint64_t(4) << 30;
-
-// Throws io::Error with a one-line message on any problem with the file.
-Point_set read_points(const std::string& path, std::uint64_t limit = max_input_bytes);
+// Throws io::Error with a one-line message on any problem with the file, and for a file or a
+// stream that holds more bytes or points than the limits (io/input_limits.hpp).
+Point_set read_points(const std::string& path, const Input_limits& limits = input_limits());
 // The same readers on bytes in memory; `extension` (".ply", ".xyz", ...) names the format.
 // A chunk size hands the bytes over that many at a time, as a pipe would (fuzzing, tests).
 Point_set read_points_from_memory(std::string_view bytes, const std::string& extension,

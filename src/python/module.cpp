@@ -20,6 +20,7 @@
 
 #include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
+#include "frontend/option_use.hpp"
 #include "frontend/shots.hpp"
 #include "frontend/statistics_json.hpp"
 #include "io/destinations.hpp"
@@ -78,12 +79,19 @@ py::object points_array(const frontend::Input& input) {
                     input.points);
 }
 
-// Any array-like of numbers (an array, a list of points) as a C-ordered float64 array of shape
-// (n, 2) or (n, 3); Input_error otherwise.
+// Any array-like of real numbers (an array, a list of points) as a C-ordered float64 array of
+// shape (n, 2) or (n, 3); Input_error otherwise. The shape and the point budget are checked
+// before any copy: a broadcast view of 10^9 rows costs nothing until it is copied.
 py::array_t<double, py::array::c_style> points_from(const py::object& points) {
+  const py::module_ numpy = py::module_::import("numpy");
   py::array array;
   try {
-    array = py::module_::import("numpy").attr("asarray")(points, "float64");
+    array = numpy.attr("asarray")(points);  // an array stays itself: no copy yet
+    const char kind = array.dtype().kind();
+    if (kind == 'c') throw Input_error("points must be real numbers, not complex");
+    if (kind != 'f' && kind != 'i' && kind != 'u' && kind != 'b') {
+      array = numpy.attr("asarray")(points, "float64");  // objects that are numbers (Decimal)
+    }
   } catch (py::error_already_set&) {
     throw Input_error("points must be numbers: an array of shape (n, 2) or (n, 3)");
   }
@@ -93,6 +101,13 @@ py::array_t<double, py::array::c_style> points_from(const py::object& points) {
       shape += (axis ? ", " : "") + std::to_string(array.shape(axis));
     throw Input_error("points must be an array of shape (n, 2) or (n, 3), not (" + shape +
                       (array.ndim() == 1 ? ",)" : ")"));
+  }
+  const std::uint64_t rows = static_cast<std::uint64_t>(array.shape(0));
+  const std::uint64_t limit = io::input_limits().points;
+  if (rows > limit) {
+    throw Input_error(
+        fmt::format("points: an array of {} points ({:.1f} GB as float64) is more than {}", rows,
+                    double(rows) * double(array.shape(1)) * 8 / 1e9, io::points_limit_text(limit)));
   }
   return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
 }
@@ -129,17 +144,26 @@ struct Progress_bridge {
   }
 };
 
-Options options_from(const std::string& method, const std::string& kind, const std::string& rule,
-                     double box_factor, double alpha, int bordered_seed_sample,
-                     bool keep_triangulations) {
+// The options as the keywords give them; a keyword that the method or kind would never read is
+// refused (frontend/option_use.hpp). kind=None is the method's default: chosen automatically
+// where the method chooses, else closed.
+Options options_from(const std::string& method, const std::optional<std::string>& kind,
+                     const std::string& rule, double box_factor, double alpha,
+                     int bordered_seed_sample, bool keep_triangulations) {
   Options options;
   if (!parse_method(method, options.method)) {
     std::string names;
     for (const char* name : method_names()) names += std::string(names.empty() ? "" : ", ") + name;
     throw Input_error("no method '" + method + "' (methods: " + names + ")");
   }
-  if (!parse_kind(kind, options.kind)) {
-    throw Input_error("no kind of surface '" + kind + "' (kinds: closed, bordered, automatic)");
+  if (kind && !parse_kind(*kind, options.kind)) {
+    throw Input_error("no kind of surface '" + *kind + "' (kinds: closed, bordered, automatic)");
+  }
+  const auto python = frontend::Spelling::python;
+  if (kind && options.kind == Surface_kind::automatic) {
+    if (const std::string problem = frontend::unused_automatic_kind(options.method, python);
+        !problem.empty())
+      throw Input_error(problem);
   }
   if (!parse_rule(rule, options.rule)) {
     throw Input_error("no surface rule '" + rule + "' (rules: auto, skin, extraction)");
@@ -148,13 +172,17 @@ Options options_from(const std::string& method, const std::string& kind, const s
   options.alpha = alpha;
   options.bordered_seed_sample = bordered_seed_sample;
   options.keep_triangulations = keep_triangulations;
+  if (const std::string problem = frontend::unused_reconstruction_option(options, python);
+      !problem.empty())
+    throw Input_error(problem);
   return options;
 }
 
 Result reconstruct_points(const py::object& points, const std::string& method,
-                          const std::string& kind, const std::string& rule, double box_factor,
-                          double alpha, int bordered_seed_sample, bool keep_triangulations,
-                          bool merge_duplicates, const py::object& progress) {
+                          const std::optional<std::string>& kind, const std::string& rule,
+                          double box_factor, double alpha, int bordered_seed_sample,
+                          bool keep_triangulations, bool merge_duplicates,
+                          const py::object& progress) {
   const auto samples = points_from(points);
   Result result;
   result.options = options_from(method, kind, rule, box_factor, alpha, bordered_seed_sample,
@@ -202,6 +230,10 @@ py::array render_stage(const Result& result, const frontend::Shot& shot) {
     py::gil_scoped_release released;
     Shared_renderer& shared = shared_renderer();
     std::lock_guard<std::mutex> lock(shared.mutex);
+    if (const std::string problem = frontend::unused_drawing_option(
+            shot, frontend::scene_of(shot, result.reconstruction), frontend::Spelling::python);
+        !problem.empty())
+      throw Input_error(problem);
     if (!shared.renderer) shared.renderer = std::make_unique<render::Headless_renderer>();
     picture = frontend::draw_shot(*shared.renderer, shot, result.reconstruction);
   }
@@ -230,6 +262,11 @@ void write_result(const Result& result, const std::filesystem::path& path_name,
     }
     if (!solid.empty() && !io::writes_solid(io::extension_of(solid))) {
       throw io::Error("cannot write a solid as '" + solid + "' (known: " + io::solid_formats + ")");
+    }
+    if (ascii) {
+      if (const std::string problem = frontend::unused_ascii(path, frontend::Spelling::python);
+          !problem.empty())
+        throw Input_error(problem);
     }
     // Before any work: both can be written, and neither replaces a file read_points read.
     io::check_destinations(io::with_companions({path, solid}));
@@ -538,7 +575,7 @@ PYBIND11_MODULE(_sculpt, m) {
 
   const Options defaults;
   m.def("reconstruct", &reconstruct_points, py::arg("points"),
-        py::arg("method") = to_string(defaults.method), py::arg("kind") = to_string(defaults.kind),
+        py::arg("method") = to_string(defaults.method), py::arg("kind") = py::none(),
         py::arg("rule") = "auto", py::arg("box_factor") = defaults.box_factor,
         py::arg("alpha") = defaults.alpha,
         py::arg("bordered_seed_sample") = defaults.bordered_seed_sample,
@@ -548,12 +585,14 @@ PYBIND11_MODULE(_sculpt, m) {
 
 points               an (n, 2) or (n, 3) array, or anything numpy.asarray makes one of
 method               a name of sculpt.methods(): 'robust' (the default, for real scans),
-                     'paper' (Kuo & Yau as published), 'crust', 'nn-crust', 'cocone',
-                     'advancing-front', 'alpha-shape'
-kind                 'automatic' (the default): closed, unless the closed result spans openings
+                     'paper' (Kuo & Yau as published), and the peers 'crust', 'nn-crust',
+                     'cocone', 'tight-cocone', 'power-crust', 'boissonnat', 'advancing-front',
+                     'alpha-shape'
+kind                 'closed', 'bordered' for samples of a surface (curve) with a border, or
+                     'automatic' (robust only): closed, unless the closed result spans openings
                      and the bordered one has fewer defects (the result's kind and
-                     stats['kind_chosen_automatically'] say what was kept); 'closed'; or
-                     'bordered' for samples of a surface (curve) with a border
+                     stats['kind_chosen_automatically'] say what was kept). None (the
+                     default): automatic for robust, closed for the others
 rule                 paper method: which facets make the surface, 'auto', 'skin' or
                      'extraction' (the paper's rule)
 box_factor           the bounding box's size relative to the samples' box (the paper: 5)
@@ -614,7 +653,7 @@ uint8 RGBA array (matplotlib's imshow shows it).
 stage         a name of sculpt.stages(result.method, result.dimension): 'samples', 'delaunay',
               'voronoi', 'poles', 'propagation', 'surface', ...
 size          (width, height) in pixels, or one number for a square
-step          replays: the first `step` labelling events (propagation) or carved cells; -1: all
+step          propagation: the first `step` labelling events; -1: all
 focus_sample  a sample whose Voronoi cell, poles, polar balls and inscribed cubes are drawn
 focus_pole    a pole whose polar ball, and the pole that labelled it, are drawn
 layers        only these layers (their names are in the error message of a wrong one)

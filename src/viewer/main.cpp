@@ -38,8 +38,11 @@ int main(int argc, char** argv) {
   std::string size = "1280x720";  // fits a 1366x768 laptop screen, title bar and task bar included
   float font_scale = 1.0f;
   bool bordered = false, closed = false, merge_duplicates = false;
-  command_line.add_option("file", file, "Point file to open (default: the built-in example)");
-  command_line.add_option("--example", example, "Built-in example to open")->capture_default_str();
+  auto* file_option =
+      command_line.add_option("file", file, "Point file to open (default: the built-in example)");
+  command_line.add_option("--example", example, "Built-in example to open")
+      ->capture_default_str()
+      ->excludes(file_option);
   command_line.add_flag(
       "--bordered", bordered,
       "Reconstruct a bordered surface (an example is reconstructed as its own kind "
@@ -47,8 +50,10 @@ int main(int argc, char** argv) {
   command_line
       .add_flag("--closed", closed, "Reconstruct a closed surface, also from a bordered example")
       ->excludes("--bordered");
-  command_line.add_flag("--merge-duplicates", merge_duplicates,
-                        "Drop a file's repeated points instead of refusing the file");
+  command_line
+      .add_flag("--merge-duplicates", merge_duplicates,
+                "Drop a file's repeated points instead of refusing the file")
+      ->needs(file_option);
   std::string method = sculpt::to_string(sculpt::Options{}.method);
   command_line.add_option("--method", method, sculpt::frontend::methods_help())
       ->capture_default_str()
@@ -61,7 +66,13 @@ int main(int argc, char** argv) {
       ->check([](const std::string& id) {
         return sculpt::figures::find_figure(id) ? std::string()
                                                 : "no figure '" + id + "' (fig01 ... fig15)";
-      });
+      })
+      // A figure shows its own data, method and kind.
+      ->excludes(file_option)
+      ->excludes("--example")
+      ->excludes("--method")
+      ->excludes("--bordered")
+      ->excludes("--closed");
   command_line
       .add_option("--panel", panel, "With --figure: start at this panel (a, b, ... or 1, 2, ...)")
       ->needs("--figure");
@@ -135,11 +146,23 @@ int main(int argc, char** argv) {
       ->excludes(frames_option)
       ->excludes("--stage")
       ->excludes("--step")
-      ->excludes("--pick-sample");
+      ->excludes("--pick-sample")
+      // A lesson opens its own examples (the method stays the user's).
+      ->excludes(file_option)
+      ->excludes("--example")
+      ->excludes("--figure")
+      ->excludes("--bordered")
+      ->excludes("--closed");
   command_line.footer(sculpt::frontend::exit_codes_help);
   if (const auto stop =
           sculpt::frontend::parse_command_line(command_line, argc, argv, "sculpt-view")) {
     return *stop;
+  }
+  if (step >= 0 && stage != "propagation") {
+    std::cerr << "sculpt-view: usage error: --step replays the labelling at --stage propagation"
+              << (stage.empty() ? "" : "; this is the stage " + stage)
+              << " (see sculpt-view --help)\n";
+    return sculpt::frontend::exit_bad_usage;
   }
 
   glfwSetErrorCallback(on_glfw_error);

@@ -153,6 +153,18 @@ def test_bad_input_raises_the_command_lines_message(sculpt_cli, tmp_path):
         "finite angles": lambda: sculpt.render(star, yaw=float("nan")),
         "ball_every": lambda: sculpt.render(star, ball_every=0),
         "step must be": lambda: sculpt.render(star, step=-2),
+        # Keywords that would do nothing where they are given.
+        "alpha= is the radius of the method alpha-shape": lambda: sculpt.reconstruct(
+            star.samples, alpha=0.3),
+        "rule= chooses the surface rule of the method paper": lambda: sculpt.reconstruct(
+            star.samples, method="crust", rule="skin"),
+        "only robust chooses the kind": lambda: sculpt.reconstruct(
+            star.samples, method="paper", kind="automatic"),
+        "step= replays the labelling": lambda: sculpt.render(star, stage="poles", step=3),
+        "wireframe= draws a reconstructed surface": lambda: sculpt.render(star, wireframe=True),
+        "turns a 3D camera": lambda: sculpt.render(star, yaw=1.0),
+        "ascii= writes .stl and .ply as text": lambda: sculpt.write(star, "/tmp/never.svg",
+                                                                    ascii=True),
         "keep_triangulations": lambda: sculpt.render(
             sculpt.reconstruct(star.samples, method="paper", keep_triangulations=False),
             stage="sculpted-delaunay"),
@@ -302,3 +314,41 @@ def test_a_method_without_a_solid_writes_none(sculpt_cli, tmp_path):
     assert run.returncode == 2
     assert f"usage error: {raised.value}" in run.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+def test_arrays_beyond_the_point_budget_are_refused_before_any_copy():
+    # A broadcast view of 10^9 rows costs 24 bytes; a copy of it would cost 24 GB.
+    huge = np.broadcast_to(np.array([1.0, 2.0, 3.0]), (10**9, 3))
+    with pytest.raises(sculpt.InputError) as raised:
+        sculpt.reconstruct(huge)
+    assert str(raised.value) == ("points: an array of 1000000000 points (24.0 GB as float64) is "
+                                 "more than the input limit of 50000000 points "
+                                 "(SCULPT_MAX_POINTS raises it)")
+    with pytest.raises(sculpt.InputError, match="real numbers, not complex"):
+        sculpt.reconstruct(sculpt.example("star").astype(complex))
+
+
+def test_a_signal_during_write_leaves_no_temporary(tmp_path):
+    # A child process writes a large surface over and over; SIGTERM ends it mid-write.
+    import os
+    import signal
+    import subprocess
+    import sys
+    import time
+    script = (
+        "import sculpt, sys\n"
+        "r = sculpt.reconstruct(sculpt.example('bumpy'))\n"
+        "print('ready', flush=True)\n"
+        "while True:\n"
+        "    sculpt.write(r, sys.argv[1], ascii=True, solid=sys.argv[2])\n")
+    for delay in (0.0, 0.05, 0.2):
+        for name in os.listdir(tmp_path):
+            os.remove(tmp_path / name)
+        child = subprocess.Popen(
+            [sys.executable, "-c", script, str(tmp_path / "s.ply"), str(tmp_path / "s.vtu")],
+            stdout=subprocess.PIPE, text=True)
+        assert child.stdout.readline() == "ready\n"
+        time.sleep(delay)
+        child.send_signal(signal.SIGTERM)
+        assert child.wait(timeout=60) == -signal.SIGTERM
+        assert sorted(os.listdir(tmp_path)) in ([], ["s.ply", "s.vtu"]), delay

@@ -25,10 +25,11 @@ std::string size_text(std::uint64_t bytes) {
 
 }  // namespace
 
-Byte_input Byte_input::open_file(const std::string& path, std::uint64_t limit) {
+Byte_input Byte_input::open_file(const std::string& path, const Input_limits& limits) {
   Byte_input input;
   input.name_ = "'" + printable(path, 1000) + "'";
-  input.limit_ = limit;
+  input.limit_ = limits.bytes;
+  input.point_limit_ = limits.points;
   input.descriptor_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (input.descriptor_ < 0) {
     throw Error("cannot open " + input.name_ + ": " + std::strerror(errno));
@@ -41,9 +42,9 @@ Byte_input Byte_input::open_file(const std::string& path, std::uint64_t limit) {
   if (S_ISREG(status.st_mode)) {
     input.size_known_ = true;
     input.size_ = static_cast<std::uint64_t>(status.st_size);
-    if (input.size_ > limit) {
-      throw Error(input.name_ + " holds " + size_text(input.size_) +
-                  ", more than the input limit of " + size_text(limit));
+    if (input.size_ > input.limit_) {
+      throw Error(input.name_ + " holds " + size_text(input.size_) + ", more than " +
+                  bytes_limit_text(input.limit_));
     }
   }
   input.buffer_.resize(buffer_size);
@@ -51,8 +52,10 @@ Byte_input Byte_input::open_file(const std::string& path, std::uint64_t limit) {
   return input;
 }
 
-Byte_input Byte_input::from_memory(std::string_view bytes, std::string name, std::size_t chunk) {
+Byte_input Byte_input::from_memory(std::string_view bytes, std::string name, std::size_t chunk,
+                                   std::uint64_t point_limit) {
   Byte_input input;
+  input.point_limit_ = point_limit;
   if (chunk > 0) {
     input.name_ = std::move(name);
     input.size_known_ = true;
@@ -81,6 +84,7 @@ Byte_input::Byte_input(Byte_input&& other) noexcept
       size_(other.size_),
       size_known_(other.size_known_),
       limit_(other.limit_),
+      point_limit_(other.point_limit_),
       buffer_(std::move(other.buffer_)),
       data_(other.data_),
       position_(other.position_),
@@ -112,6 +116,20 @@ void Byte_input::check_count(std::uint64_t count, std::uint64_t bytes_each,
   }
 }
 
+void Byte_input::check_room_for_point(std::uint64_t points) const {
+  if (points >= point_limit_) {
+    throw Error(name_ + " holds more points than " + points_limit_text(point_limit_));
+  }
+}
+
+void Byte_input::check_room_for_face(std::uint64_t faces) const {
+  const std::uint64_t limit = Input_limits{0, point_limit_}.faces();
+  if (faces >= limit) {
+    throw Error(name_ + " holds more triangles than the input limit of " + std::to_string(limit) +
+                " (four per point of SCULPT_MAX_POINTS, which raises it)");
+  }
+}
+
 bool Byte_input::fill(std::size_t wanted) {
   if (end_ - position_ >= wanted) return true;
   if (exhausted_) return false;
@@ -130,7 +148,7 @@ bool Byte_input::fill(std::size_t wanted) {
     }
     end_ += got;
     if (consumed_ + end_ > limit_) {
-      throw Error(name_ + " is longer than the input limit of " + size_text(limit_));
+      throw Error(name_ + " is longer than " + bytes_limit_text(limit_));
     }
   }
   return end_ - position_ >= wanted;

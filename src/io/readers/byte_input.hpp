@@ -10,15 +10,18 @@
 #include <string_view>
 #include <vector>
 
+#include "io/input_limits.hpp"
+
 namespace sculpt::io {
 
 class Byte_input {
  public:
   // Opens a file; throws io::Error if it is missing, unreadable or a directory.
-  static Byte_input open_file(const std::string& path, std::uint64_t limit);
+  static Byte_input open_file(const std::string& path, const Input_limits& limits);
   // Reads from memory that outlives the input. With a chunk size, the bytes are handed over
   // that many at a time, through the same buffer refills as a pipe (for the fuzzers and tests).
-  static Byte_input from_memory(std::string_view bytes, std::string name, std::size_t chunk = 0);
+  static Byte_input from_memory(std::string_view bytes, std::string name, std::size_t chunk = 0,
+                                std::uint64_t point_limit = Input_limits{}.points);
 
   Byte_input(Byte_input&&) noexcept;
   Byte_input& operator=(Byte_input&&) = delete;
@@ -32,6 +35,11 @@ class Byte_input {
   std::uint64_t remaining_bound() const;
   // Throws io::Error unless `count` items of at least `bytes_each` bytes fit in what can follow.
   void check_count(std::uint64_t count, std::uint64_t bytes_each, const std::string& what) const;
+
+  // The budget on points (io/input_limits.hpp): throws io::Error, naming the limit, unless a
+  // reader that holds `points` points, or `faces` triangles, may read one more.
+  void check_room_for_point(std::uint64_t points) const;
+  void check_room_for_face(std::uint64_t faces) const;
 
   // The first up to n bytes of what is left, without consuming them; valid until the next
   // call (a refill may move or grow the buffer).
@@ -57,6 +65,7 @@ class Byte_input {
   std::uint64_t size_ = 0;  // the whole input, when known
   bool size_known_ = false;
   std::uint64_t limit_ = 0;
+  std::uint64_t point_limit_ = Input_limits{}.points;
   std::vector<char> buffer_;
   const char* data_ = nullptr;  // available bytes are data_[position_, end_)
   std::size_t position_ = 0, end_ = 0;

@@ -8,6 +8,12 @@
 
 namespace sculpt::io {
 
+// Appends a vertex within the input's budget on points (io/input_limits.hpp).
+inline void add_vertex(Point_set& set, const Point<3>& point, const Byte_input& input) {
+  input.check_room_for_point(set.points.size());
+  set.points.push_back(point);
+}
+
 // "x y [z]" per line (.xyz .pwn .pts .txt .csv .xy .p2d); forced_dimension 2 or 3, or 0 for the
 // file's own (the column count of its first point line).
 Point_set read_text_points(Byte_input& input, int forced_dimension);

@@ -37,7 +37,7 @@ Point_set read_obj(Byte_input& input) {
           point[k - 1] = value;
         }
       }
-      set.points.push_back(point);
+      add_vertex(set, point, input);
     } else if (words[0] == "f") {
       if (words.size() < 4) throw Error(lines.where() + ": a face needs at least 3 corners");
       polygon.clear();
@@ -56,7 +56,7 @@ Point_set read_obj(Byte_input& input) {
         }
         polygon.push_back(static_cast<int>(vertex));
       }
-      add_polygon(set, polygon);
+      add_polygon(set, polygon, input);
     }
   }
   check_corners(set, input.name(), 1);

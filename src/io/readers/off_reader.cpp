@@ -110,7 +110,7 @@ Point_set read_off(Byte_input& input) {
                     " has a coordinate that is not finite");
       }
     }
-    set.points.push_back(point);
+    add_vertex(set, point, input);
   }
   std::vector<int> polygon;
   for (std::uint64_t f = 0; f < faces; ++f) {
@@ -129,7 +129,7 @@ Point_set read_off(Byte_input& input) {
       }
       polygon.push_back(static_cast<int>(corner));
     }
-    add_polygon(set, polygon);
+    add_polygon(set, polygon, input);
   }
   while (lines.next(words, '#')) {
     if (!words.empty()) throw Error(lines.where() + ": data after the last face");

@@ -376,9 +376,9 @@ Point_set read_ply(Byte_input& input) {
           throw Error(input.name() + ": vertex " + std::to_string(i) +
                       " has a coordinate that is not finite");
         }
-        set.points.push_back(point);
+        add_vertex(set, point, input);
       }
-      add_polygon(set, polygon);
+      add_polygon(set, polygon, input);
     }
   }
   values.expect_end();

@@ -5,8 +5,9 @@
 
 namespace sculpt::io {
 
-void add_polygon(Point_set& set, const std::vector<int>& corners) {
+void add_polygon(Point_set& set, const std::vector<int>& corners, const Byte_input& input) {
   for (std::size_t j = 2; j < corners.size(); ++j) {
+    input.check_room_for_face(set.triangles.size());
     set.triangles.push_back({corners[0], corners[j - 1], corners[j]});
   }
 }

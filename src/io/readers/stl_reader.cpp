@@ -17,13 +17,16 @@ namespace {
 // Numbers the distinct corners of a triangle soup.
 class Vertex_numbering {
  public:
-  explicit Vertex_numbering(Point_set& set) : set_(set) {}
+  Vertex_numbering(Point_set& set, const Byte_input& input) : set_(set), input_(input) {}
 
   int number(Point<3> p) {
     for (double& x : p) x = x == 0 ? 0 : x;  // -0 and 0 are one position
-    const auto [found, added] = numbers_.try_emplace(p, static_cast<int>(set_.points.size()));
-    if (added) set_.points.push_back(p);
-    return found->second;
+    const auto found = numbers_.find(p);
+    if (found != numbers_.end()) return found->second;
+    const int number = static_cast<int>(set_.points.size());
+    add_vertex(set_, p, input_);
+    numbers_.emplace(p, number);
+    return number;
   }
 
  private:
@@ -39,11 +42,13 @@ class Vertex_numbering {
     }
   };
   Point_set& set_;
+  const Byte_input& input_;
   std::unordered_map<Point<3>, int, Hash> numbers_;
 };
 
-void add_triangle(Point_set& set, const int corners[3]) {
+void add_triangle(Point_set& set, const int corners[3], const Byte_input& input) {
   if (corners[0] != corners[1] && corners[1] != corners[2] && corners[0] != corners[2]) {
+    input.check_room_for_face(set.triangles.size());
     set.triangles.push_back({corners[0], corners[1], corners[2]});
   }
 }
@@ -67,7 +72,7 @@ Point_set read_binary_stl(Byte_input& input) {
   input.check_count(count, 50, "triangles of 50 bytes");
   Point_set set;
   set.dimension = 3;
-  Vertex_numbering numbering(set);
+  Vertex_numbering numbering(set, input);
   for (std::uint64_t t = 0; t < count; ++t) {
     unsigned char record[50];
     input.read(record, 50, "an STL triangle");
@@ -81,7 +86,7 @@ Point_set read_binary_stl(Byte_input& input) {
     const std::string where = input.name() + " triangle " + std::to_string(t);
     int corners[3];
     for (int c = 0; c < 3; ++c) corners[c] = numbering.number(checked(values + 3 + 3 * c, where));
-    add_triangle(set, corners);
+    add_triangle(set, corners, input);
   }
   if (!input.at_end()) {
     throw Error(input.name() + ": data after the " + std::to_string(count) +
@@ -95,7 +100,7 @@ Point_set read_ascii_stl(Byte_input& input) {
   std::vector<std::string_view> words;
   Point_set set;
   set.dimension = 3;
-  Vertex_numbering numbering(set);
+  Vertex_numbering numbering(set, input);
   enum class State { outside, in_solid, in_facet, in_loop } state = State::outside;
   std::vector<int> loop;
   auto refuse = [&](const std::string& what) { throw Error(lines.where() + ": " + what); };
@@ -138,7 +143,7 @@ Point_set read_ascii_stl(Byte_input& input) {
       if (loop.size() < 3) refuse("a facet with fewer than 3 vertices");
       for (std::size_t j = 2; j < loop.size(); ++j) {
         const int corners[3] = {loop[0], loop[j - 1], loop[j]};
-        add_triangle(set, corners);
+        add_triangle(set, corners, input);
       }
       state = State::in_facet;
     } else {

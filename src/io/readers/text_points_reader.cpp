@@ -114,7 +114,7 @@ Point_set read_text_points(Byte_input& input, int forced_dimension) {
       }
       p[k] = numbers[k];
     }
-    set.points.push_back(p);
+    add_vertex(set, p, input);
   }
   if (has_count && announced != set.points.size()) {
     throw Error(input.name() + " is truncated or malformed: its first line announces " +

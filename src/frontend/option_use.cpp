@@ -1,0 +1,161 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "frontend/option_use.hpp"
+
+#include <algorithm>
+
+#include "io/point_reader.hpp"
+
+namespace sculpt::frontend {
+namespace {
+
+// An option's name where the user wrote it: "--box-factor", "box_factor=", "\"box_factor\"".
+std::string named(const char* flag, const char* keyword, Spelling spelling) {
+  switch (spelling) {
+    case Spelling::command_line:
+      return flag;
+    case Spelling::python:
+      return std::string(keyword) + "=";
+    case Spelling::shots_file:
+      return std::string("\"") + keyword + "\"";
+  }
+  return flag;
+}
+
+std::string methods_that(bool (*reads)(Method)) {
+  std::string names;
+  for (const char* name : method_names()) {
+    Method method;
+    parse_method(name, method);
+    if (reads(method)) names += (names.empty() ? "" : ", ") + std::string(name);
+  }
+  return names;
+}
+
+// The methods that label poles from seeds and so read a bordered surface's seed sample
+// (core/seeds.hpp): the sculpting methods and the power crust.
+bool labels_from_seeds(Method method) {
+  return sculpts(method) || method == Method::power_crust;
+}
+
+// The methods whose result depends on the bounding box of DT(S ∪ BBV): all but CGAL's two
+// (they triangulate the samples alone) and the NN-crust (nearest neighbours among samples).
+bool reads_box(Method method) {
+  return method != Method::advancing_front && method != Method::alpha_shape &&
+         method != Method::nn_crust;
+}
+
+}  // namespace
+
+std::string unused_reconstruction_option(const Options& options, Spelling spelling) {
+  const Options defaults;
+  const std::string method = to_string(options.method);
+  if (options.alpha != defaults.alpha && options.method != Method::alpha_shape) {
+    return named("--alpha", "alpha", spelling) +
+           " is the radius of the method alpha-shape; the method " + method + " has none";
+  }
+  if (options.rule != defaults.rule && options.method != Method::paper) {
+    return named("--rule", "rule", spelling) +
+           " chooses the surface rule of the method paper; the method " + method + " has its own";
+  }
+  if (options.bordered_seed_sample != defaults.bordered_seed_sample) {
+    if (!labels_from_seeds(options.method)) {
+      return named("--seed-sample", "bordered_seed_sample", spelling) + " seeds the labelling of " +
+             methods_that(labels_from_seeds) + " on a bordered surface; the method " + method +
+             " labels no poles from a seed";
+    }
+    if (options.kind == Surface_kind::closed) {
+      return named("--seed-sample", "bordered_seed_sample", spelling) +
+             " seeds a bordered surface (" + named("--bordered", "kind='bordered'", spelling) +
+             "); a closed one starts from every convex pole";
+    }
+  }
+  if (options.box_factor != defaults.box_factor && !reads_box(options.method)) {
+    return named("--box-factor", "box_factor", spelling) +
+           " sizes the bounding box of DT(S ∪ BBV); the method " + method + " builds none";
+  }
+  return "";
+}
+
+std::string unused_input_option(const std::string& example, int dimension, bool merge_duplicates,
+                                Spelling spelling) {
+  if (example.empty()) return "";
+  if (dimension != 0) {
+    return named("--dim", "dimension", spelling) + " reads a point file as 2D or 3D; the example " +
+           example + " has its own dimension";
+  }
+  if (merge_duplicates) {
+    return named("--merge-duplicates", "merge_duplicates", spelling) +
+           " drops a point file's repeated points; the example " + example + " has none";
+  }
+  return "";
+}
+
+std::string unused_automatic_kind(Method method, Spelling spelling) {
+  if (chooses_kind(method)) return "";
+  return named("--automatic", "kind='automatic'", spelling) + ": only " +
+         methods_that(chooses_kind) + " chooses the kind; the method " + to_string(method) +
+         " reconstructs what it is told (" + named("--closed", "kind='closed'", spelling) + " or " +
+         named("--bordered", "kind='bordered'", spelling) + ")";
+}
+
+std::string unused_ascii(const std::string& output, Spelling spelling) {
+  const std::string extension = io::extension_of(output);
+  if (extension == ".stl" || extension == ".ply") return "";
+  return named("--ascii", "ascii", spelling) + " writes .stl and .ply as text; '" + output +
+         "' is text already";
+}
+
+std::string unused_drawing_option(const Shot& shot, const scene::Scene& scene, Spelling spelling) {
+  const Shot defaults;
+  const auto has_layer = [&](const char* id) {
+    return std::any_of(scene.layers.begin(), scene.layers.end(),
+                       [&](const scene::Layer& layer) { return layer.id == id; });
+  };
+  if (shot.step != defaults.step && shot.stage != "propagation") {
+    return named("--step", "step", spelling) +
+           " replays the labelling at the stage propagation; this is the stage " + shot.stage;
+  }
+  if ((shot.wireframe || shot.smooth) && !has_layer("surface")) {
+    return named(shot.wireframe ? "--wireframe" : "--smooth",
+                 shot.wireframe ? "wireframe" : "smooth", spelling) +
+           " draws a reconstructed surface, at the stage surface of 3D points; this picture "
+           "has none";
+  }
+  if (shot.ball_every != defaults.ball_every && !has_layer("polar-balls")) {
+    return named("--ball-every", "ball_every", spelling) +
+           " thins the polar balls; this picture draws none (" +
+           named("--polar-balls", "polar_balls", spelling) + " draws them at any stage)";
+  }
+  if (scene.dimension == 2 && (shot.yaw != defaults.yaw || shot.pitch != defaults.pitch)) {
+    return named("--yaw", shot.yaw != defaults.yaw ? "yaw" : "pitch", spelling) +
+           " turns a 3D camera; this picture is of a 2D curve";
+  }
+  return "";
+}
+
+std::string unused_animation_option(const Shot& shot, Spelling spelling) {
+  const Shot defaults;
+  if (shot.animate.empty()) {
+    if (shot.frames != defaults.frames || shot.frame_ms != defaults.frame_ms) {
+      return named(shot.frames != defaults.frames ? "--frames" : "--frame-ms",
+                   shot.frames != defaults.frames ? "frames" : "frame_ms", spelling) +
+             " times an animation (" + named("--animate", "animate", spelling) +
+             " replay or stages); this is one picture";
+    }
+    return "";
+  }
+  if (shot.stage != defaults.stage || shot.step != defaults.step) {
+    return named(shot.stage != defaults.stage ? "--stage" : "--step",
+                 shot.stage != defaults.stage ? "stage" : "step", spelling) +
+           " chooses one picture; an animation " +
+           (shot.animate == "replay" ? "replays the labelling step by step"
+                                     : "draws every stage in order");
+  }
+  if (shot.animate == "stages" && shot.frames != defaults.frames) {
+    return named("--frames", "frames", spelling) +
+           " counts a replay's pictures; an animation of the stages has one per stage";
+  }
+  return "";
+}
+
+}  // namespace sculpt::frontend
