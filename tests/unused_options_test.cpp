@@ -97,6 +97,7 @@ TEST(Unused_options, AreRefusedInOneLineThatSaysWhereTheyApply) {
       {{"bench", "--example", "star", "--merge-duplicates"}, "applies to point files"},
       {{"bench", "circle.xy", "--torus", "-5"}, "--torus"},
       {{"bench", "circle.xy", "--json", "out.txt"}, "must end in .json"},
+      {{"bench", "--render", "100", "--json", "r.json"}, "--json writes the rows"},
       {{"figures", "--only", "fig01", "--size", "100x100abc", "--out", "f"}, "--size"},
   };
   for (const auto& refusal : refusals) {

@@ -108,6 +108,13 @@ nlohmann::json median_run(std::vector<nlohmann::json> runs) {
   return good[(good.size() - 1) / 2];
 }
 
+// One job measured `runs` times, each in a fresh process: the median run.
+nlohmann::json median_of_runs(const std::vector<std::string>& arguments, int runs) {
+  std::vector<nlohmann::json> measured;
+  for (int run = 0; run < std::max(1, runs); ++run) measured.push_back(run_job_process(arguments));
+  return median_run(std::move(measured));
+}
+
 double stage_seconds(const nlohmann::json& stats, std::initializer_list<const char*> names) {
   double sum = 0;
   for (const auto& stage : stats["stages"]) {
@@ -559,6 +566,11 @@ int run_bench(const Bench_arguments& given) {
         "bench needs something to measure: a point file, --example or "
         "--torus N (or --edits, --render-triangles N)");
   }
+  if (inputs.empty() && !args.json.empty()) {
+    throw frontend::Usage_error(
+        "--json writes the rows of the inputs measured (a point file, --example, --torus N); "
+        "--edits and --render print their own");
+  }
   std::vector<nlohmann::json> rows;
   for (const auto& [name, source] : inputs) {
     rows.push_back(measure_input(name, source, args));
@@ -579,13 +591,13 @@ int run_bench(const Bench_arguments& given) {
   if (args.edits) {
     std::vector<nlohmann::json> edits;
     for (int n : {200, 1000, 5000})
-      edits.push_back(run_job_process({"--job", "edit", "--torus", std::to_string(n)}));
+      edits.push_back(median_of_runs({"--job", "edit", "--torus", std::to_string(n)}, args.runs));
     for (const auto& edit : edits) count(edit);
     print_edits(edits);
   }
   if (args.render_triangles > 0) {
-    const nlohmann::json rendering =
-        run_job_process({"--job", "render", "--torus", std::to_string(args.render_triangles)});
+    const nlohmann::json rendering = median_of_runs(
+        {"--job", "render", "--torus", std::to_string(args.render_triangles)}, args.runs);
     count(rendering);
     print_rendering(rendering);
   }
