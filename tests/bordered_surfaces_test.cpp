@@ -11,8 +11,8 @@
 #include <set>
 #include <string>
 
-#include "core/automatic_kind.hpp"
 #include "core/spanning_openings.hpp"
+#include "driver/automatic_kind.hpp"
 #include "methods/robust/bordered_surface.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"

@@ -209,8 +209,10 @@ std::vector<Case> cases() {
       // Trailing data, and counts that do not match.
       {"ply-more-vertices.ply", ply_header("ascii", ply_xyz) + "0 0 0\n1 0 0\n0 1 0\n0 0 1\n", 1,
        "data after the last"},
-      {"ply-binary-extra.ply", ply_header("binary_little_endian", ply_xyz) + std::string(37, '\0'),
-       1, "data after the last element"},
+      {"ply-binary-extra.ply",
+       ply_header("binary_little_endian", ply_xyz) + std::string(36, '\0') +
+           std::string("\n\0x", 3),
+       1, "data after the last element (at byte"},
       {"stl-extra.stl", binary_stl("x", 1, {a_triangle, a_triangle}), 1,
        "data after the 1 triangles"},
       {"stl-fewer.stl", binary_stl("x", 3, {a_triangle}), 1, "announces 3 triangles"},

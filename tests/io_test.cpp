@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <filesystem>
 #include <regex>
@@ -500,6 +501,197 @@ TEST(Output_set, CommitsAllOrLeavesNothing) {
     outputs.commit();
   }
   EXPECT_EQ(files_in(folder), (std::vector<std::string>{"a.stl", "b.ele", "b.node"}));
+}
+
+// What other tools write and read past is read too, with a warning that says what was ignored;
+// what nothing can read is refused in one line that says why.
+TEST(Io, PaddingAndAMissingEndsolidAreReadWithAWarning) {
+  std::string ply =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+      "property float y\nproperty float z\nend_header\n";
+  for (const float value : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) {
+    char bytes[4];
+    std::memcpy(bytes, &value, 4);
+    ply.append(bytes, 4);
+  }
+  EXPECT_TRUE(io::read_points_from_memory(ply, ".ply").warnings.empty());
+  const auto padded = io::read_points_from_memory(ply + "\n" + std::string(509, '\0'), ".ply");
+  ASSERT_EQ(padded.points.size(), 3u);
+  ASSERT_EQ(padded.warnings.size(), 1u);
+  EXPECT_NE(padded.warnings[0].find("510 bytes of padding"), std::string::npos)
+      << padded.warnings[0];
+  EXPECT_THROW(io::read_points_from_memory(ply + std::string(8, '\0') + "1", ".ply"), io::Error);
+
+  const std::string facet =
+      "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\n";
+  const auto open_ended = io::read_points_from_memory("solid s\n" + facet, ".stl");
+  EXPECT_EQ(open_ended.points.size(), 3u);
+  ASSERT_EQ(open_ended.warnings.size(), 1u);
+  EXPECT_NE(open_ended.warnings[0].find("without 'endsolid'"), std::string::npos);
+  EXPECT_TRUE(
+      io::read_points_from_memory("solid s\n" + facet + "endsolid s\n", ".stl").warnings.empty());
+  try {
+    io::read_points_from_memory("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", ".stl");
+    ADD_FAILURE() << "a facet cut short was read";
+  } catch (const io::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("ends inside a facet"), std::string::npos) << e.what();
+  }
+}
+
+// A LAS file of the four corners of a tetrahedron (millimetres, offset by 10, 20, 30 m), in the
+// layout of the given version and point data format, with `gap` bytes of variable records.
+std::string las_file(int minor, int format, std::size_t gap = 0) {
+  const std::size_t fixed = minor == 4 ? 375 : minor == 3 ? 235 : 227;
+  const int record = std::vector<int>{20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67}[format];
+  std::string bytes(fixed + gap, '\0');
+  const auto put = [&](std::size_t at, const void* value, std::size_t size) {
+    std::memcpy(&bytes[at], value, size);  // little endian, as this machine
+  };
+  bytes.replace(0, 4, "LASF");
+  bytes[24] = 1;
+  bytes[25] = static_cast<char>(minor);
+  const std::uint16_t header = fixed, length = record;
+  const std::uint32_t offset = fixed + gap, count = 4;
+  const std::uint64_t count64 = 4;
+  const double scale = 0.001, origin[3] = {10, 20, 30};
+  put(94, &header, 2);
+  put(96, &offset, 4);
+  bytes[104] = static_cast<char>(format);
+  put(105, &length, 2);
+  put(107, &count, 4);
+  for (int k = 0; k < 3; ++k) {
+    put(131 + 8 * k, &scale, 8);
+    put(155 + 8 * k, &origin[k], 8);
+  }
+  if (minor == 4) put(247, &count64, 8);
+  for (const std::array<std::int32_t, 3> corner :
+       {std::array<std::int32_t, 3>{0, 0, 0}, {1000, 0, 0}, {0, 1000, 0}, {0, 0, -1000}}) {
+    std::string point(record, '\0');
+    std::memcpy(&point[0], corner.data(), 12);
+    bytes += point;
+  }
+  return bytes;
+}
+
+TEST(Io, ReadsLasOfEveryVersionAndPointFormat) {
+  const std::vector<Point<3>> expected = {{10, 20, 30}, {11, 20, 30}, {10, 21, 30}, {10, 20, 29}};
+  for (const auto& [minor, format] : {std::pair{0, 0}, {2, 1}, {2, 3}, {3, 5}, {4, 6}, {4, 10}}) {
+    SCOPED_TRACE(fmt::format("LAS 1.{} format {}", minor, format));
+    const auto set = io::read_points_from_memory(las_file(minor, format, 54), ".las");
+    ASSERT_EQ(set.points.size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(set.points[i][k], expected[i][k], 1e-9);
+    }
+    // Chunked as from a pipe: the same points.
+    EXPECT_EQ(io::read_points_from_memory(las_file(minor, format, 54), ".las", 7).points,
+              set.points);
+  }
+  const std::string good = las_file(2, 0);
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {"LASX" + good.substr(4), "not a LAS file"},
+      {good.substr(0, 300), "truncated"},
+      {good + "x", "data after the 4 points"},
+      {[&] {
+         auto b = good;
+         b[104] = char(0x80);
+         return b;
+       }(),
+       "compressed (LAZ)"},
+      {[&] {
+         auto b = good;
+         b[104] = 11;
+         return b;
+       }(),
+       "not one of LAS's"},
+      {[&] {
+         auto b = good;
+         b[105] = 19;
+         return b;
+       }(),
+       "too short"},
+      {[&] {
+         auto b = good;
+         b[25] = 9;
+         return b;
+       }(),
+       "LAS version 1.9"},
+      {[&] {
+         auto b = good;
+         std::memset(&b[131], 0, 8);
+         return b;
+       }(),
+       "the scale not 0"},
+      {[&] {
+         auto b = good;
+         b[108] = 1;
+         return b;
+       }(),
+       "announces"},
+  };
+  for (const auto& [bytes, says] : refused) {
+    try {
+      io::read_points_from_memory(bytes, ".las");
+      ADD_FAILURE() << says;
+    } catch (const io::Error& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(Io, ReadsPcdAsTextAndBinarySkippingUnmeasuredPoints) {
+  const std::string header =
+      "# .PCD v0.7\nVERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 4\nTYPE F F F U\n"
+      "COUNT 1 1 1 1\nWIDTH 5\nHEIGHT 1\nVIEWPOINT 0 0 0 1 0 0 0\nPOINTS 5\nDATA ";
+  const std::vector<std::array<float, 3>> points = {
+      {0, 0, 0}, {1, 0, 0}, {NAN, NAN, NAN}, {0, 1, 0}, {0, 0, 1.5f}};
+  std::string text = header + "ascii\n", binary = header + "binary\n";
+  for (const auto& p : points) {
+    text += fmt::format("{} {} {} 4278190080\n", p[0], p[1], p[2]);
+    binary.append(reinterpret_cast<const char*>(p.data()), 12);
+    const std::uint32_t colour = 0xff000000;
+    binary.append(reinterpret_cast<const char*>(&colour), 4);
+  }
+  for (const std::string& file : {text, binary}) {
+    const auto set = io::read_points_from_memory(file, ".pcd");
+    ASSERT_EQ(set.points.size(), 4u);
+    EXPECT_EQ(set.points[3], (Point<3>{0, 0, 1.5}));
+    ASSERT_EQ(set.warnings.size(), 1u);
+    EXPECT_NE(set.warnings[0].find("1 points without a measurement (NaN) skipped"),
+              std::string::npos);
+    EXPECT_EQ(io::read_points_from_memory(file, ".pcd", 5).points, set.points);
+  }
+  const std::vector<std::pair<std::string, std::string>> refused = {
+      {header + "binary_compressed\n", "no Debian package decodes them"},
+      {"FIELDS x y\nSIZE 4 4\nTYPE F F\nCOUNT 1 1\nPOINTS 1\nDATA ascii\n1 2\n", "no field z"},
+      {text.substr(0, text.size() - 20), "truncated"},
+      {text + "1 1 1 0\n", "data after the points"},
+      {binary + "x", "data after the 5 points"},
+      {"FIELDS x y z\nSIZE 4 4 3\nTYPE F F F\nCOUNT 1 1 1\nPOINTS 1\nDATA ascii\n1 2 3\n",
+       "PCD does not define"},
+      {"FIELDS x y z\nSIZE 4 4\n", "gives 2 values for 3 fields"},
+      {"BANANA 3\n", "not a PCD header line"},
+  };
+  for (const auto& [bytes, says] : refused) {
+    try {
+      io::read_points_from_memory(bytes, ".pcd");
+      ADD_FAILURE() << says;
+    } catch (const io::Error& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(Io, CompressedFormatsWithoutADebianDecoderAreNamed) {
+  for (const char* name : {"scan.laz", "scan.e57"}) {
+    try {
+      io::read_points(write_file(name, "LASF"));
+      ADD_FAILURE() << name;
+    } catch (const io::Error& e) {
+      EXPECT_NE(std::string(e.what()).find("no Debian package decodes it"), std::string::npos)
+          << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 // written whole, in a PNG any reader decodes, and compare's grid composed a row of tiles at a
 // time, one row per input.
 #include <gtest/gtest.h>
+#include <zlib.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -44,6 +45,37 @@ render::Image rows_of(const render::Image& image, int top, int count) {
   return band;
 }
 
+// Every chunk's CRC, and the IDAT chunks' zlib stream with its checksum, checked as a strict
+// decoder would (stb's skips both); returns the inflated scanlines' size.
+std::size_t check_chunks(const std::string& png) {
+  EXPECT_EQ(png.compare(0, 8, "\x89PNG\r\n\x1a\n"), 0);
+  std::string compressed;
+  std::size_t at = 8;
+  bool ended = false;
+  const auto big_endian = [&](std::size_t from) {
+    std::uint32_t value = 0;
+    for (int k = 0; k < 4; ++k) value = value << 8 | static_cast<unsigned char>(png[from + k]);
+    return value;
+  };
+  while (at + 12 <= png.size()) {
+    const std::uint32_t length = big_endian(at);
+    const std::string type = png.substr(at + 4, 4);
+    const auto* bytes = reinterpret_cast<const Bytef*>(png.data() + at + 4);
+    EXPECT_EQ(crc32(0, bytes, 4 + length), big_endian(at + 8 + length)) << type << " at " << at;
+    if (type == "IDAT") compressed += png.substr(at + 8, length);
+    ended = type == "IEND";
+    at += 12 + length;
+  }
+  EXPECT_TRUE(ended);
+  EXPECT_EQ(at, png.size());
+  std::vector<Bytef> scanlines(64 << 20);
+  uLongf size = scanlines.size();
+  EXPECT_EQ(uncompress(scanlines.data(), &size, reinterpret_cast<const Bytef*>(compressed.data()),
+                       compressed.size()),
+            Z_OK);
+  return size;
+}
+
 TEST(Png_bands, GiveThePicturePixelForPixel) {
   const render::Image picture = test_picture(173, 91);
   const std::string path = testing::output_path("bands.png");
@@ -59,6 +91,8 @@ TEST(Png_bands, GiveThePicturePixelForPixel) {
   EXPECT_EQ(read.rgba, picture.rgba);
   // Filtered and compressed: far smaller than the raw pixels for the flat and smooth parts.
   EXPECT_LT(std::filesystem::file_size(path), picture.rgba.size());
+  // A filter byte and the pixels per row, every checksum right.
+  EXPECT_EQ(check_chunks(testing::read_file(path)), std::size_t(91) * (1 + 4 * 173));
 }
 
 TEST(Png_bands, AnUnfinishedPictureLeavesNoFile) {
@@ -87,6 +121,7 @@ TEST(Png_bands, CompareDrawsARowPerInput) {
   const render::Image read = render::read_png(grid);
   ASSERT_EQ(read.width, 2 * 64);
   ASSERT_EQ(read.height, 2 * 48);
+  EXPECT_EQ(check_chunks(testing::read_file(grid)), std::size_t(96) * (1 + 4 * 128));
   // Every tile holds a drawing: pixels of more than one colour.
   for (int row = 0; row < 2; ++row) {
     for (int column = 0; column < 2; ++column) {

@@ -21,6 +21,7 @@ namespace fs = std::filesystem;
 struct Refusal {
   std::vector<std::string> arguments;
   std::string says;  // a part of the one line
+  int exit_code = 2;
 };
 
 // The inputs, in a folder of the test's own (ctest runs the tests side by side).
@@ -50,18 +51,25 @@ fs::path inputs_folder(const std::string& name) {
 
 TEST(Unused_options, AreRefusedInOneLineThatSaysWhereTheyApply) {
   const fs::path folder = inputs_folder("refused");
+  // Exit code 2 for a usage error of the command line; 1 for what a file says (a shots file,
+  // a camera file).
   const std::vector<Refusal> refusals = {
       // The reconstruction's options, by method and kind.
       {{"reconstruct", "sphere.xyz", "--alpha", "0.3", "-o", "s.ply"}, "--alpha is the radius"},
-      {{"reconstruct", "sphere.xyz", "--rule", "extraction", "-o", "s.ply"}, "method paper"},
+      {{"reconstruct", "sphere.xyz", "--closed", "--rule", "extraction", "-o", "s.ply"},
+       "robust carves a closed one"},
+      {{"reconstruct", "sphere.xyz", "--method", "crust", "--rule", "skin", "-o", "s.ply"},
+       "crust has its own"},
       {{"reconstruct", "sphere.xyz", "--closed", "--seed-sample", "3", "-o", "s.ply"},
+       "a closed one starts from every convex pole"},
+      {{"reconstruct", "sphere.xyz", "--method", "paper", "--seed-sample", "3", "-o", "s.ply"},
        "a closed one starts from every convex pole"},
       {{"reconstruct", "sphere.xyz", "--method", "crust", "--bordered", "--seed-sample", "3", "-o",
         "s.ply"},
        "labels no poles from a seed"},
       {{"reconstruct", "sphere.xyz", "--method", "advancing-front", "--box-factor", "20", "-o",
         "s.ply"},
-       "builds none"},
+       "triangulates the samples alone"},
       {{"reconstruct", "sphere.xyz", "--method", "paper", "--automatic", "-o", "s.ply"},
        "only robust chooses the kind"},
       {{"reconstruct", "sphere.xyz", "--ascii", "-o", "s.obj"}, "is text already"},
@@ -81,9 +89,9 @@ TEST(Unused_options, AreRefusedInOneLineThatSaysWhereTheyApply) {
       {{"render", "circle.xy", "--animate", "stages", "--frames", "10", "-o", "x.webp"},
        "one per stage"},
       {{"render", "circle.xy", "--alpha", "0.3", "-o", "x.png"}, "--alpha is the radius"},
-      {{"render", "circle.xy", "--camera", "camera3.json", "-o", "x.png"}, "is a 3D camera"},
+      {{"render", "circle.xy", "--camera", "camera3.json", "-o", "x.png"}, "is a 3D camera", 1},
       {{"render", "--shots", "shots.json", "--size", "300x300"}, "--size does not apply"},
-      {{"render", "--shots", "shots.json"}, "no field \"stag\""},
+      {{"render", "--shots", "shots.json"}, "no field \"stag\"", 1},
       // The comparisons' and benchmarks' options, by their inputs.
       {{"compare", "sphere.xyz", "--methods", "robust", "--tile", "100x100"}, "there are none"},
       {{"compare", "--example", "star", "--methods", "robust", "--bordered"},
@@ -95,17 +103,18 @@ TEST(Unused_options, AreRefusedInOneLineThatSaysWhereTheyApply) {
       {{"bench", "sphere.xyz", "--methods", "nn-crust"},
        "nn-crust reconstructs curves (2D points) only"},
       {{"bench", "--example", "star", "--merge-duplicates"}, "applies to point files"},
-      {{"bench", "circle.xy", "--torus", "-5"}, "--torus"},
+      {{"bench", "circle.xy", "--torus", "-5"}, "'-5' is not a whole number from 1"},
       {{"bench", "circle.xy", "--json", "out.txt"}, "must end in .json"},
       {{"bench", "--render", "100", "--json", "r.json"}, "--json writes the rows"},
-      {{"figures", "--only", "fig01", "--size", "100x100abc", "--out", "f"}, "--size"},
+      {{"figures", "--only", "fig01", "--size", "100x100abc", "--out", "f"},
+       "--size: the size must be WIDTHxHEIGHT"},
   };
   for (const auto& refusal : refusals) {
     std::string command;
     for (const auto& argument : refusal.arguments) command += argument + " ";
     SCOPED_TRACE(command);
     const testing::Command_run run = testing::run_sculpt(folder, refusal.arguments);
-    EXPECT_GE(run.exit_code, 1) << run.err;
+    EXPECT_EQ(run.exit_code, refusal.exit_code) << run.err;
     EXPECT_EQ(testing::lines(run.err), 1) << run.err;
     EXPECT_NE(run.err.find(refusal.says), std::string::npos) << run.err;
     EXPECT_EQ(run.err.find("internal error"), std::string::npos) << run.err;
@@ -131,6 +140,16 @@ TEST(Unused_options, WhereTheyApplyTheyAreTaken) {
       {"render", "sphere.xyz", "--stage", "poles", "--polar-balls", "--ball-every", "5", "-o",
        "g.png"},
       {"render", "circle.xy", "--animate", "stages", "--frame-ms", "500", "-o", "h.webp"},
+      // The box of DT(S ∪ BBV) drawn, whatever the method; the edges alone; the paper's rule
+      // where robust inserts poles as the paper does.
+      {"render", "circle.xy", "--method", "nn-crust", "--stage", "delaunay", "--box-factor", "2",
+       "-o", "i.png"},
+      {"render", "sphere.xyz", "--method", "alpha-shape", "--stage", "delaunay", "--box-factor",
+       "3", "-o", "j.png"},
+      {"render", "sphere.xyz", "--wireframe", "--layers", "wireframe,samples", "-o", "k.png"},
+      {"reconstruct", "--example", "saddle", "--rule", "skin", "-o", "l.ply"},
+      {"reconstruct", "sphere.xyz", "--method", "paper", "--bordered", "--seed-sample", "3", "-o",
+       "m.ply"},
   };
   for (const auto& arguments : accepted) {
     std::string command;

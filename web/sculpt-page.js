@@ -203,7 +203,7 @@ const page = {
   chooseFile() {
     const input = document.createElement('input');
     input.type = 'file';
-    input.accept = '.xyz,.pts,.txt,.csv,.pwn,.xy,.p2d,.ply,.off,.obj,.stl';
+    input.accept = '.xyz,.pts,.txt,.csv,.pwn,.xy,.p2d,.ply,.off,.obj,.stl,.las,.pcd';
     input.addEventListener('change', async () => {
       const file = input.files[0];
       if (file) await openFile(file);

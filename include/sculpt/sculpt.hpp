@@ -58,7 +58,7 @@ using Facet = std::array<int, D>;
 
 // Closed (the shape bounds a solid), bordered (it ends somewhere: a sheet, a part scanned from
 // one side), or automatic: the robust method reconstructs closed first and, when the result
-// spans openings, bordered too, and keeps the one with fewer defects (core/automatic_kind.hpp);
+// spans openings, bordered too, and keeps the one with fewer defects (driver/automatic_kind.hpp);
 // the other methods take automatic as closed. A result's kind is never automatic: its options
 // and statistics say which was kept, and Statistics::kind_chosen_automatically that the robust
 // method chose it.

@@ -109,7 +109,15 @@ class Comparison {
       throw frontend::Usage_error("--reference goes with one input, not " +
                                   std::to_string(inputs.size()));
     }
-    if (!args_.reference.empty()) given_reference_ = read_reference(args_.reference);
+    if (!args_.reference.empty()) {
+      given_reference_ = read_reference(args_.reference);
+      // Before any measuring: a reference is a surface's, for 3D points.
+      const auto& source = inputs.front().second;
+      const bool example = source.front() == "--example";
+      const frontend::Input input = frontend::load_input(
+          example ? "" : source[1], example ? source[1] : "", 0, args_.inputs.merge_duplicates);
+      reference_of(input, given_reference_);
+    }
     Bench_arguments measuring = args_.inputs;
     measuring.advancing_front = false;  // the method advancing-front is CGAL's, measured as one
     // Every measuring process first, while this one is small; then the results again here.

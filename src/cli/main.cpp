@@ -22,6 +22,7 @@
 #include "io/point_reader.hpp"
 #include "io/temporary_files.hpp"
 #include "io/writers.hpp"
+#include "progress_display.hpp"
 #include "render_command.hpp"
 #include "report.hpp"
 #include "shapes/shapes.hpp"
@@ -46,38 +47,8 @@ using frontend::exit_bad_usage;
 
 using frontend::Usage_error;
 
-// The stage being run, on one line of a terminal that is rewritten in place and erased before
-// anything else is printed: a failure is still one line. Nothing when stderr is not a terminal.
-bool status_shown = false;
-
-void show_status(const std::string& text) {
-  std::cerr << '\r' << text << "\033[K" << std::flush;
-  status_shown = true;
-}
-
-void clear_status() {
-  if (status_shown) std::cerr << "\r\033[K" << std::flush;
-  status_shown = false;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The stage being run and how far it is, on a terminal, for runs long enough to wonder about.
-std::function<bool(const Progress&)> progress_printer(std::size_t samples, bool quiet) {
-  if (quiet || !isatty(STDERR_FILENO) || samples < 20000) return {};
-  return [last = std::string(), percent = -1](const Progress& progress) mutable {
-    if (!progress.stage) return true;
-    // The whole run's share done, and the stage it is in.
-    const int now = static_cast<int>(100 * progress.overall);
-    if (last != progress.stage || now != percent) {
-      last = progress.stage;
-      percent = now;
-      show_status(fmt::format("sculpt: {}% ({})", now, last));
-    }
-    return true;
-  };
 }
 
 // Fails before any work is done if an output's extension is not one Sculpt can write.
@@ -114,6 +85,7 @@ void check_options_apply(const Reconstruct_arguments& args, Surface_kind kind) {
   options.box_factor = args.box_factor;
   options.alpha = args.alpha;
   options.bordered_seed_sample = args.seed_sample;
+  options.keep_triangulations = false;  // as the run below
   const auto spelling = frontend::Spelling::command_line;
   for (const std::string& problem :
        {frontend::unused_reconstruction_option(options, spelling),
@@ -137,10 +109,10 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   options.bordered_seed_sample = args.seed_sample;
   options.keep_triangulations = false;
   options.keep_solid = !args.solid.empty();
-  options.progress = progress_printer(samples.size(), args.quiet);
+  options.progress = progress_display(samples.size(), args.quiet);
 
   const Reconstruction<D> result = reconstruct(samples, options);
-  clear_status();
+  clear_progress_display();
   run.rule = surface_rule_name(result.options, D);
 
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
@@ -186,6 +158,8 @@ int run_reconstruct(const Reconstruct_arguments& args) {
   const frontend::Input input =
       frontend::load_input(args.input, args.example, args.dimension, args.merge_duplicates);
   check_output_formats(args, input.dimension());
+  for (const std::string& warning : input.warnings)
+    std::cerr << "sculpt: warning: " << warning << '\n';
   Run_description run;
   run.input = input.description;
   run.box_factor = args.box_factor;
@@ -379,7 +353,7 @@ int main(int argc, char** argv) {
   sculpt::io::remove_temporaries_on_signals();
   // Every failure is one line on stderr, after the status line is erased.
   const auto fail = [](int code, const std::string& message) {
-    clear_status();
+    clear_progress_display();
     std::cerr << "sculpt: " << sculpt::frontend::one_line(message) << '\n';
     return code;
   };

@@ -110,6 +110,7 @@ void render_all(frontend::Shot_renderer& renderer, const std::vector<Shot>& shot
   std::vector<std::string> outputs, inputs{shots_file};
   for (const Shot& shot : shots) {
     frontend::check_shot(shot);
+    frontend::Shot_renderer::check_options(shot, spelling);
     outputs.insert(outputs.end(), {shot.output, shot.save_camera});
     inputs.insert(inputs.end(), {shot.input, shot.camera_file});
   }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The one place the 2D algorithm is compiled: everything else links against it.
-#include "../core/automatic_kind.hpp"
-#include "../core/reconstruction.hpp"
+#include "../driver/automatic_kind.hpp"
+#include "../driver/reconstruction.hpp"
 #include "traits_2.hpp"
 
 namespace sculpt {

@@ -145,7 +145,8 @@ int generate(const Options& options) {
   if (chosen.empty())
     throw io::Error("no figure '" + options.only + "' (figures are fig01 ... fig15)");
   // Every output checked before the work, and all of them or none left at the end: a failed
-  // run (a full disk, a signal) leaves the folder as it was, or no folder.
+  // run (a full disk, an error) leaves the folder as it was, or no folder; a signal removes
+  // the files (io/temporary_files.hpp) but leaves a folder the run made, empty.
   io::Output_folder folder(options.out);
   const auto in_folder = [&](const std::string& name) {
     return (std::filesystem::path(options.out) / name).string();

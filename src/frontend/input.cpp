@@ -31,6 +31,7 @@ Input load_input(const std::string& path, const std::string& example, int forced
   const auto start = std::chrono::steady_clock::now();
   io::Point_set set = io::read_points(path);
   input.description = path;
+  input.warnings = set.warnings;
   if (merge_duplicates) {
     const std::size_t merged = io::merge_duplicates(set);
     if (merged > 0)

@@ -17,6 +17,8 @@ struct Input {
   // A 3D mesh file's own triangles, on the same vertex indices: what a reconstruction of its
   // vertices can be compared with. Empty for point files and examples.
   std::vector<Facet<3>> reference_triangles;
+  // What the reader read past (io::Point_set::warnings), for the front end to say.
+  std::vector<std::string> warnings;
 
   int dimension() const { return points.index() == 0 ? 2 : 3; }
 };

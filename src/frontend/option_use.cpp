@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "core/stage_plan.hpp"
 #include "io/point_reader.hpp"
 
 namespace sculpt::frontend {
@@ -37,11 +38,11 @@ bool labels_from_seeds(Method method) {
   return sculpts(method) || method == Method::power_crust;
 }
 
-// The methods whose result depends on the bounding box of DT(S ∪ BBV): all but CGAL's two
-// (they triangulate the samples alone) and the NN-crust (nearest neighbours among samples).
-bool reads_box(Method method) {
-  return method != Method::advancing_front && method != Method::alpha_shape &&
-         method != Method::nn_crust;
+// The rule of surface extraction: the paper's, and the robust method's wherever it inserts
+// poles as the paper does (a bordered 3D surface; the automatic kind may try one).
+bool reads_rule(const Options& options) {
+  return options.method == Method::paper ||
+         (options.method == Method::robust && options.kind != Surface_kind::closed);
 }
 
 }  // namespace
@@ -53,9 +54,11 @@ std::string unused_reconstruction_option(const Options& options, Spelling spelli
     return named("--alpha", "alpha", spelling) +
            " is the radius of the method alpha-shape; the method " + method + " has none";
   }
-  if (options.rule != defaults.rule && options.method != Method::paper) {
+  if (options.rule != defaults.rule && !reads_rule(options)) {
     return named("--rule", "rule", spelling) +
-           " chooses the surface rule of the method paper; the method " + method + " has its own";
+           " chooses the facets of the surface after the paper's pole insertion (paper, and "
+           "robust on a bordered surface); the method " +
+           method + (options.method == Method::robust ? " carves a closed one" : " has its own");
   }
   if (options.bordered_seed_sample != defaults.bordered_seed_sample) {
     if (!labels_from_seeds(options.method)) {
@@ -63,15 +66,20 @@ std::string unused_reconstruction_option(const Options& options, Spelling spelli
              methods_that(labels_from_seeds) + " on a bordered surface; the method " + method +
              " labels no poles from a seed";
     }
-    if (options.kind == Surface_kind::closed) {
+    // A method that does not choose the kind reconstructs an automatic one as closed.
+    if (options.kind == Surface_kind::closed ||
+        (options.kind == Surface_kind::automatic && !chooses_kind(options.method))) {
       return named("--seed-sample", "bordered_seed_sample", spelling) +
              " seeds a bordered surface (" + named("--bordered", "kind='bordered'", spelling) +
              "); a closed one starts from every convex pole";
     }
   }
-  if (options.box_factor != defaults.box_factor && !reads_box(options.method)) {
+  // The box is DT(S ∪ BBV)'s: CGAL's methods build it only when the triangulations are kept
+  // (for the pictures of the shared stages), core/stage_plan.hpp.
+  if (options.box_factor != defaults.box_factor && !builds_shared_stages(options)) {
     return named("--box-factor", "box_factor", spelling) +
-           " sizes the bounding box of DT(S ∪ BBV); the method " + method + " builds none";
+           " sizes the bounding box of DT(S ∪ BBV); the method " + method +
+           " triangulates the samples alone";
   }
   return "";
 }
@@ -115,7 +123,8 @@ std::string unused_drawing_option(const Shot& shot, const scene::Scene& scene, S
     return named("--step", "step", spelling) +
            " replays the labelling at the stage propagation; this is the stage " + shot.stage;
   }
-  if ((shot.wireframe || shot.smooth) && !has_layer("surface")) {
+  if ((shot.smooth && !has_layer("surface")) ||
+      (shot.wireframe && !has_layer("surface") && !has_layer("wireframe"))) {
     return named(shot.wireframe ? "--wireframe" : "--smooth",
                  shot.wireframe ? "wireframe" : "smooth", spelling) +
            " draws a reconstructed surface, at the stage surface of 3D points; this picture "

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "frontend/shot_renderer.hpp"
 
+#include "frontend/command_line.hpp"
 #include "frontend/input.hpp"
 #include "frontend/option_use.hpp"
 #include "io/io_error.hpp"
@@ -9,11 +10,22 @@ namespace sculpt::frontend {
 
 namespace {
 
-void refuse_if(const std::string& problem) {
-  if (!problem.empty()) throw io::Error(problem);
+// A refusal in the caller's words: a usage error (exit 2) on the command line, bad input (exit
+// 1) in a shots file.
+void refuse_if(const std::string& problem, Spelling spelling) {
+  if (problem.empty()) return;
+  if (spelling == Spelling::command_line) throw Usage_error(problem);
+  throw io::Error(problem);
 }
 
 }  // namespace
+
+void Shot_renderer::check_options(const Shot& shot, Spelling spelling) {
+  refuse_if(unused_animation_option(shot, spelling), spelling);
+  refuse_if(unused_input_option(shot.example, shot.dimension, shot.merge_duplicates, spelling),
+            spelling);
+  refuse_if(unused_reconstruction_option(options_of(shot), spelling), spelling);
+}
 
 scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* camera,
                                    Spelling spelling) {
@@ -21,14 +33,13 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* camer
   if (shot.input.empty() == shot.example.empty()) {
     throw io::Error("a shot needs an input file or an example (one of them)");
   }
-  refuse_if(unused_animation_option(shot, spelling));
-  refuse_if(unused_input_option(shot.example, shot.dimension, shot.merge_duplicates, spelling));
-  refuse_if(unused_reconstruction_option(options_of(shot), spelling));
+  check_options(shot, spelling);
   const Any_reconstruction& shown = reconstruction(shot);
   check_shot_applies(shot, shown);  // before a renderer is made
   // What a picture draws says which drawing options do something (an animation's pictures
   // differ, each stage its own).
-  if (shot.animate.empty()) refuse_if(unused_drawing_option(shot, scene_of(shot, shown), spelling));
+  if (shot.animate.empty())
+    refuse_if(unused_drawing_option(shot, scene_of(shot, shown), spelling), spelling);
   if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
   return write_shot(*renderer_, shot, shown, camera);
 }

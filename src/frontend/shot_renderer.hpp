@@ -23,6 +23,10 @@ class Shot_renderer {
   // The reconstruction a shot shows (made once per input and options).
   const Any_reconstruction& reconstruction(const Shot& shot);
 
+  // What can be refused of a shot's options before any work (frontend/option_use.hpp): a
+  // usage error on the command line, io::Error in a shots file.
+  static void check_options(const Shot& shot, Spelling spelling);
+
  private:
   // The reconstruction options a shot asks for; throws io::Error for an unknown method or rule.
   static Options options_of(const Shot& shot);

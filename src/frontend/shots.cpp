@@ -281,9 +281,14 @@ scene::Scene scene_of(const Shot& shot, const Any_reconstruction& reconstruction
 
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* inline_camera) {
+  return draw_scene(renderer, shot, scene_of(shot, reconstruction), inline_camera);
+}
+
+Picture draw_scene(render::Picture_renderer& renderer, const Shot& shot, scene::Scene scene,
+                   const nlohmann::json* inline_camera) {
   const auto [width, height] = parse_size(shot.size);
   Picture picture;
-  picture.scene = scene_of(shot, reconstruction);
+  picture.scene = std::move(scene);
   if (!shot.title.empty()) picture.scene.title = shot.title;
   picture.camera =
       render::fit(picture.scene, float(width) / float(height), shot.zoom, shot.yaw, shot.pitch);

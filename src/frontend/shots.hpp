@@ -54,6 +54,10 @@ scene::Scene scene_of(const Shot& shot, const Any_reconstruction& reconstruction
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr);
 
+// The same, of a scene already built by scene_of (what was checked is what is drawn).
+Picture draw_scene(render::Picture_renderer& renderer, const Shot& shot, scene::Scene scene,
+                   const nlohmann::json* camera = nullptr);
+
 // What can be known of a shot before any work: its output's format and folder, its stage, size
 // and animation. Throws io::Error with a one-line message.
 void check_shot(const Shot& shot);

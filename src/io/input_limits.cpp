@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "input_limits.hpp"
 
+#include <climits>
+#include <cstdint>
 #include <cstdlib>
 
 #include "io_error.hpp"
@@ -8,7 +10,8 @@
 namespace sculpt::io {
 namespace {
 
-std::uint64_t from_environment(const char* variable, std::uint64_t fallback) {
+std::uint64_t from_environment(const char* variable, std::uint64_t fallback,
+                               std::uint64_t largest) {
   const char* text = std::getenv(variable);
   if (!text || !*text) return fallback;
   std::uint64_t value = 0;
@@ -20,6 +23,10 @@ std::uint64_t from_environment(const char* variable, std::uint64_t fallback) {
     value = value * 10 + std::uint64_t(*c - '0');
   }
   if (value == 0) throw Error(std::string(variable) + " must be a whole number above zero, not 0");
+  if (value > largest) {
+    throw Error(std::string(variable) + " must be at most " + std::to_string(largest) + ", not " +
+                text);
+  }
   return value;
 }
 
@@ -35,8 +42,9 @@ std::string size_text(std::uint64_t bytes) {
 
 Input_limits input_limits() {
   Input_limits limits;
-  limits.bytes = from_environment("SCULPT_MAX_INPUT_BYTES", limits.bytes);
-  limits.points = from_environment("SCULPT_MAX_POINTS", limits.points);
+  limits.bytes = from_environment("SCULPT_MAX_INPUT_BYTES", limits.bytes, UINT64_MAX);
+  // Points and faces are numbered with int (the readers, the triangulations' indices).
+  limits.points = from_environment("SCULPT_MAX_POINTS", limits.points, INT_MAX);
   return limits;
 }
 

@@ -18,7 +18,8 @@ struct Input_limits {
   // A 3D reconstruction holds about 1 KB per sample (its Delaunay triangulation has some
   // 6.5 tetrahedra per point, then poles and labels): 50 million samples would need some 50 GB.
   std::uint64_t points = 50'000'000;
-  std::uint64_t faces() const { return 4 * points; }  // polygons split into triangles
+  // Polygons split into triangles; at most INT_MAX, as the points (input_limits() says so).
+  std::uint64_t faces() const { return points > (UINT64_MAX >> 2) ? UINT64_MAX : 4 * points; }
 };
 
 // The defaults, or what the environment sets. Throws io::Error for a value that is not a whole

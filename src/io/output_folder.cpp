@@ -28,11 +28,12 @@ Output_folder::Output_folder(const std::string& path) {
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
     std::error_code error;
-    if (!fs::create_directory(*it, error) && error) {
+    const bool made = fs::create_directory(*it, error);
+    if (error) {
       remove_created();  // the destructor does not run for a constructor that throws
       throw Error("cannot make the folder '" + path + "': " + error.message());
     }
-    created_.push_back(it->string());
+    if (made) created_.push_back(it->string());  // not one that appeared meanwhile
   }
 }
 

@@ -20,6 +20,10 @@ Point_set read_format(Byte_input& input, const std::string& extension) {
     set = read_ply(input);
   } else if (extension == ".stl") {
     set = read_stl(input);
+  } else if (extension == ".las") {
+    set = read_las(input);
+  } else if (extension == ".pcd") {
+    set = read_pcd(input);
   } else if (extension == ".xy" || extension == ".p2d") {
     set = read_text_points(input, 2);
   } else {
@@ -31,8 +35,8 @@ Point_set read_format(Byte_input& input, const std::string& extension) {
 }
 
 bool known_extension(const std::string& extension) {
-  for (const char* known : {".off", ".obj", ".ply", ".stl", ".xy", ".p2d", ".xyz", ".pwn", ".pts",
-                            ".txt", ".csv", ""}) {
+  for (const char* known : {".off", ".obj", ".ply", ".stl", ".las", ".pcd", ".xy", ".p2d", ".xyz",
+                            ".pwn", ".pts", ".txt", ".csv", ""}) {
     if (extension == known) return true;
   }
   return false;
@@ -52,9 +56,16 @@ std::string extension_of(const std::string& path) {
 
 Point_set read_points(const std::string& path, const Input_limits& limits) {
   const std::string extension = extension_of(path);
+  if (extension == ".laz" || extension == ".e57") {
+    // Both need a decoder that Debian does not package (LASzip, libE57Format).
+    throw Error("'" + printable(path, 1000) + "' is " +
+                (extension == ".laz" ? std::string("compressed LAS (LAZ)") : std::string("E57")) +
+                ", which Sculpt cannot read: no Debian package decodes it; convert it to .ply "
+                "first (e.g. PDAL or CloudCompare)");
+  }
   if (!known_extension(extension)) {
     throw Error("unknown point format '" + printable(extension) + "' of '" + printable(path, 1000) +
-                "' (known: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl)");
+                "' (known: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd)");
   }
   Byte_input input = Byte_input::open_file(path, limits);
   return read_format(input, extension);

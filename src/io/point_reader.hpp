@@ -5,6 +5,7 @@
 //           CGAL's .pwn, are tolerated)
 //   meshes: .ply (ascii or binary, any scalar type) .off (and COFF, NOFF, STOFF, 4OFF, nOFF)
 //           .obj (a point cloud of `v` lines too) .stl (ascii or binary)
+//   scans:  .las (LAS 1.0-1.4, uncompressed) .pcd (PCL's, ascii or binary)
 // The readers are Sculpt's own (src/io/readers), written to survive any bytes: every count is
 // checked against the bytes that can follow it, files are streamed, and all are fuzzed.
 #pragma once
@@ -28,6 +29,9 @@ struct Point_set {
   // A mesh file's faces, as triangles (polygons split into fans): the reference a
   // reconstruction of its vertices is compared with (sculpt bench, the tests). Empty otherwise.
   std::vector<std::array<int, 3>> triangles;
+  // What was read past and how (padding after a PLY's last element, an STL without endsolid):
+  // one line each, for the front end to show as a warning.
+  std::vector<std::string> warnings;
 };
 
 // Throws io::Error with a one-line message on any problem with the file, and for a file or a

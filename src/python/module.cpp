@@ -43,6 +43,10 @@ using frontend::Any_reconstruction;
 struct Result {
   Any_reconstruction reconstruction;
   Options options;
+  // The main arrays as the caller's own: writable (Open3D's constructors refuse read-only
+  // arrays), made on first access and the same object afterwards. Changing them changes nothing
+  // of the reconstruction, which render() and write() draw and write.
+  py::object samples_array, surface_array;
   int dimension() const { return reconstruction.index() == 0 ? 2 : 3; }
 };
 
@@ -124,18 +128,31 @@ void drop_repeated(std::vector<Point>& points) {
 }
 
 // The progress callback seen from the core's side, on the thread that reconstructs: it takes the
-// GIL to call the Python callable (stage, fraction) -> falsy-but-not-None to cancel, and checks
-// for Ctrl-C. An exception in the callable cancels the run and is raised again afterwards.
+// GIL to call the Python callable (stage, fraction[, overall]) -> falsy-but-not-None to cancel,
+// and checks for Ctrl-C. An exception in the callable cancels the run and is raised again
+// afterwards.
 struct Progress_bridge {
-  py::object callback;  // None for no callable
+  py::object callback;        // None for no callable
+  bool with_overall = false;  // the callable takes a third argument: the whole run's fraction
   std::optional<py::error_already_set> error;
+
+  explicit Progress_bridge(py::object callable) : callback(std::move(callable)) {
+    if (callback.is_none()) return;
+    try {  // a callable of three arguments gets the overall fraction too (a tqdm bar)
+      py::module_::import("inspect").attr("signature")(callback).attr("bind")(0, 0, 0);
+      with_overall = true;
+    } catch (py::error_already_set&) {
+    }
+  }
 
   bool operator()(const Progress& progress) {
     py::gil_scoped_acquire gil;
     try {
       if (PyErr_CheckSignals() != 0) throw py::error_already_set();
       if (callback.is_none()) return true;
-      const py::object answer = callback(progress.stage, progress.fraction);
+      const py::object answer = with_overall
+                                    ? callback(progress.stage, progress.fraction, progress.overall)
+                                    : callback(progress.stage, progress.fraction);
       return answer.is_none() || PyObject_IsTrue(answer.ptr()) == 1;
     } catch (py::error_already_set& e) {
       error = std::move(e);
@@ -187,8 +204,7 @@ Result reconstruct_points(const py::object& points, const std::string& method,
   Result result;
   result.options = options_from(method, kind, rule, box_factor, alpha, bordered_seed_sample,
                                 keep_triangulations);
-  auto bridge = std::make_shared<Progress_bridge>();
-  bridge->callback = progress;
+  auto bridge = std::make_shared<Progress_bridge>(progress);
   Options options = result.options;
   options.progress = [bridge](const Progress& p) { return (*bridge)(p); };
   try {
@@ -230,12 +246,13 @@ py::array render_stage(const Result& result, const frontend::Shot& shot) {
     py::gil_scoped_release released;
     Shared_renderer& shared = shared_renderer();
     std::lock_guard<std::mutex> lock(shared.mutex);
-    if (const std::string problem = frontend::unused_drawing_option(
-            shot, frontend::scene_of(shot, result.reconstruction), frontend::Spelling::python);
+    scene::Scene scene = frontend::scene_of(shot, result.reconstruction);
+    if (const std::string problem =
+            frontend::unused_drawing_option(shot, scene, frontend::Spelling::python);
         !problem.empty())
       throw Input_error(problem);
     if (!shared.renderer) shared.renderer = std::make_unique<render::Headless_renderer>();
-    picture = frontend::draw_shot(*shared.renderer, shot, result.reconstruction);
+    picture = frontend::draw_scene(*shared.renderer, shot, std::move(scene));
   }
   const auto& image = picture.image;
   py::array_t<std::uint8_t> pixels(
@@ -460,10 +477,15 @@ PYBIND11_MODULE(_sculpt, m) {
       [](const std::filesystem::path& path, int dimension, bool merge_duplicates) {
         if (dimension != 0 && dimension != 2 && dimension != 3)
           throw Input_error("the dimension is 0 (the file's), 2 or 3");
-        auto points =
-            points_array(frontend::load_input(path.string(), "", dimension, merge_duplicates));
+        const frontend::Input input =
+            frontend::load_input(path.string(), "", dimension, merge_duplicates);
         io::remember_input(path.string());  // no write() may replace it
-        return points;
+        // What the reader read past, as Python warns: once per place, catchable, filterable.
+        for (const std::string& warning : input.warnings) {
+          if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0)
+            throw py::error_already_set();
+        }
+        return points_array(input);
       },
       py::arg("path"), py::arg("dimension") = 0, py::arg("merge_duplicates") = false,
       "The points of a file (.xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl; a mesh gives "
@@ -490,8 +512,9 @@ PYBIND11_MODULE(_sculpt, m) {
       "reconstruct --merge-duplicates` does to a file.");
 
   py::class_<Result>(m, "Reconstruction",
-                     "A reconstruction: the samples, the surface (or curve), the solid, every "
-                     "stage as read-only numpy arrays, the statistics and the verdict.")
+                     "A reconstruction: the samples and the surface (or curve) as writable arrays "
+                     "of your own, the solid and every stage as read-only numpy views, the "
+                     "statistics and the verdict.")
       .def_property_readonly("dimension", &Result::dimension, "2 (a curve) or 3 (a surface).")
       .def_property_readonly(
           "method", [](const Result& r) { return to_string(r.options.method); }, "Its name.")
@@ -500,14 +523,17 @@ PYBIND11_MODULE(_sculpt, m) {
           "'closed' or 'bordered'.")
       .def_property_readonly(
           "samples",
-          [](py::object self) {
-            const Result& result = self.cast<const Result&>();
-            return visit(result, [&](const auto& r) {
-              return read_only_view(self, r.sites.data(), r.sample_count(), py::dtype::of<double>(),
-                                    {r.dimension});
-            });
+          [](Result& result) {
+            if (!result.samples_array) {
+              result.samples_array = visit(result, [](const auto& r) -> py::object {
+                using Point = typename std::decay_t<decltype(r.sites)>::value_type;
+                return array_of(
+                    std::vector<Point>(r.sites.begin(), r.sites.begin() + r.sample_count()));
+              });
+            }
+            return result.samples_array;
           },
-          "The samples, (n, d) float64, in the order given.")
+          "The samples, (n, d) float64, in the order given: a writable array of your own.")
       .def_property_readonly(
           "sites",
           [](py::object self) {
@@ -519,10 +545,16 @@ PYBIND11_MODULE(_sculpt, m) {
       .def_property_readonly(
           "surface",
           [](py::object self) {
-            return visit(self.cast<const Result&>(),
-                         [&](const auto& r) { return rows_view(self, r.surface); });
+            Result& result = self.cast<Result&>();
+            if (!result.surface_array) {
+              const py::array view =
+                  visit(result, [&](const auto& r) { return rows_view(self, r.surface); });
+              result.surface_array = view.attr("copy")();  // writable, of its own
+            }
+            return result.surface_array;
           },
-          "The result: triangles (f, 3) of a surface or edges (f, 2) of a curve, as int32 indices "
+          "A writable array of your own: triangles (f, 3) of a surface or edges (f, 2) of a curve, "
+          "as int32 indices "
           "of samples (of surface_vertices for the power crust, which does not interpolate); "
           "closed surfaces face outward, closed curves run counterclockwise.")
       .def_property_readonly(
@@ -604,7 +636,9 @@ keep_triangulations  keep the cells of the triangulations (the stages' pictures 
                      advancing-front and alpha-shape, without DT(S + BBV) and the poles)
 merge_duplicates     drop points that repeat an earlier one (else sculpt.DuplicatePoints)
 progress             progress(stage, fraction) is called as each stage starts and ends (and
-                     within the long ones); returning False cancels (sculpt.Cancelled)
+                     within the long ones); progress(stage, fraction, overall), if it takes
+                     three arguments, also gets the whole run's fraction, which only grows
+                     (a bar that fills once); returning False cancels (sculpt.Cancelled)
 
 Returns a sculpt.Reconstruction. Bad input raises sculpt.InputError, whose message is the line
 `sculpt reconstruct` prints. The GIL is released while the core runs; Ctrl-C stops it at its

@@ -74,12 +74,25 @@ def test_the_alpha_shape_takes_a_given_radius():
         sculpt.reconstruct(torso, method="alpha-shape", alpha=float("inf"))
 
 
-def test_the_arrays_are_read_only_views_that_keep_the_result_alive():
-    surface = sculpt.reconstruct(sculpt.example("star")).surface
-    gc.collect()  # the result is gone from Python; its arrays must still hold it
-    assert surface.shape == (200, 2) and surface.max() == 199
+def test_stage_views_are_read_only_and_keep_the_result_alive():
+    sites = sculpt.reconstruct(sculpt.example("star")).sites
+    gc.collect()  # the result is gone from Python; its views must still hold it
+    assert sites.shape == (204, 2)  # 200 samples and 4 box corners
     with pytest.raises(ValueError):
-        surface[0, 0] = 5
+        sites[0, 0] = 5
+
+
+def test_samples_and_surface_are_writable_arrays_of_ones_own(tmp_path):
+    # What Open3D's and trimesh's constructors take; changing them changes no reconstruction.
+    result = sculpt.reconstruct(sculpt.example("bumpy"))
+    samples, surface = result.samples, result.surface
+    assert samples.flags.writeable and surface.flags.writeable
+    assert result.samples is samples and result.surface is surface  # made once
+    samples[:] = 0
+    surface[:] = 0
+    sculpt.write(result, tmp_path / "kept.off")
+    sculpt.write(sculpt.reconstruct(sculpt.example("bumpy")), tmp_path / "fresh.off")
+    assert (tmp_path / "kept.off").read_bytes() == (tmp_path / "fresh.off").read_bytes()
 
 
 @pytest.mark.parametrize("example, method", [("bumpy", "robust"), ("blob", "paper"),
@@ -146,8 +159,8 @@ def test_bad_input_raises_the_command_lines_message(sculpt_cli, tmp_path):
         "box factor": lambda: sculpt.reconstruct(star.samples, box_factor=1e308),
         "stages: samples": lambda: sculpt.render(star, stage="nothing"),
         "does not reconstruct in 3D": lambda: sculpt.stages("nn-crust", 3),
-        "examples\(\) lists them": lambda: sculpt.example("teapot"),
-        "size is \(width, height\)": lambda: sculpt.render(star, size=(0, 10)),
+        r"examples\(\) lists them": lambda: sculpt.example("teapot"),
+        r"size is \(width, height\)": lambda: sculpt.render(star, size=(0, 10)),
         "from 1 to 8192 pixels": lambda: sculpt.render(star, size=(20000, 10)),
         "zoom must be a positive": lambda: sculpt.render(star, zoom=0),
         "finite angles": lambda: sculpt.render(star, yaw=float("nan")),
@@ -156,7 +169,7 @@ def test_bad_input_raises_the_command_lines_message(sculpt_cli, tmp_path):
         # Keywords that would do nothing where they are given.
         "alpha= is the radius of the method alpha-shape": lambda: sculpt.reconstruct(
             star.samples, alpha=0.3),
-        "rule= chooses the surface rule of the method paper": lambda: sculpt.reconstruct(
+        "rule= chooses the facets of the surface": lambda: sculpt.reconstruct(
             star.samples, method="crust", rule="skin"),
         "only robust chooses the kind": lambda: sculpt.reconstruct(
             star.samples, method="paper", kind="automatic"),
@@ -240,6 +253,11 @@ def test_progress_is_reported_and_can_cancel():
         assert (stage, 0.0) in seen and (stage, 1.0) in seen, stage
     with pytest.raises(sculpt.Cancelled):
         sculpt.reconstruct(points, progress=lambda stage, fraction: stage != "poles")
+
+    # A callable of three arguments also gets the whole run's fraction: a bar that fills once.
+    overall = []
+    sculpt.reconstruct(points, progress=lambda stage, fraction, whole: overall.append(whole))
+    assert overall == sorted(overall) and overall[0] >= 0 and overall[-1] == pytest.approx(1)
 
     def failing(stage, fraction):
         raise ZeroDivisionError("from the callback")

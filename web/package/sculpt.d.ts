@@ -92,7 +92,7 @@ export interface PointFile {
 }
 
 /**
- * Reads the points of a point or mesh file (.xyz .pts .txt .csv .pwn .xy .ply .off .obj .stl)
+ * Reads the points of a point or mesh file (.xyz .pts .txt .csv .pwn .xy .ply .off .obj .stl .las .pcd)
  * with the command line's readers; the name's extension says the format.
  * @throws SculptError for a file they refuse, with the command line's message.
  */

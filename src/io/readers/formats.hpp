@@ -21,5 +21,7 @@ Point_set read_ply(Byte_input& input);  // ascii, binary little and big endian
 Point_set read_off(Byte_input& input);  // OFF, COFF, NOFF, CNOFF, STOFF, 4OFF, nOFF (text)
 Point_set read_obj(Byte_input& input);  // v and f records; a point cloud of v lines only
 Point_set read_stl(Byte_input& input);  // ascii and binary; equal corners merged
+Point_set read_las(Byte_input& input);  // LAS 1.0-1.4, uncompressed; X, Y, Z scaled
+Point_set read_pcd(Byte_input& input);  // PCD ascii and binary; x, y, z
 
 }  // namespace sculpt::io

@@ -169,18 +169,34 @@ class Value_reader {
     return encoding_ == Encoding::ascii ? read_word(type, what) : read_binary(type, what);
   }
 
-  // After the last element only white space (ASCII) or nothing (binary) may follow.
-  void expect_end() {
+  // After the last element only white space may follow. A binary file may end in padding that
+  // other tools write and read past (a line end, zeros to a block): accepted, with a warning
+  // (returned); any other byte is refused.
+  std::string expect_end() {
     if (encoding_ == Encoding::ascii) {
       if (next_word_ < words_.size())
         throw Error(lines_->where() + ": data after the last element");
       while (lines_->next(words_, 0)) {
         if (!words_.empty()) throw Error(lines_->where() + ": data after the last element");
       }
-    } else if (!input_.at_end()) {
-      throw Error(input_.name() + ": data after the last element (at byte " +
-                  std::to_string(input_.offset()) + ")");
+      return "";
     }
+    const std::uint64_t end_of_data = input_.offset();
+    std::uint64_t padding = 0;
+    for (std::string_view bytes = input_.peek(4096); !bytes.empty(); bytes = input_.peek(4096)) {
+      for (const char byte : bytes) {
+        if (byte != '\0' && byte != '\n' && byte != '\r' && byte != ' ' && byte != '\t') {
+          throw Error(input_.name() + ": data after the last element (at byte " +
+                      std::to_string(end_of_data + padding) + ")");
+        }
+        ++padding;
+      }
+      char skipped[4096];
+      input_.read(skipped, bytes.size(), "padding");
+    }
+    if (padding == 0) return "";
+    return input_.name() + ": " + std::to_string(padding) +
+           " bytes of padding (white space or zeros) after the last element, ignored";
   }
 
  private:
@@ -381,7 +397,8 @@ Point_set read_ply(Byte_input& input) {
       add_polygon(set, polygon, input);
     }
   }
-  values.expect_end();
+  if (std::string padding = values.expect_end(); !padding.empty())
+    set.warnings.push_back(std::move(padding));
   check_corners(set, input.name(), 0);
   return set;
 }

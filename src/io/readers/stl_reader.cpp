@@ -150,8 +150,13 @@ Point_set read_ascii_stl(Byte_input& input) {
       refuse("expected 'vertex' or 'endloop'");
     }
   }
-  if (state != State::outside) {
-    throw Error(input.name() + " is truncated: it ends inside a solid (no 'endsolid')");
+  if (state == State::in_solid) {
+    // Every facet is whole; only the closing keyword is missing, as some exporters write it.
+    set.warnings.push_back(input.name() +
+                           " ends without 'endsolid' after its last facet; read "
+                           "as complete");
+  } else if (state != State::outside) {
+    throw Error(input.name() + " is truncated: it ends inside a facet");
   }
   return set;
 }

@@ -46,9 +46,9 @@
 #include <utility>
 #include <vector>
 
-#include "exact_normalisation.hpp"
-#include "first_stages.hpp"
-#include "spanning_openings.hpp"
+#include "../core/exact_normalisation.hpp"
+#include "../core/first_stages.hpp"
+#include "../core/spanning_openings.hpp"
 
 namespace sculpt {
 

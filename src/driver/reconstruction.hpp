@@ -10,6 +10,16 @@
 #include <string>
 #include <vector>
 
+#include "../core/closed_skin_check.hpp"
+#include "../core/delaunay.hpp"
+#include "../core/exact_normalisation.hpp"
+#include "../core/facet_topology.hpp"
+#include "../core/first_stages.hpp"
+#include "../core/input_checks.hpp"
+#include "../core/poles.hpp"
+#include "../core/seeds.hpp"
+#include "../core/stage_clock.hpp"
+#include "../core/stage_plan.hpp"
 #include "../methods/boissonnat/boissonnat_method.hpp"
 #include "../methods/cgal/advancing_front_method.hpp"
 #include "../methods/cgal/alpha_shape_method.hpp"
@@ -21,16 +31,6 @@
 #include "../methods/paper/paper_method.hpp"
 #include "../methods/power_crust/power_crust_method.hpp"
 #include "../methods/robust/robust_method.hpp"
-#include "closed_skin_check.hpp"
-#include "delaunay.hpp"
-#include "exact_normalisation.hpp"
-#include "facet_topology.hpp"
-#include "first_stages.hpp"
-#include "input_checks.hpp"
-#include "poles.hpp"
-#include "seeds.hpp"
-#include "stage_clock.hpp"
-#include "stage_plan.hpp"
 
 namespace sculpt {
 
