@@ -4,6 +4,7 @@
 // Exits 0 when the result is a closed 2-manifold and bad input is reported as the API says.
 #include <cmath>
 #include <iostream>
+#include <sculpt/io.hpp>
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
@@ -22,6 +23,22 @@ int main() {
   const sculpt::Verdict verdict = sculpt::verdict(result.stats);
   std::cout << "sculpt " << sculpt::version() << ", method " << sculpt::to_string(options.method)
             << ": " << result.surface.size() << " triangles\nverdict: " << verdict.line << '\n';
+
+  // Written and read back through the library's files: the same triangles, and no write
+  // over a file that was read.
+  sculpt::write(result, "sphere.off");
+  const sculpt::Point_file file = sculpt::read_points("sphere.off");
+  std::cout << "read back: " << file.points.size() << " points, " << file.triangles.size()
+            << " triangles\n";
+  if (file.points.size() != points.size() || file.triangles.size() != result.surface.size())
+    return 1;
+  try {
+    sculpt::write(result, "sphere.off");
+    std::cout << "a file read was replaced\n";
+    return 1;
+  } catch (const sculpt::File_error& e) {
+    std::cout << "written over: " << e.what() << '\n';
+  }
 
   // Exceptions cross the library boundary as the types the header declares.
   try {

@@ -36,6 +36,8 @@ from ._sculpt import (
     write,
 )
 
+from .conversions import to_open3d, to_trimesh
+
 __version__ = version()
 
 
@@ -56,6 +58,8 @@ __all__ = [
     "reconstruct",
     "render",
     "stages",
+    "to_open3d",
+    "to_trimesh",
     "version",
     "write",
 ]

@@ -522,6 +522,11 @@ PYBIND11_MODULE(_sculpt, m) {
           "kind", [](const Result& r) { return to_string(r.options.kind); },
           "'closed' or 'bordered'.")
       .def_property_readonly(
+          "interpolates",
+          [](const Result& r) { return visit(r, [](const auto& x) { return x.interpolates(); }); },
+          "True when the surface's vertices are the samples (every method but the power crust, "
+          "whose surface_vertices are its own).")
+      .def_property_readonly(
           "samples",
           [](Result& result) {
             if (!result.samples_array) {

@@ -57,7 +57,10 @@ Make_offscreen_renderer find_module() {
   for (const auto& place : places) searched += " " + place.string();
   throw std::runtime_error(std::string("cannot load the headless renderer ") +
                            offscreen_module_name +
-                           (failures.empty() ? " (looked for" + searched + ")" : ":" + failures));
+                           (failures.empty() ? " (looked for" + searched +
+                                                   "; from Debian's packages, sculpt-render "
+                                                   "holds it)"
+                                             : ":" + failures));
 }
 
 // Loaded once per process, whichever thread asks first.
