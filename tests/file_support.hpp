@@ -2,6 +2,9 @@
 // Files for the io and command-line tests, in a folder of the build tree.
 #pragma once
 
+#include <fmt/format.h>
+
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -29,6 +32,16 @@ inline std::string write_file(const std::string& name, const std::string& conten
   const std::string path = output_path(name);
   std::ofstream(path, std::ios::binary) << content;
   return path;
+}
+
+// n points spread evenly on the unit sphere (a Fibonacci sphere), "x y z" per line, as .xyz.
+inline std::string sphere_points_text(int n) {
+  std::string text;
+  for (int i = 0; i < n; ++i) {
+    const double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), a = 2.399963229728653 * i;
+    text += fmt::format("{:.17g} {:.17g} {:.17g}\n", r * std::cos(a), r * std::sin(a), z);
+  }
+  return text;
 }
 
 inline std::string read_file(const std::string& path) {

@@ -31,15 +31,6 @@ fs::path fresh_folder(const std::string& name) {
   return testing::fresh_folder("output-safety/" + name);
 }
 
-std::string fibonacci_sphere(int n) {
-  std::string text;
-  for (int i = 0; i < n; ++i) {
-    const double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), a = 2.399963229728653 * i;
-    text += fmt::format("{:.17g} {:.17g} {:.17g}\n", r * std::cos(a), r * std::sin(a), z);
-  }
-  return text;
-}
-
 using testing::Command_run;
 using testing::lines;
 using testing::names_in;
@@ -48,7 +39,7 @@ using testing::run_sculpt;
 TEST(Output_safety, AnOutputNeverReplacesAnInputWhateverItsName) {
   const fs::path folder = fresh_folder("same-file");
   fs::create_directories(folder / "sub");
-  const std::string points = fibonacci_sphere(300);
+  const std::string points = testing::sphere_points_text(300);
   testing::write_file("output-safety/same-file/in.xyz", points);
   fs::create_symlink("in.xyz", folder / "link.xyz");
   fs::create_hard_link(folder / "in.xyz", folder / "hard.xyz");
@@ -84,7 +75,7 @@ TEST(Output_safety, AnOutputNeverReplacesAnInputWhateverItsName) {
 
 TEST(Output_safety, OutputsOfOneRunAreNotOneFileAndNotAFolder) {
   const fs::path folder = fresh_folder("destinations");
-  testing::write_file("output-safety/destinations/in.xyz", fibonacci_sphere(300));
+  testing::write_file("output-safety/destinations/in.xyz", testing::sphere_points_text(300));
   fs::create_directories(folder / "taken.json");
   fs::create_directories(folder / "sub");
   ::mkfifo((folder / "pipe.off").c_str(), 0644);
@@ -126,7 +117,7 @@ TEST(Output_safety, ShotsAreWrittenAllOrNone) {
 // and never a temporary.
 TEST(Output_safety, NoSignalLeavesATemporary) {
   const fs::path folder = fresh_folder("signals");
-  testing::write_file("output-safety/signals/in.xyz", fibonacci_sphere(30000));
+  testing::write_file("output-safety/signals/in.xyz", testing::sphere_points_text(30000));
   for (const int signal : {SIGHUP, SIGQUIT, SIGXCPU, SIGALRM, SIGUSR1, SIGUSR2, SIGPIPE, SIGTERM}) {
     for (const int milliseconds : {100, 600, 1200}) {
       SCOPED_TRACE(
@@ -152,7 +143,7 @@ TEST(Output_safety, NoSignalLeavesATemporary) {
 TEST(Output_safety, AFileSizeLimitFailsTheRunCleanly) {
   // SIGXFSZ would kill the run mid-write; it is ignored, and the write fails in one line.
   const fs::path folder = fresh_folder("file-size");
-  testing::write_file("output-safety/file-size/in.xyz", fibonacci_sphere(3000));
+  testing::write_file("output-safety/file-size/in.xyz", testing::sphere_points_text(3000));
   const Command_run run =
       run_sculpt(folder, {"reconstruct", "in.xyz", "-o", "s.stl", "-q"}, {0, 0, 64 * 1024, {}});
   EXPECT_EQ(run.exit_code, 1) << run.err;
@@ -165,7 +156,7 @@ TEST(Output_safety, AFileSizeLimitFailsTheRunCleanly) {
 TEST(Output_safety, TheNextRunRemovesWhatAKilledRunLeft) {
   // SIGKILL runs no handler: the temporary stays until a run writes the same output.
   const fs::path folder = fresh_folder("killed");
-  testing::write_file("output-safety/killed/in.xyz", fibonacci_sphere(3000));
+  testing::write_file("output-safety/killed/in.xyz", testing::sphere_points_text(3000));
   // A dead process's temporaries (a process id that no process has now), and a live one's.
   const pid_t dead = [] {
     const pid_t child = ::fork();
@@ -187,7 +178,7 @@ TEST(Output_safety, TheNextRunRemovesWhatAKilledRunLeft) {
 TEST(Output_safety, AnyLegalNameCanBeAnOutput) {
   // 255 bytes, the longest name a folder holds: the temporary's name is shortened, not refused.
   const fs::path folder = fresh_folder("long-name");
-  testing::write_file("output-safety/long-name/in.xyz", fibonacci_sphere(300));
+  testing::write_file("output-safety/long-name/in.xyz", testing::sphere_points_text(300));
   const std::string name = std::string(251, 'n') + ".off";
   const Command_run run = run_sculpt(folder, {"reconstruct", "in.xyz", "-o", name, "-q"});
   EXPECT_EQ(run.exit_code, 0) << run.err;

@@ -15,19 +15,10 @@
 namespace sculpt {
 namespace {
 
-std::string fibonacci_sphere(int n) {
-  std::string text;
-  for (int i = 0; i < n; ++i) {
-    const double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), a = 2.399963229728653 * i;
-    text += fmt::format("{:.17g} {:.17g} {:.17g}\n", r * std::cos(a), r * std::sin(a), z);
-  }
-  return text;
-}
-
 TEST(Progress_display, ALogGetsALinePerStageWithItsTime) {
   const auto folder = testing::fresh_folder("progress-display");
-  testing::write_file("progress-display/large.xyz", fibonacci_sphere(25000));
-  testing::write_file("progress-display/small.xyz", fibonacci_sphere(2000));
+  testing::write_file("progress-display/large.xyz", testing::sphere_points_text(25000));
+  testing::write_file("progress-display/small.xyz", testing::sphere_points_text(2000));
 
   const testing::Command_run logged =
       testing::run_sculpt(folder, {"reconstruct", "large.xyz", "-o", "large.off"});

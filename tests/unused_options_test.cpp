@@ -32,10 +32,7 @@ fs::path inputs_folder(const std::string& name) {
     const double a = 2 * M_PI * i / 100;
     circle += fmt::format("{:.17g} {:.17g}\n", std::cos(a), std::sin(a));
   }
-  for (int i = 0; i < 500; ++i) {
-    const double z = 1 - (2 * i + 1.0) / 500, r = std::sqrt(1 - z * z), a = 2.399963229728653 * i;
-    sphere += fmt::format("{:.17g} {:.17g} {:.17g}\n", r * std::cos(a), r * std::sin(a), z);
-  }
+  sphere = testing::sphere_points_text(500);
   testing::write_file("unused-options/" + name + "/circle.xy", circle);
   testing::write_file("unused-options/" + name + "/sphere.xyz", sphere);
   testing::write_file("unused-options/" + name + "/camera3.json",

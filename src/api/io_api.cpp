@@ -4,9 +4,8 @@
 #include <sculpt/io.hpp>
 
 #include "io/destinations.hpp"
-#include "io/output_set.hpp"
 #include "io/point_reader.hpp"
-#include "io/writers.hpp"
+#include "io/result_files.hpp"
 
 namespace sculpt {
 namespace {
@@ -21,39 +20,19 @@ auto as_file_error(Action&& action) -> decltype(action()) {
 }
 
 template <int D>
-void write_result(const Reconstruction<D>& result, const std::string& path,
-                  const std::string& solid_path, bool ascii) {
+void write_checked(const Reconstruction<D>& result, const std::string& path,
+                   const std::string& solid_path, bool ascii) {
   as_file_error([&] {
+    io::check_result_formats<D>(path, solid_path);
     const std::string extension = io::extension_of(path);
-    if (D == 3 ? !io::writes_surface(extension) : !io::writes_curve(extension)) {
-      throw io::Error(std::string("cannot write a ") + (D == 3 ? "surface" : "curve") + " as '" +
-                      path + "' (known: " + (D == 3 ? io::surface_formats : io::curve_formats) +
-                      ")");
-    }
     if (ascii && extension != ".stl" && extension != ".ply") {
       throw io::Error("ascii writes .stl and .ply as text; '" + path + "' is text already");
-    }
-    if (!solid_path.empty() && !io::writes_solid(io::extension_of(solid_path))) {
-      throw io::Error("cannot write a solid as '" + solid_path + "' (known: " +
-                      io::solid_formats + ")");
     }
     if (!solid_path.empty() && result.solid.empty()) {
       throw io::Error(std::string("the method ") + to_string(result.options.method) +
                       " built no solid to write as '" + solid_path + "'");
     }
-    io::check_destinations(io::with_companions({path, solid_path}));
-    const std::vector<Point<D>> samples(result.sites.begin(),
-                                        result.sites.begin() + result.sample_count());
-    const std::vector<Point<D>>& vertices =
-        result.interpolates() ? samples : result.surface_vertices;
-    io::Output_set outputs;  // all or none
-    if constexpr (D == 3) {
-      io::write_surface(outputs.stage(path), vertices, result.surface, ascii);
-    } else {
-      io::write_curve(outputs.stage(path), vertices, result.surface);
-    }
-    if (!solid_path.empty()) io::write_solid<D>(outputs.stage(solid_path), samples, result.solid);
-    outputs.commit();
+    io::write_result(result, path, solid_path, ascii);
   });
 }
 
@@ -82,14 +61,14 @@ Point_file read_points(const std::string& path, bool merge_duplicates) {
   });
 }
 
-void write(const Reconstruction<3>& result, const std::string& path,
-           const std::string& solid_path, bool ascii) {
-  write_result<3>(result, path, solid_path, ascii);
+void write(const Reconstruction<3>& result, const std::string& path, const std::string& solid_path,
+           bool ascii) {
+  write_checked<3>(result, path, solid_path, ascii);
 }
 
 void write(const Reconstruction<2>& result, const std::string& path,
            const std::string& solid_path) {
-  write_result<2>(result, path, solid_path, false);
+  write_checked<2>(result, path, solid_path, false);
 }
 
 }  // namespace sculpt

@@ -20,6 +20,7 @@
 #include "io/destinations.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
+#include "io/result_files.hpp"
 #include "io/temporary_files.hpp"
 #include "io/writers.hpp"
 #include "progress_display.hpp"
@@ -118,14 +119,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();
   io::Output_set outputs;
-  // The samples as read, or the vertices of a result that does not interpolate.
-  const std::vector<Point<D>>& vertices = result.interpolates() ? samples : result.surface_vertices;
-  if constexpr (D == 3) {
-    io::write_surface(outputs.stage(args.output), vertices, result.surface, args.ascii);
-  } else {
-    io::write_curve(outputs.stage(args.output), vertices, result.surface);
-  }
-  if (!args.solid.empty()) io::write_solid<D>(outputs.stage(args.solid), samples, result.solid);
+  io::stage_result(outputs, result, args.output, args.solid, args.ascii);
   run.write_seconds = seconds_since(start);
   if (!args.stats.empty()) {
     io::Atomic_file file(outputs.stage(args.stats), false);
@@ -194,7 +188,7 @@ int main(int argc, char** argv) {
   auto* reconstruct = app.add_subcommand(
       "reconstruct", "Reconstruct a curve (2D points) or surface (3D points) from a point file");
   auto* input = reconstruct->add_option(
-      "input", args.input, "Points: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl");
+      "input", args.input, "Points: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd");
   auto* example = reconstruct->add_option("--example", args.example,
                                           "Use a built-in example instead (see `sculpt examples`)");
   input->excludes(example);

@@ -27,6 +27,7 @@
 #include "io/io_error.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
+#include "io/result_files.hpp"
 #include "io/temporary_files.hpp"
 #include "io/writers.hpp"
 #include "python/stage_views.hpp"
@@ -269,33 +270,14 @@ void write_result(const Result& result, const std::filesystem::path& path_name,
     throw Input_error(frontend::no_solid_message(result.options.method));
   }
   visit(result, [&](const auto& r) {
-    constexpr int D = std::decay_t<decltype(r)>::dimension;
-    const std::vector<Point<D>> samples(r.sites.begin(), r.sites.begin() + r.sample_count());
-    const std::string extension = io::extension_of(path);
-    if (D == 3 ? !io::writes_surface(extension) : !io::writes_curve(extension)) {
-      throw io::Error(std::string("cannot write a ") + (D == 3 ? "surface" : "curve") + " as '" +
-                      path + "' (known: " + (D == 3 ? io::surface_formats : io::curve_formats) +
-                      ")");
-    }
-    if (!solid.empty() && !io::writes_solid(io::extension_of(solid))) {
-      throw io::Error("cannot write a solid as '" + solid + "' (known: " + io::solid_formats + ")");
-    }
+    io::check_result_formats<std::decay_t<decltype(r)>::dimension>(path, solid);
     if (ascii) {
       if (const std::string problem = frontend::unused_ascii(path, frontend::Spelling::python);
           !problem.empty())
         throw Input_error(problem);
     }
     // Before any work: both can be written, and neither replaces a file read_points read.
-    io::check_destinations(io::with_companions({path, solid}));
-    io::Output_set outputs;
-    const std::vector<Point<D>>& vertices = r.interpolates() ? samples : r.surface_vertices;
-    if constexpr (D == 3) {
-      io::write_surface(outputs.stage(path), vertices, r.surface, ascii);
-    } else {
-      io::write_curve(outputs.stage(path), vertices, r.surface);
-    }
-    if (!solid.empty()) io::write_solid<D>(outputs.stage(solid), samples, r.solid);
-    outputs.commit();
+    io::write_result(r, path, solid, ascii);
   });
 }
 
@@ -488,7 +470,7 @@ PYBIND11_MODULE(_sculpt, m) {
         return points_array(input);
       },
       py::arg("path"), py::arg("dimension") = 0, py::arg("merge_duplicates") = false,
-      "The points of a file (.xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl; a mesh gives "
+      "The points of a file (.xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd; a mesh gives "
       "its vertices) as an (n, 2) or (n, 3) float64 array. dimension=2 or 3 forces it (a flat 3D "
       "file becomes 2D points); merge_duplicates drops points that repeat an earlier one.");
   m.def(

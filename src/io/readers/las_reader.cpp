@@ -116,10 +116,12 @@ Point_set read_las(Byte_input& input) {
     add_vertex(set, point, input);
   }
   // What follows the points in 1.3 and 1.4 (waveform data, extended variable length records)
-  // holds no point; in 1.0-1.2 nothing may follow.
+  // holds no point. In 1.0-1.2 nothing should follow; writers that pad are read past, as other
+  // LAS readers do, with a warning.
   if (minor < 3 && !input.at_end()) {
-    throw Error(input.name() + ": data after the " + std::to_string(count) +
-                " points its header announces (at byte " + std::to_string(input.offset()) + ")");
+    set.warnings.push_back(input.name() + ": data after the " + std::to_string(count) +
+                           " points its header announces (at byte " +
+                           std::to_string(input.offset()) + "), ignored");
   }
   return set;
 }
