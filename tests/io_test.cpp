@@ -539,6 +539,23 @@ TEST(Io, PaddingAndAMissingEndsolidAreReadWithAWarning) {
   }
 }
 
+// The bytes with one byte changed.
+std::string with_byte(std::string bytes, std::size_t at, char value) {
+  bytes[at] = value;
+  return bytes;
+}
+
+// The bytes are refused in one io::Error whose message says `says`.
+void expect_refused(const std::string& bytes, const std::string& extension,
+                    const std::string& says) {
+  try {
+    io::read_points_from_memory(bytes, extension);
+    ADD_FAILURE() << "read, though it " << says;
+  } catch (const io::Error& e) {
+    EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+  }
+}
+
 // A LAS file of the four corners of a tetrahedron (millimetres, offset by 10, 20, 30 m), in the
 // layout of the given version and point data format, with `gap` bytes of variable records.
 std::string las_file(int minor, int format, std::size_t gap = 0) {
@@ -595,51 +612,19 @@ TEST(Io, ReadsLasOfEveryVersionAndPointFormat) {
   const std::vector<std::pair<std::string, std::string>> refused = {
       {"LASX" + good.substr(4), "not a LAS file"},
       {good.substr(0, 300), "truncated"},
-      {[&] {
-         auto b = good;
-         b[104] = char(0x80);
-         return b;
-       }(),
-       "compressed (LAZ)"},
-      {[&] {
-         auto b = good;
-         b[104] = 11;
-         return b;
-       }(),
-       "not one of LAS's"},
-      {[&] {
-         auto b = good;
-         b[105] = 19;
-         return b;
-       }(),
-       "too short"},
-      {[&] {
-         auto b = good;
-         b[25] = 9;
-         return b;
-       }(),
-       "LAS version 1.9"},
+      {with_byte(good, 104, char(0x80)), "compressed (LAZ)"},
+      {with_byte(good, 104, 11), "not one of LAS's"},
+      {with_byte(good, 105, 19), "too short"},
+      {with_byte(good, 25, 9), "LAS version 1.9"},
       {[&] {
          auto b = good;
          std::memset(&b[131], 0, 8);
          return b;
        }(),
        "the scale not 0"},
-      {[&] {
-         auto b = good;
-         b[108] = 1;
-         return b;
-       }(),
-       "announces"},
+      {with_byte(good, 108, 1), "announces"},
   };
-  for (const auto& [bytes, says] : refused) {
-    try {
-      io::read_points_from_memory(bytes, ".las");
-      ADD_FAILURE() << says;
-    } catch (const io::Error& e) {
-      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
-    }
-  }
+  for (const auto& [bytes, says] : refused) expect_refused(bytes, ".las", says);
 }
 
 TEST(Io, ReadsPcdAsTextAndBinarySkippingUnmeasuredPoints) {
@@ -675,14 +660,7 @@ TEST(Io, ReadsPcdAsTextAndBinarySkippingUnmeasuredPoints) {
       {"FIELDS x y z\nSIZE 4 4\n", "gives 2 values for 3 fields"},
       {"BANANA 3\n", "not a PCD header line"},
   };
-  for (const auto& [bytes, says] : refused) {
-    try {
-      io::read_points_from_memory(bytes, ".pcd");
-      ADD_FAILURE() << says;
-    } catch (const io::Error& e) {
-      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
-    }
-  }
+  for (const auto& [bytes, says] : refused) expect_refused(bytes, ".pcd", says);
 }
 
 TEST(Io, CompressedFormatsWithoutADebianDecoderAreNamed) {

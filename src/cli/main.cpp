@@ -77,16 +77,23 @@ void check_output_formats(const Reconstruct_arguments& args, int dimension) {
   io::check_destinations(io::with_companions({args.output, args.solid, args.stats}), {args.input});
 }
 
-// An option the method or kind would never read is refused, not ignored.
-void check_options_apply(const Reconstruct_arguments& args, Surface_kind kind) {
+// The reconstruction the arguments ask for (method and rule were checked by CLI11). The command
+// line keeps no triangulation.
+Options options_of(const Reconstruct_arguments& args, Surface_kind kind) {
   Options options;
-  if (!parse_method(args.method, options.method)) return;  // CLI11 refused it already
+  parse_method(args.method, options.method);
   options.kind = kind;
   parse_rule(args.rule, options.rule);
   options.box_factor = args.box_factor;
   options.alpha = args.alpha;
   options.bordered_seed_sample = args.seed_sample;
-  options.keep_triangulations = false;  // as the run below
+  options.keep_triangulations = false;
+  return options;
+}
+
+// An option the method or kind would never read is refused, not ignored.
+void check_options_apply(const Reconstruct_arguments& args, Surface_kind kind) {
+  const Options options = options_of(args, kind);
   const auto spelling = frontend::Spelling::command_line;
   for (const std::string& problem :
        {frontend::unused_reconstruction_option(options, spelling),
@@ -101,14 +108,7 @@ void check_options_apply(const Reconstruct_arguments& args, Surface_kind kind) {
 template <int D>
 int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruct_arguments& args,
                           Surface_kind kind, Run_description run) {
-  Options options;
-  parse_method(args.method, options.method);
-  options.kind = kind;
-  parse_rule(args.rule, options.rule);
-  options.box_factor = args.box_factor;
-  options.alpha = args.alpha;
-  options.bordered_seed_sample = args.seed_sample;
-  options.keep_triangulations = false;
+  Options options = options_of(args, kind);
   options.keep_solid = !args.solid.empty();
   options.progress = progress_display(samples.size(), args.quiet);
 
@@ -188,7 +188,8 @@ int main(int argc, char** argv) {
   auto* reconstruct = app.add_subcommand(
       "reconstruct", "Reconstruct a curve (2D points) or surface (3D points) from a point file");
   auto* input = reconstruct->add_option(
-      "input", args.input, "Points: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd");
+      "input", args.input,
+      "Points: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd");
   auto* example = reconstruct->add_option("--example", args.example,
                                           "Use a built-in example instead (see `sculpt examples`)");
   input->excludes(example);

@@ -38,10 +38,13 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* camer
   check_shot_applies(shot, shown);  // before a renderer is made
   // What a picture draws says which drawing options do something (an animation's pictures
   // differ, each stage its own).
-  if (shot.animate.empty())
-    refuse_if(unused_drawing_option(shot, scene_of(shot, shown), spelling), spelling);
+  std::optional<scene::Scene> scene;
+  if (shot.animate.empty()) {
+    scene = scene_of(shot, shown);
+    refuse_if(unused_drawing_option(shot, *scene, spelling), spelling);
+  }
   if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
-  return write_shot(*renderer_, shot, shown, camera);
+  return write_shot(*renderer_, shot, shown, camera, std::move(scene));
 }
 
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {

@@ -366,7 +366,8 @@ void check_shot(const Shot& shot) {
 }
 
 scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
-                        const Any_reconstruction& shown, const nlohmann::json* inline_camera) {
+                        const Any_reconstruction& shown, const nlohmann::json* inline_camera,
+                        std::optional<scene::Scene> built) {
   check_shot(shot);
   if (!shot.animate.empty()) {
     const int milliseconds = shot.frame_ms > 0          ? shot.frame_ms
@@ -431,7 +432,8 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
     }
     return last;
   }
-  Picture picture = draw_shot(renderer, shot, shown, inline_camera);
+  Picture picture = built ? draw_scene(renderer, shot, std::move(*built), inline_camera)
+                          : draw_shot(renderer, shot, shown, inline_camera);
   if (!shot.save_camera.empty()) save_camera(picture.camera, shot.save_camera);
   render::write_png(shot.output, picture.image);
   return std::move(picture.scene);

@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -65,9 +66,11 @@ void check_shot(const Shot& shot);
 // Writes a shot of `reconstruction` to its output: a PNG, or an animated WebP of the replay or
 // the stages (shot.animate), all or nothing; the camera too where the shot asks (save_camera;
 // an animation's first picture's).
-// Returns the (last) scene drawn. Throws io::Error with a one-line message.
+// Returns the (last) scene drawn. A picture's scene already built by scene_of (to check it) is
+// drawn as it is. Throws io::Error with a one-line message.
 scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
                         const Any_reconstruction& reconstruction,
-                        const nlohmann::json* camera = nullptr);
+                        const nlohmann::json* camera = nullptr,
+                        std::optional<scene::Scene> built = std::nullopt);
 
 }  // namespace sculpt::frontend

@@ -30,15 +30,13 @@ std::uint64_t from_environment(const char* variable, std::uint64_t fallback,
   return value;
 }
 
+}  // namespace
+
 std::string size_text(std::uint64_t bytes) {
-  if (bytes >= (std::uint64_t(1) << 30) && bytes % (std::uint64_t(1) << 30) == 0)
-    return std::to_string(bytes >> 30) + " GiB";
-  if (bytes >= (std::uint64_t(1) << 20) && bytes % (std::uint64_t(1) << 20) == 0)
-    return std::to_string(bytes >> 20) + " MiB";
+  if (bytes >= (std::uint64_t(1) << 30)) return std::to_string(bytes >> 30) + " GiB";
+  if (bytes >= (std::uint64_t(1) << 20)) return std::to_string(bytes >> 20) + " MiB";
   return std::to_string(bytes) + " bytes";
 }
-
-}  // namespace
 
 Input_limits input_limits() {
   Input_limits limits;

@@ -26,6 +26,9 @@ struct Input_limits {
 // number above zero.
 Input_limits input_limits();
 
+// A size for messages: "4 GiB", "12 MiB" (rounded down), "4567 bytes".
+std::string size_text(std::uint64_t bytes);
+
 // The end of a refusal: "the input limit of 50000000 points (SCULPT_MAX_POINTS raises it)".
 std::string points_limit_text(std::uint64_t points);
 std::string bytes_limit_text(std::uint64_t bytes);

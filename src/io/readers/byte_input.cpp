@@ -17,12 +17,6 @@ namespace {
 
 constexpr std::size_t buffer_size = 1 << 20;
 
-std::string size_text(std::uint64_t bytes) {
-  if (bytes >= (std::uint64_t(1) << 30)) return std::to_string(bytes >> 30) + " GiB";
-  if (bytes >= (std::uint64_t(1) << 20)) return std::to_string(bytes >> 20) + " MiB";
-  return std::to_string(bytes) + " bytes";
-}
-
 }  // namespace
 
 Byte_input Byte_input::open_file(const std::string& path, const Input_limits& limits) {
