@@ -18,7 +18,8 @@
 namespace sculpt::fuzz {
 
 // Any bytes give points or an io::Error with a one-line message, never another exception; the
-// bytes read whole and handed over in small chunks (as a pipe does) give the same. Returns
+// bytes read whole and handed over in small chunks (as a pipe does) give the same points,
+// faces, normals and colours; normals and colours are given for every point or none. Returns
 // what went wrong, or "" (a crash or sanitizer report never returns).
 inline std::string check_reader(std::string_view bytes, const std::string& format) {
   struct Outcome {
@@ -37,8 +38,16 @@ inline std::string check_reader(std::string_view bytes, const std::string& forma
   const Outcome whole = read(0), chunked = read(1 + bytes.size() % 7);
   if (whole.error.find('\n') != std::string::npos) return "a message of more than one line";
   if (whole.error != chunked.error || whole.set.points != chunked.set.points ||
-      whole.set.triangles != chunked.set.triangles) {
+      whole.set.triangles != chunked.set.triangles ||
+      whole.set.attributes.normals != chunked.set.attributes.normals ||
+      whole.set.attributes.colors != chunked.set.attributes.colors) {
     return "whole and chunked reads differ: '" + whole.error + "' / '" + chunked.error + "'";
+  }
+  // Normals and colours are for every point or none.
+  const std::size_t points = whole.set.points.size();
+  for (std::size_t given :
+       {whole.set.attributes.normals.size(), whole.set.attributes.colors.size()}) {
+    if (given != 0 && given != points) return "attributes for some points only";
   }
   return "";
 }

@@ -591,6 +591,27 @@ std::string las_file(int minor, int format, std::size_t gap = 0) {
   return bytes;
 }
 
+// LAS colours are 16-bit levels; files whose levels stay within a byte hold bytes in them.
+TEST(Io, ReadsLasColoursAsLevelsOfSixteenBitsOrOfABytes) {
+  for (const auto& [format, at] : {std::pair{2, 20}, {3, 28}, {7, 30}}) {
+    for (const std::uint16_t unit : {std::uint16_t{1}, std::uint16_t{257}}) {
+      SCOPED_TRACE(fmt::format("format {}, unit {}", format, unit));
+      std::string bytes = las_file(4, format);
+      const int record = std::vector<int>{20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67}[format];
+      for (int i = 0; i < 4; ++i) {
+        for (int c = 0; c < 3; ++c) {
+          const std::uint16_t level = static_cast<std::uint16_t>((60 * i + c) * unit);
+          std::memcpy(&bytes[375 + record * i + at + 2 * c], &level, 2);
+        }
+      }
+      const auto set = io::read_points_from_memory(bytes, ".las");
+      ASSERT_EQ(set.attributes.colors.size(), 4u);
+      EXPECT_EQ(set.attributes.colors[3], (std::array<std::uint8_t, 3>{180, 181, 182}));
+    }
+  }
+  EXPECT_TRUE(io::read_points_from_memory(las_file(4, 6), ".las").attributes.colors.empty());
+}
+
 TEST(Io, ReadsLasOfEveryVersionAndPointFormat) {
   const std::vector<Point<3>> expected = {{10, 20, 30}, {11, 20, 30}, {10, 21, 30}, {10, 20, 29}};
   for (const auto& [minor, format] : {std::pair{0, 0}, {2, 1}, {2, 3}, {3, 5}, {4, 6}, {4, 10}}) {

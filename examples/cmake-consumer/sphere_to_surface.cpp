@@ -3,6 +3,7 @@
 // what a program outside the project needs is include/sculpt/sculpt.hpp and Sculpt::sculpt.
 // Exits 0 when the result is a closed 2-manifold and bad input is reported as the API says.
 #include <cmath>
+#include <cstdint>
 #include <iostream>
 #include <sculpt/io.hpp>
 #include <sculpt/sculpt.hpp>
@@ -31,6 +32,20 @@ int main() {
   std::cout << "read back: " << file.points.size() << " points, " << file.triangles.size()
             << " triangles\n";
   if (file.points.size() != points.size() || file.triangles.size() != result.surface.size())
+    return 1;
+  // A scan's normals and colours go onto the surface's vertices (the samples) in PLY and OBJ.
+  sculpt::Point_attributes attributes;
+  for (const auto& p : points) {
+    attributes.normals.push_back(p);  // a unit sphere's normal is its point
+    attributes.colors.push_back(
+        {std::uint8_t(128 + 127 * p[0]), 64, std::uint8_t(128 + 127 * p[2])});
+  }
+  sculpt::write(result, "coloured.ply", "", false, attributes);
+  const sculpt::Point_file coloured = sculpt::read_points("coloured.ply");
+  std::cout << "attributes back: " << coloured.attributes.normals.size() << " normals, "
+            << coloured.attributes.colors.size() << " colours\n";
+  if (coloured.attributes.normals != attributes.normals ||
+      coloured.attributes.colors != attributes.colors)
     return 1;
   try {
     sculpt::write(result, "sphere.off");

@@ -10,6 +10,8 @@
     result.stages["poles"].radius                 # every stage as read-only numpy arrays
     image = sculpt.render(result, stage="poles")  # (height, width, 4) RGBA, as `sculpt render` draws
     sculpt.write(result, "bumpy.stl")
+    scan = sculpt.read_file("scan.ply")           # points, normals, colors, triangles
+    sculpt.write(sculpt.reconstruct(scan.points), "part.ply", normals=scan.normals, colors=scan.colors)
 
 The same core, methods, stage names, statistics and error messages as the `sculpt` command.
 Reconstruction runs without the GIL; progress(stage, fraction) may return False to cancel.
@@ -37,6 +39,7 @@ from ._sculpt import (
 )
 
 from .conversions import to_open3d, to_trimesh
+from .files import PointFile, read_file
 
 __version__ = version()
 
@@ -49,11 +52,13 @@ __all__ = [
     "Cancelled",
     "DuplicatePoints",
     "InputError",
+    "PointFile",
     "Reconstruction",
     "example",
     "examples",
     "merge_duplicates",
     "methods",
+    "read_file",
     "read_points",
     "reconstruct",
     "render",

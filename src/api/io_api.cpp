@@ -21,7 +21,7 @@ auto as_file_error(Action&& action) -> decltype(action()) {
 
 template <int D>
 void write_checked(const Reconstruction<D>& result, const std::string& path,
-                   const std::string& solid_path, bool ascii) {
+                   const std::string& solid_path, bool ascii, const Point_attributes& attributes) {
   as_file_error([&] {
     io::check_result_formats<D>(path, solid_path);
     const std::string extension = io::extension_of(path);
@@ -32,7 +32,7 @@ void write_checked(const Reconstruction<D>& result, const std::string& path,
       throw io::Error(std::string("the method ") + to_string(result.options.method) +
                       " built no solid to write as '" + solid_path + "'");
     }
-    io::write_result(result, path, solid_path, ascii);
+    io::write_result(result, path, solid_path, ascii, attributes);
   });
 }
 
@@ -56,19 +56,20 @@ Point_file read_points(const std::string& path, bool merge_duplicates) {
     file.dimension = set.dimension;
     file.points = std::move(set.points);
     file.triangles.assign(set.triangles.begin(), set.triangles.end());
+    file.attributes = std::move(set.attributes);
     file.warnings = std::move(set.warnings);
     return file;
   });
 }
 
 void write(const Reconstruction<3>& result, const std::string& path, const std::string& solid_path,
-           bool ascii) {
-  write_checked<3>(result, path, solid_path, ascii);
+           bool ascii, const Point_attributes& attributes) {
+  write_checked<3>(result, path, solid_path, ascii, attributes);
 }
 
 void write(const Reconstruction<2>& result, const std::string& path,
            const std::string& solid_path) {
-  write_checked<2>(result, path, solid_path, false);
+  write_checked<2>(result, path, solid_path, false, {});
 }
 
 }  // namespace sculpt

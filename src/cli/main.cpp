@@ -105,9 +105,27 @@ void check_options_apply(const Reconstruct_arguments& args, Surface_kind kind) {
   }
 }
 
+// What became of the samples' normals and colours in the surface file, for the report.
 template <int D>
-int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruct_arguments& args,
-                          Surface_kind kind, Run_description run) {
+std::string attributes_note(const Reconstruction<D>& result, const Point_attributes& attributes,
+                            const std::string& path) {
+  if (attributes.empty() || D == 2) return "";
+  const std::string what = !attributes.normals.empty() && !attributes.colors.empty()
+                               ? "normals and colours"
+                           : !attributes.normals.empty() ? "normals"
+                                                         : "colours";
+  if (io::writes_attributes(result, attributes, path)) return " (with the samples' " + what + ")";
+  if (!result.interpolates()) {
+    return " (without the samples' " + what + ": the surface's vertices are not the samples)";
+  }
+  return " (without the samples' " + what + ": " + io::extension_of(path) +
+         " has no place for them; .ply and .obj do)";
+}
+
+template <int D>
+int reconstruct_and_write(const std::vector<Point<D>>& samples, const Point_attributes& attributes,
+                          const Reconstruct_arguments& args, Surface_kind kind,
+                          Run_description run) {
   Options options = options_of(args, kind);
   options.keep_solid = !args.solid.empty();
   options.progress = progress_display(samples.size(), args.quiet);
@@ -119,7 +137,7 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   // All outputs or none: each is written under a temporary name, and all are renamed at the end.
   const auto start = std::chrono::steady_clock::now();
   io::Output_set outputs;
-  io::stage_result(outputs, result, args.output, args.solid, args.ascii);
+  io::stage_result(outputs, result, args.output, args.solid, args.ascii, attributes);
   run.write_seconds = seconds_since(start);
   if (!args.stats.empty()) {
     io::Atomic_file file(outputs.stage(args.stats), false);
@@ -130,8 +148,8 @@ int reconstruct_and_write(const std::vector<Point<D>>& samples, const Reconstruc
   const Verdict verdict = sculpt::verdict(result.stats);
   if (!args.quiet) {
     print_report(std::cout, result.stats, run);
-    std::cout << "  wrote " << args.output << (args.solid.empty() ? "" : " and " + args.solid)
-              << '\n';
+    std::cout << "  wrote " << args.output << attributes_note(result, attributes, args.output)
+              << (args.solid.empty() ? "" : " and " + args.solid) << '\n';
     std::cout << "verdict: " << verdict.line << '\n';
   }
   if (!verdict.manifold) {
@@ -162,7 +180,7 @@ int run_reconstruct(const Reconstruct_arguments& args) {
       [&](const auto& points) {
         constexpr int dimension =
             std::tuple_size_v<typename std::decay_t<decltype(points)>::value_type>;
-        return reconstruct_and_write<dimension>(points, args, kind, run);
+        return reconstruct_and_write<dimension>(points, input.attributes, args, kind, run);
       },
       input.points);
 }
@@ -187,9 +205,8 @@ int main(int argc, char** argv) {
   Reconstruct_arguments args;
   auto* reconstruct = app.add_subcommand(
       "reconstruct", "Reconstruct a curve (2D points) or surface (3D points) from a point file");
-  auto* input = reconstruct->add_option(
-      "input", args.input,
-      "Points: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd");
+  auto* input = reconstruct->add_option("input", args.input,
+                                        std::string("Points: ") + sculpt::io::point_formats);
   auto* example = reconstruct->add_option("--example", args.example,
                                           "Use a built-in example instead (see `sculpt examples`)");
   input->excludes(example);

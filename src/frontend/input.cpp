@@ -45,6 +45,7 @@ Input load_input(const std::string& path, const std::string& example, int forced
   } else {
     input.points = io::spatial_points(set);
     input.reference_triangles = set.triangles;
+    input.attributes = std::move(set.attributes);
   }
   input.read_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -3,6 +3,7 @@
 // the dimension the file gives or the user forces.
 #pragma once
 
+#include <sculpt/point_attributes.hpp>
 #include <sculpt/sculpt.hpp>
 #include <string>
 #include <variant>
@@ -17,6 +18,8 @@ struct Input {
   // A 3D mesh file's own triangles, on the same vertex indices: what a reconstruction of its
   // vertices can be compared with. Empty for point files and examples.
   std::vector<Facet<3>> reference_triangles;
+  // The samples' normals and colours where a 3D file has them (empty for 2D and examples).
+  Point_attributes attributes;
   // What the reader read past (io::Point_set::warnings), for the front end to say.
   std::vector<std::string> warnings;
 

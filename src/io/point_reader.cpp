@@ -8,6 +8,10 @@
 #include "readers/words.hpp"
 
 namespace sculpt::io {
+
+const char* const point_formats =
+    ".xyz .pwn .xyzn .xyzrgb .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd";
+
 namespace {
 
 Point_set read_format(Byte_input& input, const std::string& extension) {
@@ -26,9 +30,16 @@ Point_set read_format(Byte_input& input, const std::string& extension) {
     set = read_pcd(input);
   } else if (extension == ".xy" || extension == ".p2d") {
     set = read_text_points(input, 2);
+  } else if (extension == ".pwn" || extension == ".xyzn") {  // CGAL's, Open3D's: x y z nx ny nz
+    set = read_text_points(input, 3, Text_columns::normals);
+  } else if (extension == ".xyzrgb") {  // Open3D's: x y z r g b
+    set = read_text_points(input, 3, Text_columns::colors);
+  } else if (extension == ".xyz") {
+    set = read_text_points(input, 3, Text_columns::by_values);
+  } else if (extension == ".pts") {
+    set = read_text_points(input, 0, Text_columns::leica);
   } else {
-    // .pwn (CGAL's points with normals): "x y z nx ny nz", read as .xyz, normals left out.
-    set = read_text_points(input, extension == ".xyz" || extension == ".pwn" ? 3 : 0);
+    set = read_text_points(input, 0);
   }
   if (set.points.empty()) throw Error(input.name() + " holds no points");
   return set;
@@ -36,7 +47,7 @@ Point_set read_format(Byte_input& input, const std::string& extension) {
 
 bool known_extension(const std::string& extension) {
   for (const char* known : {".off", ".obj", ".ply", ".stl", ".las", ".pcd", ".xy", ".p2d", ".xyz",
-                            ".pwn", ".pts", ".txt", ".csv", ""}) {
+                            ".pwn", ".xyzn", ".xyzrgb", ".pts", ".txt", ".csv", ""}) {
     if (extension == known) return true;
   }
   return false;
@@ -65,7 +76,7 @@ Point_set read_points(const std::string& path, const Input_limits& limits) {
   }
   if (!known_extension(extension)) {
     throw Error("unknown point format '" + printable(extension) + "' of '" + printable(path, 1000) +
-                "' (known: .xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd)");
+                "' (known: " + std::string(point_formats) + ")");
   }
   Byte_input input = Byte_input::open_file(path, limits);
   return read_format(input, extension);
@@ -112,12 +123,18 @@ std::size_t merge_duplicates(Point_set& set) {
   std::vector<Point<3>> kept;
   kept.reserve(set.points.size());
   std::vector<int> new_index(set.points.size());
+  Point_attributes& attributes = set.attributes;
   for (std::size_t i = 0; i < set.points.size(); ++i) {
     if (!repeated[i]) {
+      // A copy's normal and colour go with it: the first occurrence's are kept.
+      if (!attributes.normals.empty()) attributes.normals[kept.size()] = attributes.normals[i];
+      if (!attributes.colors.empty()) attributes.colors[kept.size()] = attributes.colors[i];
       new_index[i] = static_cast<int>(kept.size());
       kept.push_back(set.points[i]);
     }
   }
+  if (!attributes.normals.empty()) attributes.normals.resize(kept.size());
+  if (!attributes.colors.empty()) attributes.colors.resize(kept.size());
   for (std::size_t k = 1; k < order.size(); ++k) {  // a copy takes its first occurrence's index
     if (repeated[order[k]]) new_index[order[k]] = new_index[order[k - 1]];
   }

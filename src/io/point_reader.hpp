@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Reading samples: the vertices of a point or mesh file, whatever its format.
-//   text:   .xyz .pwn .pts .txt .xy .p2d .csv  ("x y [z]" per line; `#` comments, a leading word
-//           such as `p` or `v`, a count header, commas and extra columns, as the normals of
-//           CGAL's .pwn, are tolerated)
+//   text:   .xyz .pwn .xyzn .xyzrgb .pts .txt .xy .p2d .csv  ("x y [z]" per line; `#` comments,
+//           a leading word such as `p` or `v`, a count header, commas and extra columns)
 //   meshes: .ply (ascii or binary, any scalar type) .off (and COFF, NOFF, STOFF, 4OFF, nOFF)
 //           .obj (a point cloud of `v` lines too) .stl (ascii or binary)
+// Normals and colours are kept from PLY (nx ny nz, red green blue), OBJ (`vn` one per vertex,
+// `v x y z r g b`), .pwn .xyzn and 6-column .xyz (x y z nx ny nz), .xyzrgb (x y z r g b) and
+// .pts (Leica's x y z intensity r g b, or x y z r g b).
 //   scans:  .las (LAS 1.0-1.4, uncompressed) .pcd (PCL's, ascii or binary)
 // The readers are Sculpt's own (src/io/readers), written to survive any bytes: every count is
 // checked against the bytes that can follow it, files are streamed, and all are fuzzed.
@@ -13,6 +15,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <sculpt/point_attributes.hpp>
 #include <sculpt/sculpt.hpp>
 #include <string>
 #include <string_view>
@@ -29,10 +32,15 @@ struct Point_set {
   // A mesh file's faces, as triangles (polygons split into fans): the reference a
   // reconstruction of its vertices is compared with (sculpt bench, the tests). Empty otherwise.
   std::vector<std::array<int, 3>> triangles;
+  // Normals and colours, each for every point or none (2D files have none).
+  Point_attributes attributes;
   // What was read past and how (padding after a PLY's last element, an STL without endsolid):
   // one line each, for the front end to show as a warning.
   std::vector<std::string> warnings;
 };
+
+// The extensions read_points knows, for messages and --help.
+extern const char* const point_formats;
 
 // Throws io::Error with a one-line message on any problem with the file, and for a file or a
 // stream that holds more bytes or points than the limits (io/input_limits.hpp).

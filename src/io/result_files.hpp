@@ -29,17 +29,43 @@ void check_result_formats(const std::string& path, const std::string& solid_path
   }
 }
 
+// The samples' normals and colours, each list empty or one per sample, for a surface.
+template <int D>
+void check_attributes(const Reconstruction<D>& result, const Point_attributes& attributes) {
+  if (attributes.empty()) return;
+  if (D == 2) throw Error("normals and colours are written with surfaces, not with 2D curves");
+  const std::size_t samples = result.sample_count();
+  for (const auto& [given, what] : {std::pair{attributes.normals.size(), "normals"},
+                                    std::pair{attributes.colors.size(), "colours"}}) {
+    if (given != 0 && given != samples) {
+      throw Error(std::to_string(given) + " " + what + " for " + std::to_string(samples) +
+                  " samples: give one per sample, in the samples' order");
+    }
+  }
+}
+
+// Whether the surface file at `path` will hold the samples' normals and colours: its format
+// carries them and its vertices are the samples (not the power crust's own).
+template <int D>
+bool writes_attributes(const Reconstruction<D>& result, const Point_attributes& attributes,
+                       const std::string& path) {
+  return D == 3 && !attributes.empty() && result.interpolates() &&
+         carries_attributes(extension_of(path));
+}
+
 // Writes the result's files under the set's temporary names (the set commits them, with any
 // other output of the run). Vertex i is sample i, or the result's own vertex i if it does not
-// interpolate (the power crust).
+// interpolate (the power crust); the samples' attributes go with them (writes_attributes).
 template <int D>
 void stage_result(Output_set& outputs, const Reconstruction<D>& result, const std::string& path,
-                  const std::string& solid_path, bool ascii) {
+                  const std::string& solid_path, bool ascii,
+                  const Point_attributes& attributes = {}) {
   const std::vector<Point<D>> samples(result.sites.begin(),
                                       result.sites.begin() + result.sample_count());
   const std::vector<Point<D>>& vertices = result.interpolates() ? samples : result.surface_vertices;
   if constexpr (D == 3) {
-    write_surface(outputs.stage(path), vertices, result.surface, ascii);
+    write_surface(outputs.stage(path), vertices, result.surface, ascii,
+                  writes_attributes(result, attributes, path) ? attributes : Point_attributes{});
   } else {
     write_curve(outputs.stage(path), vertices, result.surface);
   }
@@ -48,11 +74,13 @@ void stage_result(Output_set& outputs, const Reconstruction<D>& result, const st
 
 template <int D>
 void write_result(const Reconstruction<D>& result, const std::string& path,
-                  const std::string& solid_path, bool ascii) {
+                  const std::string& solid_path, bool ascii,
+                  const Point_attributes& attributes = {}) {
   check_result_formats<D>(path, solid_path);
+  check_attributes(result, attributes);
   check_destinations(with_companions({path, solid_path}));  // and files read before
   Output_set outputs;
-  stage_result(outputs, result, path, solid_path, ascii);
+  stage_result(outputs, result, path, solid_path, ascii, attributes);
   outputs.commit();
 }
 

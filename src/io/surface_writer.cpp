@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// 3D surfaces: STL and PLY through CGAL's polygon-soup writers; OFF and OBJ, plain text, written
-// here with fmt, each coordinate in the shortest form that reads back as the same double.
+// 3D surfaces: STL through CGAL's polygon-soup writer; PLY (io/ply_writer.hpp), OFF and OBJ
+// written here with fmt, each coordinate in the shortest form that reads back as the same double.
+// PLY and OBJ carry the samples' normals and colours.
 // (CGAL's text writers print 17 digits through iostreams: 0.04 s for bunny00's 75k triangles, 7%
 // of the whole run; this takes a tenth of that.)
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/PLY.h>
 #include <CGAL/IO/STL.h>
 #include <fmt/format.h>
 
 #include "atomic_file.hpp"
+#include "ply_writer.hpp"
 #include "point_reader.hpp"
 #include "temporary_files.hpp"
 #include "writers.hpp"
@@ -19,6 +20,10 @@ const char* const surface_formats = ".stl .ply .off .obj";
 
 bool writes_surface(const std::string& extension) {
   return extension == ".stl" || extension == ".ply" || extension == ".off" || extension == ".obj";
+}
+
+bool carries_attributes(const std::string& extension) {
+  return extension == ".ply" || extension == ".obj";
 }
 
 namespace {
@@ -53,27 +58,51 @@ void write_off(std::ostream& out, const std::vector<Point<3>>& samples,
   for (const auto& t : triangles) text.line("3 {} {} {}", t[0], t[1], t[2]);
 }
 
+// Normals as `vn` lines, one per vertex and named by each face corner (`f a//a ...`); colours
+// as fractions after a vertex's coordinates (`v x y z r g b`, as MeshLab and Open3D write them).
 void write_obj(std::ostream& out, const std::vector<Point<3>>& samples,
-               const std::vector<Facet<3>>& triangles) {
+               const std::vector<Facet<3>>& triangles, const Point_attributes& attributes) {
+  const bool normals = attributes.normals.size() == samples.size() && !samples.empty();
+  const bool colors = attributes.colors.size() == samples.size() && !samples.empty();
   Text_lines text(out);
   text.line("# sculpt: {} vertices, {} triangles", samples.size(), triangles.size());
-  for (const auto& p : samples) text.line("v {} {} {}", p[0], p[1], p[2]);
-  for (const auto& t : triangles) text.line("f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const auto& p = samples[i];
+    if (colors) {
+      const auto& c = attributes.colors[i];
+      text.line("v {} {} {} {} {} {}", p[0], p[1], p[2], c[0] / 255.0, c[1] / 255.0, c[2] / 255.0);
+    } else {
+      text.line("v {} {} {}", p[0], p[1], p[2]);
+    }
+  }
+  if (normals) {
+    for (const auto& n : attributes.normals) text.line("vn {} {} {}", n[0], n[1], n[2]);
+  }
+  for (const auto& t : triangles) {
+    if (normals) {
+      text.line("f {0}//{0} {1}//{1} {2}//{2}", t[0] + 1, t[1] + 1, t[2] + 1);
+    } else {
+      text.line("f {} {} {}", t[0] + 1, t[1] + 1, t[2] + 1);
+    }
+  }
 }
 
 }  // namespace
 
 void write_surface(const std::string& path, const std::vector<Point<3>>& samples,
-                   const std::vector<Facet<3>>& triangles, bool ascii) {
+                   const std::vector<Facet<3>>& triangles, bool ascii,
+                   const Point_attributes& attributes) {
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   const std::string extension = extension_of(path);
   const bool binary = !ascii && (extension == ".stl" || extension == ".ply");
   if (!writes_surface(extension)) {
     throw Error("cannot write a surface as '" + extension + "' (known: " + surface_formats + ")");
   }
-  if (extension == ".off" || extension == ".obj") {
-    Atomic_file file(path, false);
-    (extension == ".off" ? write_off : write_obj)(file.stream(), samples, triangles);
+  if (extension != ".stl") {
+    Atomic_file file(path, binary);
+    if (extension == ".ply") write_ply(file.stream(), samples, triangles, attributes, binary);
+    if (extension == ".off") write_off(file.stream(), samples, triangles);
+    if (extension == ".obj") write_obj(file.stream(), samples, triangles, attributes);
     file.commit();
     return;
   }
@@ -88,10 +117,8 @@ void write_surface(const std::string& path, const std::vector<Point<3>>& samples
   Atomic_file file(path, binary);
   auto& out = file.stream();
   CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
-  const auto precise = CGAL::parameters::stream_precision(17);
-  bool written = false;
-  if (extension == ".stl") written = CGAL::IO::write_STL(out, points, faces, precise);
-  if (extension == ".ply") written = CGAL::IO::write_PLY(out, points, faces, precise);
+  const bool written =
+      CGAL::IO::write_STL(out, points, faces, CGAL::parameters::stream_precision(17));
   // A stream that failed (a full disk, a file-size limit) is reported by commit(), with why.
   if (!written && out) throw Error("failed while writing '" + destination_of(path) + "'");
   file.commit();

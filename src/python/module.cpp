@@ -30,6 +30,7 @@
 #include "io/result_files.hpp"
 #include "io/temporary_files.hpp"
 #include "io/writers.hpp"
+#include "python/point_attributes.hpp"
 #include "python/stage_views.hpp"
 #include "render/headless.hpp"
 #include "scene/scene.hpp"
@@ -72,10 +73,10 @@ std::vector<Point<D>> points_of(const py::array_t<double, py::array::c_style>& a
   return points;
 }
 
-template <std::size_t D>
-py::array_t<double> array_of(const std::vector<std::array<double, D>>& points) {
-  py::array_t<double> array({static_cast<py::ssize_t>(points.size()), py::ssize_t(D)});
-  std::memcpy(array.mutable_data(), points.data(), points.size() * sizeof(Point<D>));
+template <class T, std::size_t D>
+py::array_t<T> array_of(const std::vector<std::array<T, D>>& rows) {
+  py::array_t<T> array({static_cast<py::ssize_t>(rows.size()), py::ssize_t(D)});
+  std::memcpy(array.mutable_data(), rows.data(), rows.size() * sizeof(rows[0]));
   return array;
 }
 
@@ -264,7 +265,8 @@ py::array render_stage(const Result& result, const frontend::Shot& shot) {
 
 // Writes the surface (3D) or curve (2D), and the solid if asked: all files or none.
 void write_result(const Result& result, const std::filesystem::path& path_name,
-                  const std::optional<std::filesystem::path>& solid_name, bool ascii) {
+                  const std::optional<std::filesystem::path>& solid_name, bool ascii,
+                  const py::object& normals, const py::object& colors) {
   const std::string path = path_name.string(), solid = solid_name ? solid_name->string() : "";
   if (!solid.empty() && !builds_solid(result.options.method)) {
     throw Input_error(frontend::no_solid_message(result.options.method));
@@ -276,8 +278,10 @@ void write_result(const Result& result, const std::filesystem::path& path_name,
           !problem.empty())
         throw Input_error(problem);
     }
+    const Point_attributes attributes =
+        attributes_from(normals, colors, static_cast<std::size_t>(r.sample_count()));
     // Before any work: both can be written, and neither replaces a file read_points read.
-    io::write_result(r, path, solid, ascii);
+    io::write_result(r, path, solid, ascii, attributes);
   });
 }
 
@@ -470,9 +474,29 @@ PYBIND11_MODULE(_sculpt, m) {
         return points_array(input);
       },
       py::arg("path"), py::arg("dimension") = 0, py::arg("merge_duplicates") = false,
-      "The points of a file (.xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd; a mesh gives "
+      "The points of a file (.xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd; a "
+      "mesh gives "
       "its vertices) as an (n, 2) or (n, 3) float64 array. dimension=2 or 3 forces it (a flat 3D "
       "file becomes 2D points); merge_duplicates drops points that repeat an earlier one.");
+  m.def(
+      "_read_file",
+      [](const std::filesystem::path& path, int dimension, bool merge_duplicates) {
+        if (dimension != 0 && dimension != 2 && dimension != 3)
+          throw Input_error("the dimension is 0 (the file's), 2 or 3");
+        const frontend::Input input =
+            frontend::load_input(path.string(), "", dimension, merge_duplicates);
+        io::remember_input(path.string());  // no write() may replace it
+        for (const std::string& warning : input.warnings) {
+          if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 2) != 0)
+            throw py::error_already_set();
+        }
+        py::object triangles = py::none();
+        if (!input.reference_triangles.empty()) triangles = array_of(input.reference_triangles);
+        return py::make_tuple(points_array(input), normals_array(input.attributes),
+                              colors_array(input.attributes), triangles);
+      },
+      py::arg("path"), py::arg("dimension") = 0, py::arg("merge_duplicates") = false,
+      "read_file's reader: (points, normals, colors, triangles), None where the file has none.");
   m.def(
       "merge_duplicates",
       [](const py::object& points) {
@@ -689,8 +713,10 @@ clip          3D: (position, azimuth, elevation[, slab]) cuts away what lies bey
               (0.5, 0, 90) shows the lower half of the Delaunay cells, whole)");
 
   m.def("write", &write_result, py::arg("result"), py::arg("path"), py::arg("solid") = py::none(),
-        py::arg("ascii") = false,
+        py::arg("ascii") = false, py::arg("normals") = py::none(), py::arg("colors") = py::none(),
         "Writes the surface (.stl .ply .off .obj) or curve (.obj .svg), and the solid if a path "
         "is given (.mesh .vtu .node/.ele): every file or none. STL and PLY are binary unless "
-        "ascii=True. Paths are strings or pathlib paths.");
+        "ascii=True. Paths are strings or pathlib paths. normals and colors, (n, 3) arrays with "
+        "a row per sample (read_file gives them), go on the vertices of a .ply or .obj surface; "
+        "colors are levels 0-255 (integers) or fractions 0-1 (floats).");
 }

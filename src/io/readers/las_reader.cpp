@@ -3,10 +3,13 @@
 // length records, then fixed-size point records whose first twelve bytes are X, Y, Z as 32-bit
 // integers, scaled and offset by the header's factors. Every field the points depend on is
 // checked: the signature, the version, the header's size for its version, the point format and
-// its record length, the count against the bytes that follow, finite non-zero scales.
+// its record length, the count against the bytes that follow, finite non-zero scales. The
+// formats with colour (2, 3, 5, 7, 8, 10) give red, green and blue as 16-bit levels.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
+#include "attribute_collector.hpp"
 #include "formats.hpp"
 #include "io/io_error.hpp"
 
@@ -35,6 +38,9 @@ std::int32_t little_endian_int32(const unsigned char* bytes) {
 
 // The shortest record of each point data format, 0 to 10 (the specification's table).
 constexpr int shortest_record[] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
+
+// Where a record's red, green and blue start, by point data format; -1 for none.
+constexpr int color_offset[] = {-1, -1, 20, 28, -1, 28, -1, 30, 30, -1, 30};
 
 // Consumes `count` bytes without keeping them (the variable length records).
 void skip(Byte_input& input, std::uint64_t count, const char* what) {
@@ -103,6 +109,8 @@ Point_set read_las(Byte_input& input) {
   Point_set set;
   set.dimension = 3;
   std::vector<unsigned char> bytes(record);
+  std::vector<std::array<double, 3>> colors;
+  double brightest = 0;
   for (std::uint64_t i = 0; i < count; ++i) {
     input.read(bytes.data(), record, "a LAS point record");
     Point<3> point;
@@ -114,7 +122,20 @@ Point_set read_las(Byte_input& input) {
       }
     }
     add_vertex(set, point, input);
+    if (const int at = color_offset[format]; at >= 0) {
+      std::array<double, 3> rgb;
+      for (int k = 0; k < 3; ++k) {
+        rgb[k] = static_cast<double>(little_endian(bytes.data() + at + 2 * k, 2));
+        brightest = std::max(brightest, rgb[k]);
+      }
+      colors.push_back(rgb);
+    }
   }
+  // The specification scales colours to 16 bits; many writers store bytes in those fields. No
+  // level above 255 means bytes (as PDAL and CloudCompare read them).
+  Attribute_collector attributes(brightest > 255 ? 65535 : 255);
+  for (std::size_t i = 0; i < colors.size(); ++i) attributes.color(i, colors[i]);
+  attributes.finish(set, input.name());
   // What follows the points in 1.3 and 1.4 (waveform data, extended variable length records)
   // holds no point. In 1.0-1.2 nothing should follow; writers that pad are read past, as other
   // LAS readers do, with a warning.

@@ -2,13 +2,15 @@
 // PLY (Turk 1994): a text header declaring elements and their typed properties, then the
 // elements in ASCII or binary (either byte order). Coordinates may have any scalar type; every
 // element count and list length is checked against the bytes that can follow it; elements
-// other than `vertex` and `face` are read past.
+// other than `vertex` and `face` are read past. A vertex's nx ny nz and red green blue (or
+// diffuse_red ...) are kept: colours as bytes, 16-bit levels or 0-1 fractions by their type.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <optional>
 
+#include "attribute_collector.hpp"
 #include "formats.hpp"
 #include "io/io_error.hpp"
 #include "polygons.hpp"
@@ -295,11 +297,23 @@ class Value_reader {
   std::size_t next_word_ = 0;
 };
 
-// Where an element keeps what Sculpt reads: the coordinates of a vertex, the corners of a face.
+// Where an element keeps what Sculpt reads: the coordinates, normal and colour of a vertex, the
+// corners of a face.
 struct Roles {
   int x = -1, y = -1, z = -1;  // property indices of a vertex element
-  int corners = -1;            // the index list of a face element
+  int normal[3] = {-1, -1, -1};
+  int color[3] = {-1, -1, -1};
+  int corners = -1;  // the index list of a face element
+
+  bool has_normal() const { return normal[0] >= 0 && normal[1] >= 0 && normal[2] >= 0; }
+  bool has_color() const { return color[0] >= 0 && color[1] >= 0 && color[2] >= 0; }
 };
+
+// The value that a colour property of this type gives to full intensity.
+double full_intensity(Scalar type) {
+  if (!is_integral(type)) return 1;
+  return type == Scalar::uint16 || type == Scalar::int16 ? 65535 : 255;
+}
 
 Roles roles_of(const Element& element, const std::string& name) {
   Roles roles;
@@ -309,6 +323,11 @@ Roles roles_of(const Element& element, const std::string& name) {
       if (property.name == "x") roles.x = k;
       if (property.name == "y") roles.y = k;
       if (property.name == "z") roles.z = k;
+      for (int c = 0; c < 3; ++c) {
+        const std::string name(1, "xyz"[c]), channel = c == 0 ? "red" : c == 1 ? "green" : "blue";
+        if (property.name == "n" + name) roles.normal[c] = k;
+        if (property.name == channel || property.name == "diffuse_" + channel) roles.color[c] = k;
+      }
     }
     if (element.name == "face" && property.is_list &&
         (property.name == "vertex_indices" || property.name == "vertex_index")) {
@@ -330,6 +349,7 @@ Point_set read_ply(Byte_input& input) {
   const Header header = read_header(input);
   const bool binary = header.encoding != Encoding::ascii;
   Value_reader values(input, header.encoding, header.lines);
+  std::optional<Attribute_collector> attributes;
   Point_set set;
   set.dimension = 3;
   bool has_vertices = false;
@@ -354,12 +374,17 @@ Point_set read_ply(Byte_input& input) {
       input.check_count(element.count, least_bytes, "'" + printable(element.name) + "' elements");
     }
     const Roles roles = roles_of(element, input.name());
+    if (element.name == "vertex") {
+      attributes.emplace(roles.has_color() ? full_intensity(element.properties[roles.color[0]].type)
+                                           : 0.0);
+    }
     const std::string what = "a '" + printable(element.name) + "' element";
     if (element.name == "vertex" && binary) {  // a count checked against the bytes left
       set.points.reserve(std::min<std::uint64_t>(element.count, 1 << 20));
     }
     for (std::uint64_t i = 0; i < element.count; ++i) {
       Point<3> point{0, 0, 0};
+      std::array<double, 3> normal{}, color{};
       polygon.clear();
       for (int k = 0; k < static_cast<int>(element.properties.size()); ++k) {
         const Property& property = element.properties[k];
@@ -368,6 +393,10 @@ Point_set read_ply(Byte_input& input) {
           if (k == roles.x) point[0] = value;
           if (k == roles.y) point[1] = value;
           if (k == roles.z) point[2] = value;
+          for (int c = 0; c < 3; ++c) {
+            if (k == roles.normal[c]) normal[c] = value;
+            if (k == roles.color[c]) color[c] = value;
+          }
           continue;
         }
         const double length = values.read(property.count_type, what.c_str());
@@ -393,6 +422,8 @@ Point_set read_ply(Byte_input& input) {
                       " has a coordinate that is not finite");
         }
         add_vertex(set, point, input);
+        if (roles.has_normal()) attributes->normal(i, normal);
+        if (roles.has_color()) attributes->color(i, color);
       }
       add_polygon(set, polygon, input);
     }
@@ -400,6 +431,7 @@ Point_set read_ply(Byte_input& input) {
   if (std::string padding = values.expect_end(); !padding.empty())
     set.warnings.push_back(std::move(padding));
   check_corners(set, input.name(), 0);
+  if (attributes) attributes->finish(set, input.name());
   return set;
 }
 

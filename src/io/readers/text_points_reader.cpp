@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Point lists as scanners and people write them: one point per line, numbers separated by
 // spaces, tabs, commas or semicolons; `#` comments; a leading `p` or `v` (Hoppe's .pts, OBJ-like
-// lists); an optional count on the first line; extra columns (normals, colours) ignored.
+// lists); an optional count on the first line. Columns after x y z are a normal or a colour as
+// the format says (Text_columns); other extra columns are read past.
 #include <algorithm>
 #include <cmath>
 #include <string_view>
 
+#include "attribute_collector.hpp"
 #include "formats.hpp"
 #include "io/io_error.hpp"
 #include "text_lines.hpp"
@@ -47,9 +49,59 @@ std::string_view decimal_comma_field(std::string_view line) {
   return {};
 }
 
+// Three values after x y z that are whole numbers from 0 to 255, some above 1, are colour
+// levels; a normal's components are fractions of at most 1 in size.
+bool look_like_color_levels(const std::vector<std::array<double, 3>>& triples) {
+  bool above_one = false;
+  for (const auto& t : triples) {
+    for (double v : t) {
+      if (!(v >= 0 && v <= 255 && v == std::floor(v))) return false;
+      above_one = above_one || v > 1;
+    }
+  }
+  return above_one;
+}
+
+// Where the triple after the coordinates starts on a line of `count` numbers, or 0 for none.
+std::size_t triple_start(Text_columns columns, std::size_t count) {
+  switch (columns) {
+    case Text_columns::coordinates:
+      return 0;
+    case Text_columns::leica:  // x y z intensity r g b, or x y z r g b
+      return count >= 7 ? 4 : count == 6 ? 3 : 0;
+    case Text_columns::by_values:
+      return count == 6 ? 3 : 0;
+    default:
+      return count >= 6 ? 3 : 0;
+  }
+}
+
+// The triples become normals or colours; a file with them on some lines only keeps none.
+void keep_attributes(Point_set& set, const std::string& name, Text_columns columns,
+                     const std::vector<std::array<double, 3>>& triples, bool on_every_line) {
+  if (triples.empty()) return;
+  if (!on_every_line || triples.size() != set.points.size()) {
+    set.warnings.push_back(name + ": " + std::to_string(triples.size()) + " of " +
+                           std::to_string(set.points.size()) +
+                           " lines have a normal or colour after x y z; none kept");
+    return;
+  }
+  const bool colors = columns == Text_columns::colors || columns == Text_columns::leica ||
+                      (columns == Text_columns::by_values && look_like_color_levels(triples));
+  Attribute_collector attributes(columns == Text_columns::leica ? 255 : 0);
+  for (std::size_t i = 0; i < triples.size(); ++i) {
+    if (colors) {
+      attributes.color(i, triples[i]);
+    } else {
+      attributes.normal(i, triples[i]);
+    }
+  }
+  attributes.finish(set, name);
+}
+
 }  // namespace
 
-Point_set read_text_points(Byte_input& input, int forced_dimension) {
+Point_set read_text_points(Byte_input& input, int forced_dimension, Text_columns extra) {
   Text_lines lines(input, "a text point file");
   Point_set set;
   set.dimension = forced_dimension ? forced_dimension : 3;
@@ -59,6 +111,8 @@ Point_set read_text_points(Byte_input& input, int forced_dimension) {
   bool has_count = false;
   std::size_t columns = 0;       // numbers on every point line, from the first one
   std::string first_point_line;  // where that was, for the message on a line that differs
+  std::vector<std::array<double, 3>> triples;  // the values after x y z, where there are some
+  bool every_line_has_a_triple = true;
   while (lines.next(words, '#', ",;")) {
     if (words.empty()) continue;
     std::size_t first = 0;
@@ -115,12 +169,20 @@ Point_set read_text_points(Byte_input& input, int forced_dimension) {
       p[k] = numbers[k];
     }
     add_vertex(set, p, input);
+    if (set.dimension == 3) {
+      if (const std::size_t start = triple_start(extra, numbers.size()); start > 0) {
+        triples.push_back({numbers[start], numbers[start + 1], numbers[start + 2]});
+      } else {
+        every_line_has_a_triple = false;
+      }
+    }
   }
   if (has_count && announced != set.points.size()) {
     throw Error(input.name() + " is truncated or malformed: its first line announces " +
                 std::to_string(announced) + " points, it holds " +
                 std::to_string(set.points.size()));
   }
+  keep_attributes(set, input.name(), extra, triples, every_line_has_a_triple);
   return set;
 }
 
