@@ -5,7 +5,7 @@
 # cmake -DSOURCE_DIR=... -P source_licence_check.cmake
 set(patterns *.cpp *.hpp *.c *.h *.vert *.frag *.mjs *.js *.ts *.py *.cmake *.script
              CMakeLists.txt)
-set(folders src include tests fuzz examples python scripts web shaders cmake .ci)
+set(folders src include tests fuzz examples python scripts web shaders cmake .ci docs)
 set(sources ${SOURCE_DIR}/CMakeLists.txt)
 foreach(folder ${folders})
   foreach(pattern ${patterns})
@@ -14,7 +14,7 @@ foreach(folder ${folders})
   endforeach()
 endforeach()
 # Shell scripts: the files of scripts/ and .ci/ that start with #!.
-foreach(folder scripts .ci tests/install)
+foreach(folder scripts .ci tests/install docs/tools)
   file(GLOB found ${SOURCE_DIR}/${folder}/*)
   foreach(file ${found})
     file(READ ${file} start LIMIT 2)
