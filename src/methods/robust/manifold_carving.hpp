@@ -50,7 +50,9 @@
 #include "../../core/prefetch.hpp"
 #include "../../core/solid_and_skin.hpp"
 #include "../../core/stage_clock.hpp"
+#include "../../core/union_find.hpp"
 #include "cell_classification.hpp"
+#include "piece_evidence.hpp"
 
 namespace sculpt {
 
@@ -462,11 +464,31 @@ class Manifold_carving {
     }
     const Skin_check check = check_closed_skin<D>(sample_count_, result_.surface);
     // A piece of k samples, all on its skin, has at least k - D cells: one of more than
-    // small_piece + D samples is no piece a group removal refuses to cut off.
-    const bool stands = check.closed_manifold_through_all &&
-                        (check.pieces == 1 || check.smallest_piece > small_piece + D);
+    // small_piece + D samples is no piece a group removal refuses to cut off, nor one that is
+    // a part of its own.
+    const bool stands =
+        check.closed_manifold_through_all &&
+        (check.pieces == 1 || check.smallest_piece > small_piece + D || small_pieces_are_parts());
     if (stands) checked_skin_ = check;
     return stands;
+  }
+
+  // Whether every piece of the surface with at most small_piece + D samples holds the inner
+  // poles of most of its samples (piece_evidence.hpp), as the carving would let it be cut off.
+  bool small_pieces_are_parts() const {
+    Union_find pieces(static_cast<std::size_t>(sample_count_));
+    for (const auto& facet : result_.surface) {
+      for (int j = 1; j < D; ++j) pieces.unite(facet[0], facet[j]);
+    }
+    std::vector<std::vector<int>> members(static_cast<std::size_t>(sample_count_));
+    for (int s = 0; s < sample_count_; ++s) members[pieces.find(s)].push_back(s);
+    const auto in_solid = [&](std::size_t cell) { return outside_[cell] == 0; };
+    for (const auto& samples : members) {
+      if (!samples.empty() && samples.size() <= small_piece + D &&
+          !holds_inner_poles_of_most(result_, samples, in_solid))
+        return false;
+    }
+    return true;
   }
 
   void carve_queue() {
@@ -690,11 +712,12 @@ class Manifold_carving {
   // Whether removing `group` (already set outside) cut a small piece off the solid: a collapse
   // never disconnects, a group removal can. From a solid neighbour of the group a search through
   // the solid either grows past small_piece cells (whatever it is in is large: a real part), or
-  // stops short, a piece of its own: a bubble when some other neighbour lies outside it (refused),
-  // else the only piece, which holds every neighbour (nothing was cut off). A neighbour inside a
-  // large piece found before is in that piece, and a search reaching one is as large.
+  // stops short, a piece of its own: the only piece when it holds every neighbour (nothing was
+  // cut off), else a small piece cut off, refused unless the labelling says it is a part in its
+  // own right (piece_evidence.hpp: a separate curve, a small separate part). A neighbour inside a
+  // piece found before is in that piece, and a search reaching a large one is as large.
   bool cuts_off_small_piece(const std::vector<Cell_handle>& group) {
-    enum : std::uint8_t { unreached = 0, in_this_search = 1, in_large_piece = 2 };
+    enum : std::uint8_t { unreached = 0, in_this_search = 1, in_large_piece = 2, in_own_part = 3 };
     std::vector<Cell_handle> neighbours;
     for (Cell_handle cell : group) {
       for (int i = 0; i <= D; ++i) {
@@ -703,6 +726,7 @@ class Manifold_carving {
     }
     if (reached_.size() != outside_.size()) reached_.assign(outside_.size(), unreached);
     large_pieces_.clear();
+    own_parts_.clear();
     const auto search_small_piece = [&](Cell_handle from) {  // false: from is in a large piece
       piece_.assign(1, from);
       reached_[from->info()] = in_this_search;
@@ -720,27 +744,47 @@ class Manifold_carving {
       }
       return true;
     };
-    bool cut = false, decided = false;
+    bool cut = false;
     for (Cell_handle from : neighbours) {
-      if (reached_[from->info()] == in_large_piece) continue;
+      if (reached_[from->info()] != unreached) continue;
       if (!search_small_piece(from)) {
         for (Cell_handle cell : piece_) reached_[cell->info()] = in_large_piece;
         large_pieces_.insert(large_pieces_.end(), piece_.begin(), piece_.end());
         continue;
       }
-      cut = std::any_of(neighbours.begin(), neighbours.end(), [&](Cell_handle other) {
-        return reached_[other->info()] != in_this_search;
+      const bool whole = std::all_of(neighbours.begin(), neighbours.end(), [&](Cell_handle other) {
+        return reached_[other->info()] == in_this_search;
       });
-      decided = true;
-      break;
+      if (whole) break;  // the only piece: nothing cut off
+      if (!is_part_of_its_own(piece_)) {
+        cut = true;
+        break;
+      }
+      for (Cell_handle cell : piece_) reached_[cell->info()] = in_own_part;
+      own_parts_.insert(own_parts_.end(), piece_.begin(), piece_.end());
     }
     // Only the cells searched carry marks: unmark them.
-    if (decided) {
-      for (Cell_handle cell : piece_) reached_[cell->info()] = unreached;
-    }
+    for (Cell_handle cell : piece_) reached_[cell->info()] = unreached;
     for (Cell_handle cell : large_pieces_) reached_[cell->info()] = unreached;
+    for (Cell_handle cell : own_parts_) reached_[cell->info()] = unreached;
     piece_.clear();
     return cut;
+  }
+
+  // A small piece of the solid (its cells, marked in reached_ by the search that found them)
+  // that holds the inner poles of most of its samples.
+  bool is_part_of_its_own(const std::vector<Cell_handle>& piece) {
+    std::vector<int> samples;
+    for (Cell_handle cell : piece) {
+      for (int i = 0; i <= D; ++i) {
+        if (cell->vertex(i)->info() < sample_count_) samples.push_back(cell->vertex(i)->info());
+      }
+    }
+    std::sort(samples.begin(), samples.end());
+    samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
+    const std::uint8_t mark = reached_[piece.front()->info()];
+    return holds_inner_poles_of_most(result_, samples,
+                                     [&](std::size_t cell) { return reached_[cell] == mark; });
   }
 
   // `failed_at`, when given, is set to the vertex whose test failed (left alone when the group
@@ -836,7 +880,7 @@ class Manifold_carving {
   std::vector<int> solid_cells_at_;
   std::vector<int> outside_cells_at_;
   std::priority_queue<Entry> queue_;
-  std::vector<Cell_handle> star_, piece_, large_pieces_;
+  std::vector<Cell_handle> star_, piece_, large_pieces_, own_parts_;
   std::vector<Vertex_handle> group_vertices_;
   // The change stamps (stamp_around), per site; empty in the flood, which needs none.
   std::vector<std::uint32_t> stamp_;
