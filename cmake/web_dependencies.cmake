@@ -29,6 +29,12 @@ foreach(folder CGAL boost fmt nlohmann CLI glm stb)
   file(CREATE_LINK /usr/include/${folder} ${SCULPT_HOST_INCLUDE}/${folder} SYMBOLIC)
 endforeach()
 
+# Eigen, for CGAL's jet smoothing (the cleaning stage), as CGAL's Eigen3 support target names it.
+if(NOT EXISTS /usr/include/eigen3/Eigen)
+  message(FATAL_ERROR "/usr/include/eigen3 is missing: run scripts/install-dependencies")
+endif()
+file(CREATE_LINK /usr/include/eigen3/Eigen ${SCULPT_HOST_INCLUDE}/Eigen SYMBOLIC)
+
 function(sculpt_header_library target)
   add_library(${target} INTERFACE IMPORTED GLOBAL)
   set_target_properties(${target} PROPERTIES INTERFACE_SYSTEM_INCLUDE_DIRECTORIES
@@ -39,6 +45,8 @@ foreach(target CGAL::CGAL CLI11::CLI11 nlohmann_json::nlohmann_json glm::glm fmt
   sculpt_header_library(${target})
 endforeach()
 set_target_properties(fmt::fmt PROPERTIES INTERFACE_COMPILE_DEFINITIONS FMT_HEADER_ONLY)
+sculpt_header_library(CGAL::Eigen3_support)
+set_target_properties(CGAL::Eigen3_support PROPERTIES INTERFACE_COMPILE_DEFINITIONS CGAL_EIGEN3_ENABLED)
 
 # stb, as libstb is built.
 add_library(sculpt_stb STATIC src/web/stb_implementation.c)

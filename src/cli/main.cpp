@@ -33,6 +33,7 @@ namespace {
 
 struct Reconstruct_arguments {
   std::string input, example, output, solid, stats, rule = "auto";
+  std::string cleaning = to_string(Options{}.cleaning);
   std::string method = to_string(Options{}.method);
   int dimension = 0;  // 0: as the input says
   int seed_sample = Options{}.bordered_seed_sample;
@@ -84,6 +85,7 @@ Options options_of(const Reconstruct_arguments& args, Surface_kind kind) {
   parse_method(args.method, options.method);
   options.kind = kind;
   parse_rule(args.rule, options.rule);
+  parse_cleaning(args.cleaning, options.cleaning);
   options.box_factor = args.box_factor;
   options.alpha = args.alpha;
   options.bordered_seed_sample = args.seed_sample;
@@ -252,6 +254,14 @@ int main(int argc, char** argv) {
                    "skin or extraction")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
+  reconstruct
+      ->add_option("--clean", args.cleaning,
+                   "Smooth the samples first (3D): jet (CGAL's jet smoothing), none, or auto "
+                   "(robust, where the measured noise is at least 0.3 of the spacing: noise that "
+                   "crumples an interpolating surface). The surface passes through the smoothed "
+                   "samples; the report and the verdict say so")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "jet", "none"}));
   reconstruct
       ->add_option("--seed-sample", args.seed_sample,
                    "Bordered: seed with the convex pole of this sample (-1: chosen)")

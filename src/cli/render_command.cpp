@@ -55,6 +55,11 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->check(frontend::positive_length());
   render->add_option("--rule", shot.rule, "Surface rule: auto, skin or extraction")
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
+  render->add_option("--clean", shot.clean,
+                     "Smooth the samples first (3D): auto, jet or none (as reconstruct's); the "
+                     "samples stage then shows them as given and as smoothed")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "jet", "none"}));
   render->add_option("--layers", shot.layers, "Only these layers (comma separated)")
       ->delimiter(',');
   render->add_option("--clip", shot.clip,

@@ -26,6 +26,11 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     out << fmt::format("  {:<28}{:>12}\n", name, value);
   };
   row("samples (n)", stats.samples);
+  if (stats.noise >= 0) row("noise (of spacing)", fmt::format("{:.3f}", stats.noise));
+  if (stats.cleaned) {
+    row("smoothed (jet): noise after", fmt::format("{:.3f}", stats.noise_after));
+    row("  moved (of spacing)", fmt::format("{:.3f}", stats.cleaning_shift));
+  }
   if (stats.kind_chosen_automatically) {
     row("kind (chosen automatically)", to_string(stats.kind));
     row("closed: facets over openings", stats.closed_spanning_facets);

@@ -169,6 +169,28 @@ const char* to_string(Surface_rule rule) {
   return "?";
 }
 
+const char* to_string(Cleaning cleaning) {
+  switch (cleaning) {
+    case Cleaning::none:
+      return "none";
+    case Cleaning::automatic:
+      return "auto";
+    case Cleaning::jet:
+      return "jet";
+  }
+  return "?";
+}
+
+bool parse_cleaning(const std::string& name, Cleaning& cleaning) {
+  for (Cleaning c : {Cleaning::none, Cleaning::automatic, Cleaning::jet}) {
+    if (name == to_string(c)) {
+      cleaning = c;
+      return true;
+    }
+  }
+  return false;
+}
+
 Surface_rule resolved_rule(const Options& options) {
   if (options.rule != Surface_rule::automatic) return options.rule;
   return options.kind == Surface_kind::closed ? Surface_rule::skin : Surface_rule::extraction;

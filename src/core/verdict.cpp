@@ -75,6 +75,18 @@ Verdict verdict(const Statistics& s) {
   } else {
     v.line = fmt::format("NOT a {}: {}; {}", wanted, join(defects), shape);
   }
+  // What the surface passes through, and how far its topology can be trusted on noisy samples.
+  if (s.cleaned) {
+    v.line += fmt::format(
+        "; through the samples smoothed first (noise {:.2f} of their spacing, {:.2f} after; "
+        "moved {:.2f} of it on average)",
+        s.noise, s.noise_after, s.cleaning_shift);
+  } else if (s.noise >= noise_worth_cleaning) {
+    v.line += fmt::format(
+        "; the samples are noisy ({:.2f} of their spacing): expect a crumpled surface with "
+        "invented handles (cleaning jet smooths them first)",
+        s.noise);
+  }
   return v;
 }
 

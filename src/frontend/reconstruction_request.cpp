@@ -53,7 +53,8 @@ nlohmann::json to_json(const Reconstruction_request& request) {
                          {"box_factor", o.box_factor},
                          {"alpha", o.alpha},
                          {"bordered_seed_sample", o.bordered_seed_sample},
-                         {"carve_by_flood", o.carve_by_flood}};
+                         {"carve_by_flood", o.carve_by_flood},
+                         {"cleaning", to_string(o.cleaning)}};
   if (request.edited_points) {
     nlohmann::json points = nlohmann::json::array();
     for (const Point<2>& p : *request.edited_points) points.push_back({p[0], p[1]});
@@ -75,8 +76,9 @@ Reconstruction_request request_from_json(const nlohmann::json& json) {
     Options& o = request.options;
     if (!parse_method(json.at("method").get<std::string>(), o.method) ||
         !parse_kind(json.at("kind").get<std::string>(), o.kind) ||
-        !parse_rule(json.at("rule").get<std::string>(), o.rule))
-      throw io::Error("a reconstruction request names an unknown method, kind or rule");
+        !parse_rule(json.at("rule").get<std::string>(), o.rule) ||
+        !parse_cleaning(json.at("cleaning").get<std::string>(), o.cleaning))
+      throw io::Error("a reconstruction request names an unknown method, kind, rule or cleaning");
     o.box_factor = json.at("box_factor").get<double>();
     o.alpha = json.at("alpha").get<double>();
     o.bordered_seed_sample = json.at("bordered_seed_sample").get<int>();

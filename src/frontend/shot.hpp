@@ -25,6 +25,7 @@ struct Shot {
   double box_factor = Options{}.box_factor;
   double alpha = Options{}.alpha;
   std::string rule = "auto";
+  std::string clean = "auto";  // Options::cleaning by name: auto, jet, none
   std::vector<std::string> layers;
   std::string clip;  // 3D cut-away "POSITION,AZIMUTH,ELEVATION" (scene::Clip); empty: none
   std::string camera_file, save_camera;

@@ -50,7 +50,8 @@ scene::Scene Shot_renderer::render(const Shot& shot, const nlohmann::json* camer
 const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   const std::string key = shot.input + "|" + shot.example + "|" + to_string(kind_of(shot)) + "|" +
                           std::to_string(shot.dimension) + "|" + std::to_string(shot.box_factor) +
-                          "|" + shot.rule + "|" + shot.method + "|" + std::to_string(shot.alpha) +
+                          "|" + shot.rule + "|" + shot.clean + "|" + shot.method + "|" +
+                          std::to_string(shot.alpha) +
                           "|" + std::to_string(shot.merge_duplicates);
   auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
@@ -70,6 +71,9 @@ Options Shot_renderer::options_of(const Shot& shot) {
   }
   if (!parse_rule(shot.rule, options.rule)) {
     throw io::Error("no surface rule '" + shot.rule + "' (rules: auto, skin, extraction)");
+  }
+  if (!parse_cleaning(shot.clean, options.cleaning)) {
+    throw io::Error("no cleaning '" + shot.clean + "' (cleanings: auto, jet, none)");
   }
   // An example is reconstructed as its own kind, as in the viewer and the command line.
   options.kind = kind_of(shot);

@@ -185,6 +185,7 @@ Shot shot_from_json(const nlohmann::json& j, const std::string& name) {
   shot.alpha = f.number("alpha", shot.alpha);
   shot.merge_duplicates = f.flag("merge_duplicates", false);
   shot.rule = f.text("rule", shot.rule);
+  shot.clean = f.text("clean", shot.clean);
   shot.layers = f.texts("layers");
   shot.clip = f.text("clip", "");
   shot.camera_file = f.text("camera_file", "");

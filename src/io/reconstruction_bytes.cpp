@@ -88,10 +88,10 @@ class Byte_reader {
 // A field added to these structures must be added to the lists below: their sizes on the two
 // machines the project builds for (x86-64, WebAssembly) are checked, so that the compiler says so.
 constexpr bool wasm32 = sizeof(void*) == 4;
-static_assert(sizeof(Statistics) == (wasm32 ? 232 : 408),
+static_assert(sizeof(Statistics) == (wasm32 ? 264 : 440),
               "a statistic to carry: statistics_fields");
-static_assert(sizeof(Options) == (wasm32 ? 64 : 72), "an option to carry: options_fields");
-static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 640 : 1168), "a stage to carry: stage_fields");
+static_assert(sizeof(Options) == (wasm32 ? 64 : 80), "an option to carry: options_fields");
+static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 684 : 1232), "a stage to carry: stage_fields");
 
 // One list of every field, read or written by the same code: a field cannot be written and then
 // forgotten when read. `io` is a Byte_writer (fields const) or a Byte_reader.
@@ -106,6 +106,7 @@ void options_fields(Io& io, Options_ref& o) {
   io.value(o.keep_triangulations);
   io.value(o.keep_solid);
   io.value(o.carve_by_flood);
+  io.value(o.cleaning);
 }
 
 template <class Io, class Statistics_ref>
@@ -116,6 +117,10 @@ void statistics_fields(Io& io, Statistics_ref& s) {
   io.value(s.closed_spanning_facets);
   io.value(s.dimension);
   io.value(s.samples);
+  io.value(s.noise);
+  io.value(s.cleaned);
+  io.value(s.noise_after);
+  io.value(s.cleaning_shift);
   io.value(s.translation);
   io.value(s.scale_exponent);
   io.value(s.poles);
@@ -193,6 +198,7 @@ void stage_fields(Io& io, Reconstruction_ref& r) {
   io.values(r.solid);
   io.values(r.surface);
   io.values(r.surface_vertices);
+  io.values(r.given_samples);
 }
 
 }  // namespace

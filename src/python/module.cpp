@@ -200,12 +200,15 @@ Options options_from(const std::string& method, const std::optional<std::string>
 Result reconstruct_points(const py::object& points, const std::string& method,
                           const std::optional<std::string>& kind, const std::string& rule,
                           double box_factor, double alpha, int bordered_seed_sample,
-                          bool keep_triangulations, bool merge_duplicates,
+                          bool keep_triangulations, bool merge_duplicates, const std::string& clean,
                           const py::object& progress) {
   const auto samples = points_from(points);
   Result result;
   result.options = options_from(method, kind, rule, box_factor, alpha, bordered_seed_sample,
                                 keep_triangulations);
+  if (!parse_cleaning(clean, result.options.cleaning)) {
+    throw Input_error("no cleaning '" + clean + "' (cleanings: auto, jet, none)");
+  }
   auto bridge = std::make_shared<Progress_bridge>(progress);
   Options options = result.options;
   options.progress = [bridge](const Progress& p) { return (*bridge)(p); };
@@ -544,7 +547,18 @@ PYBIND11_MODULE(_sculpt, m) {
             }
             return result.samples_array;
           },
-          "The samples, (n, d) float64, in the order given: a writable array of your own.")
+          "The samples, (n, d) float64, in the order given: a writable array of your own. "
+          "Smoothed when stats['cleaned'] (the surface passes through these).")
+      .def_property_readonly(
+          "given_samples",
+          [](py::object self) -> py::object {
+            return visit(self.cast<const Result&>(), [&](const auto& r) -> py::object {
+              if (r.given_samples.empty()) return py::none();
+              return rows_view(self, r.given_samples);
+            });
+          },
+          "When the samples were smoothed (clean=...), the points as given, (n, d), read-only; "
+          "None otherwise.")
       .def_property_readonly(
           "sites",
           [](py::object self) {
@@ -623,7 +637,8 @@ PYBIND11_MODULE(_sculpt, m) {
         py::arg("alpha") = defaults.alpha,
         py::arg("bordered_seed_sample") = defaults.bordered_seed_sample,
         py::arg("keep_triangulations") = defaults.keep_triangulations,
-        py::arg("merge_duplicates") = false, py::arg("progress") = py::none(),
+        py::arg("merge_duplicates") = false, py::arg("clean") = to_string(defaults.cleaning),
+        py::arg("progress") = py::none(),
         R"(Reconstructs a curve from 2D points or a surface from 3D points.
 
 points               an (n, 2) or (n, 3) array, or anything numpy.asarray makes one of
@@ -646,6 +661,11 @@ keep_triangulations  keep the cells of the triangulations (the stages' pictures 
                      False computes as the command line does, with less memory (and for
                      advancing-front and alpha-shape, without DT(S + BBV) and the poles)
 merge_duplicates     drop points that repeat an earlier one (else sculpt.DuplicatePoints)
+clean                smooth the samples first (3D): 'jet' (CGAL's jet smoothing), 'none', or
+                     'auto' (robust, where stats['noise'], the noise over the samples' spacing,
+                     is at least 0.3: noise that crumples an interpolating surface); the surface
+                     then passes through the smoothed samples (result.samples, stats['cleaned'],
+                     result.given_samples the points as given)
 progress             progress(stage, fraction) is called as each stage starts and ends (and
                      within the long ones); progress(stage, fraction, overall), if it takes
                      three arguments, also gets the whole run's fraction, which only grows

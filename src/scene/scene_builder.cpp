@@ -37,6 +37,7 @@ class Scene_builder {
     }
     switch (request_.stage) {
       case Stage::samples:
+        if (!r_.given_samples.empty()) smoothing();
         break;
       case Stage::delaunay:
         require_cells(r_.delaunay);
@@ -178,6 +179,19 @@ class Scene_builder {
   void samples() {
     Layer& layer = add("samples", "samples S", Primitive::points, palette::sample, D == 2 ? 5 : 3);
     for (int s = 0; s < n_; ++s) layer.positions.push_back(vec(r_.sites[s]));
+  }
+
+  // Stage 0, when the samples were smoothed: where they were given, and how far each moved.
+  void smoothing() {
+    Layer& given = add("given-samples", "samples as given (before smoothing)", Primitive::points,
+                       palette::given_sample, D == 2 ? 4 : 2);
+    Layer& moves =
+        add("smoothing", "moved by the smoothing", Primitive::lines, palette::smoothing_move, 1.0f);
+    for (int s = 0; s < n_; ++s) {
+      given.positions.push_back(vec(r_.given_samples[s]));
+      moves.positions.push_back(vec(r_.given_samples[s]));
+      moves.positions.push_back(vec(r_.sites[s]));
+    }
   }
 
   static constexpr const char* triangulations_not_kept =

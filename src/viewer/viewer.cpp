@@ -90,6 +90,7 @@ Job_request Viewer::with_options(Job_request request) const {
   request.options.rule = rule_ == 1   ? Surface_rule::skin
                          : rule_ == 2 ? Surface_rule::extraction
                                       : Surface_rule::automatic;
+  parse_cleaning(cleaning_names[cleaning_], request.options.cleaning);
   return request;
 }
 

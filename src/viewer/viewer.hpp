@@ -274,8 +274,9 @@ class Viewer {
   float box_factor_ = static_cast<float>(Options{}.box_factor);
   bool merge_duplicates_ = false;
   float alpha_ = static_cast<float>(Options{}.alpha);
-  int rule_ = 0;    // auto, skin, extraction
-  int method_ = 0;  // index in method_names()
+  int rule_ = 0;      // auto, skin, extraction
+  int cleaning_ = 0;  // auto, jet, none (cleaning_names)
+  int method_ = 0;    // index in method_names()
 
   // Propagation playback.
   bool playing_ = false;

@@ -19,13 +19,15 @@ inline Method method_at(int index) {
 }
 
 inline const char* const rule_names[] = {"auto", "skin", "extraction"};
+inline const char* const cleaning_names[] = {"auto", "jet", "none"};
 
 // What makes two reconstructions the same: their input and options.
 inline std::string request_key(const Job_request& r) {
   return r.path + "|" + r.example + "|" + std::to_string(r.dimension) + "|" +
          to_string(r.options.method) + "|" + to_string(r.options.kind) + "|" +
          std::to_string(r.options.box_factor) + "|" + to_string(r.options.rule) + "|" +
-         std::to_string(r.options.alpha) + "|" + std::to_string(r.merge_duplicates) + "|" +
+         std::to_string(r.options.alpha) + "|" + to_string(r.options.cleaning) + "|" +
+         std::to_string(r.merge_duplicates) + "|" +
          // Edited points are never the same twice: each edit makes a new set.
          std::to_string(reinterpret_cast<std::uintptr_t>(r.edited_points.get()));
 }

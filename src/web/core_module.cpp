@@ -65,6 +65,10 @@ sculpt::Options options_from(const nlohmann::json& json) {
     if (!sculpt::parse_rule(rule, options.rule))
       throw sculpt::io::Error("no surface rule '" + rule + "' (rules: auto, skin, extraction)");
   }
+  if (const auto clean = json.value("clean", std::string()); !clean.empty()) {
+    if (!sculpt::parse_cleaning(clean, options.cleaning))
+      throw sculpt::io::Error("no cleaning '" + clean + "' (cleanings: auto, jet, none)");
+  }
   options.alpha = json.value("alpha", options.alpha);
   options.box_factor = json.value("boxFactor", options.box_factor);
   if (!(options.alpha >= 0) || !std::isfinite(options.alpha))

@@ -370,3 +370,39 @@ def test_a_signal_during_write_leaves_no_temporary(tmp_path):
         child.send_signal(signal.SIGTERM)
         assert child.wait(timeout=60) == -signal.SIGTERM
         assert sorted(os.listdir(tmp_path)) in ([], ["s.ply", "s.vtu"]), delay
+
+
+def noisy_sphere(n, noise, seed=4):
+    """n samples on a sphere of spacing about 1, moved along the normal by noise x spacing."""
+    rng = np.random.default_rng(seed)
+    v = rng.normal(size=(n, 3))
+    v /= np.linalg.norm(v, axis=1)[:, None]
+    return v * (np.sqrt(n / (4 * np.pi)) + noise * rng.normal(size=n))[:, None]
+
+
+def test_noisy_samples_are_smoothed_first_and_the_command_line_agrees(sculpt_cli, tmp_path):
+    points = noisy_sphere(4000, 0.4)
+    cleaned = sculpt.reconstruct(points)
+    assert cleaned.stats["cleaned"] and cleaned.stats["noise"] >= 0.3
+    assert cleaned.stats["euler_characteristic"] == 2 and cleaned.manifold
+    assert np.array_equal(cleaned.given_samples, points)
+    assert not np.array_equal(cleaned.samples, points)  # the surface is on the smoothed ones
+    as_given = sculpt.reconstruct(points, clean="none")
+    assert not as_given.stats["cleaned"] and as_given.given_samples is None
+    assert "the samples are noisy" in as_given.verdict
+    with pytest.raises(sculpt.InputError, match="no cleaning 'bilateral'"):
+        sculpt.reconstruct(points, clean="bilateral")
+
+    path = tmp_path / "noisy.xyz"
+    np.savetxt(path, points, fmt="%.17g")
+    for clean, expected in (("auto", True), ("none", False), ("jet", True)):
+        stats = tmp_path / f"{clean}.json"
+        run = sculpt_cli("reconstruct", path, "-o", tmp_path / "out.ply", "--clean", clean,
+                         "--stats", stats)
+        assert run.returncode == 0, run.stderr
+        report = json.loads(stats.read_text())
+        assert report["cleaned"] == expected and report["noise"] == pytest.approx(
+            cleaned.stats["noise"])
+        assert ("smoothed" in run.stdout) == expected
+    run = sculpt_cli("reconstruct", path, "-o", tmp_path / "out.ply", "--clean", "bilateral")
+    assert run.returncode == 2 and len(run.stderr.strip().splitlines()) == 1

@@ -44,6 +44,10 @@ export interface ReconstructOptions {
   alpha?: number;
   /** The bounding box's size relative to the samples' (default 5). */
   boxFactor?: number;
+  /** Smooth the samples first (3D): jet, none, or auto (the default: robust, where the measured
+   *  noise is at least 0.3 of the spacing). The surface then passes through the smoothed
+   *  samples, which `vertices` holds; stats.cleaned says so. */
+  clean?: 'auto' | 'jet' | 'none';
   /** Drop repeated points instead of refusing them (indices then refer to `vertices`). */
   mergeDuplicates?: boolean;
   /** Called as the stages run; returning false cancels (a SculptError "cancelled"). */
