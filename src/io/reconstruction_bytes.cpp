@@ -90,8 +90,8 @@ class Byte_reader {
 constexpr bool wasm32 = sizeof(void*) == 4;
 static_assert(sizeof(Statistics) == (wasm32 ? 264 : 440),
               "a statistic to carry: statistics_fields");
-static_assert(sizeof(Options) == (wasm32 ? 64 : 80), "an option to carry: options_fields");
-static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 684 : 1232), "a stage to carry: stage_fields");
+static_assert(sizeof(Options) == (wasm32 ? 72 : 80), "an option to carry: options_fields");
+static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 696 : 1232), "a stage to carry: stage_fields");
 
 // One list of every field, read or written by the same code: a field cannot be written and then
 // forgotten when read. `io` is a Byte_writer (fields const) or a Byte_reader.
