@@ -1,49 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ply_writer.hpp"
 
-#include <fmt/format.h>
-
-#include <cstring>
+#include "output_buffer.hpp"
 
 namespace sculpt::io {
-namespace {
-
-// Bytes gathered and handed to the stream a megabyte at a time.
-class Buffered {
- public:
-  explicit Buffered(std::ostream& out) : out_(out) {}
-  ~Buffered() { flush(); }
-  template <class T>
-  void binary(T value) {
-    char bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    buffer_.append(bytes, bytes + sizeof(T));
-    if (buffer_.size() > (1u << 20)) flush();
-  }
-  template <class... Args>
-  void text(fmt::format_string<Args...> format, Args&&... args) {
-    fmt::format_to(std::back_inserter(buffer_), format, std::forward<Args>(args)...);
-    if (buffer_.size() > (1u << 20)) flush();
-  }
-  void flush() {
-    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    buffer_.clear();
-  }
-
- private:
-  std::ostream& out_;
-  fmt::memory_buffer buffer_;
-};
-
-}  // namespace
-
 void write_ply(std::ostream& out, const std::vector<Point<3>>& vertices,
                const std::vector<Facet<3>>& triangles, const Point_attributes& attributes,
                bool binary) {
   const bool normals = attributes.normals.size() == vertices.size() && !vertices.empty();
   const bool colors = attributes.colors.size() == vertices.size() && !vertices.empty();
   const bool little_endian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
-  Buffered ply(out);
+  Output_buffer ply(out);
   ply.text("ply\nformat {} 1.0\ncomment written by sculpt\n", !binary ? "ascii"
                                                               : little_endian
                                                                   ? "binary_little_endian"

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "atomic_file.hpp"
+#include "output_buffer.hpp"
 #include "ply_writer.hpp"
 #include "point_reader.hpp"
 #include "temporary_files.hpp"
@@ -28,30 +29,9 @@ bool carries_attributes(const std::string& extension) {
 
 namespace {
 
-// Lines are formatted into a buffer that is handed to the stream a megabyte at a time.
-class Text_lines {
- public:
-  explicit Text_lines(std::ostream& out) : out_(out) {}
-  ~Text_lines() { flush(); }
-  template <class... Args>
-  void line(fmt::format_string<Args...> format, Args&&... args) {
-    fmt::format_to(std::back_inserter(buffer_), format, std::forward<Args>(args)...);
-    buffer_.push_back('\n');
-    if (buffer_.size() > (1u << 20)) flush();
-  }
-  void flush() {
-    out_.write(buffer_.data(), static_cast<std::streamsize>(buffer_.size()));
-    buffer_.clear();
-  }
-
- private:
-  std::ostream& out_;
-  fmt::memory_buffer buffer_;
-};
-
 void write_off(std::ostream& out, const std::vector<Point<3>>& samples,
                const std::vector<Facet<3>>& triangles) {
-  Text_lines text(out);
+  Output_buffer text(out);
   text.line("OFF");
   text.line("{} {} 0", samples.size(), triangles.size());
   for (const auto& p : samples) text.line("{} {} {}", p[0], p[1], p[2]);
@@ -64,7 +44,7 @@ void write_obj(std::ostream& out, const std::vector<Point<3>>& samples,
                const std::vector<Facet<3>>& triangles, const Point_attributes& attributes) {
   const bool normals = attributes.normals.size() == samples.size() && !samples.empty();
   const bool colors = attributes.colors.size() == samples.size() && !samples.empty();
-  Text_lines text(out);
+  Output_buffer text(out);
   text.line("# sculpt: {} vertices, {} triangles", samples.size(), triangles.size());
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const auto& p = samples[i];

@@ -368,6 +368,22 @@ The pictures of sculpt.render name stages as the viewer does (sculpt.stages(meth
 'sculpted-delaunay' draws sculpted_delaunay, 'propagation' the events, and so on.)";
 
 }  // namespace
+// A file's points as read_points and read_file read them: the dimension checked, the file
+// remembered as an input (no write() may replace it), and what the reader read past warned of
+// as Python warns (once per place, catchable, filterable); `stack_level` names the frame.
+frontend::Input input_of_file(const std::filesystem::path& path, int dimension,
+                              bool merge_duplicates, int stack_level) {
+  if (dimension != 0 && dimension != 2 && dimension != 3)
+    throw Input_error("the dimension is 0 (the file's), 2 or 3");
+  frontend::Input input = frontend::load_input(path.string(), "", dimension, merge_duplicates);
+  io::remember_input(path.string());
+  for (const std::string& warning : input.warnings) {
+    if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), stack_level) != 0)
+      throw py::error_already_set();
+  }
+  return input;
+}
+
 }  // namespace sculpt::python
 
 PYBIND11_MODULE(_sculpt, m) {
@@ -464,35 +480,19 @@ PYBIND11_MODULE(_sculpt, m) {
   m.def(
       "read_points",
       [](const std::filesystem::path& path, int dimension, bool merge_duplicates) {
-        if (dimension != 0 && dimension != 2 && dimension != 3)
-          throw Input_error("the dimension is 0 (the file's), 2 or 3");
-        const frontend::Input input =
-            frontend::load_input(path.string(), "", dimension, merge_duplicates);
-        io::remember_input(path.string());  // no write() may replace it
-        // What the reader read past, as Python warns: once per place, catchable, filterable.
-        for (const std::string& warning : input.warnings) {
-          if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0)
-            throw py::error_already_set();
-        }
-        return points_array(input);
+        return points_array(input_of_file(path, dimension, merge_duplicates, 1));
       },
       py::arg("path"), py::arg("dimension") = 0, py::arg("merge_duplicates") = false,
-      "The points of a file (.xyz .pwn .pts .txt .csv .xy .p2d .ply .off .obj .stl .las .pcd; a "
-      "mesh gives "
-      "its vertices) as an (n, 2) or (n, 3) float64 array. dimension=2 or 3 forces it (a flat 3D "
-      "file becomes 2D points); merge_duplicates drops points that repeat an earlier one.");
+      ("The points of a file (" + std::string(io::point_formats) +
+       "; a mesh gives its vertices) as an (n, 2) or (n, 3) float64 array. dimension=2 or 3 "
+       "forces it (a flat 3D file becomes 2D points); merge_duplicates drops points that repeat "
+       "an earlier one. read_file gives their normals and colours too.")
+          .c_str());
   m.def(
       "_read_file",
       [](const std::filesystem::path& path, int dimension, bool merge_duplicates) {
-        if (dimension != 0 && dimension != 2 && dimension != 3)
-          throw Input_error("the dimension is 0 (the file's), 2 or 3");
-        const frontend::Input input =
-            frontend::load_input(path.string(), "", dimension, merge_duplicates);
-        io::remember_input(path.string());  // no write() may replace it
-        for (const std::string& warning : input.warnings) {
-          if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 2) != 0)
-            throw py::error_already_set();
-        }
+        // Called by sculpt.read_file: the warnings name the frame that called that.
+        const frontend::Input input = input_of_file(path, dimension, merge_duplicates, 2);
         py::object triangles = py::none();
         if (!input.reference_triangles.empty()) triangles = array_of(input.reference_triangles);
         return py::make_tuple(points_array(input), normals_array(input.attributes),
