@@ -36,6 +36,12 @@ TEST(Sample_noise, MeasuresNoiseInUnitsOfTheSpacing) {
     const double measured = measure_noise<3>(noisy_sphere(5000, noise)).noise;
     EXPECT_NEAR(measured, noise, 0.25 * noise) << "noise " << noise;
   }
+  // The same at any scale: a part in metres sampled at a tenth of a millimetre.
+  auto tiny = noisy_sphere(5000, 0.3);
+  for (auto& p : tiny) {
+    for (double& x : p) x *= 1e-4;
+  }
+  EXPECT_NEAR(measure_noise<3>(tiny).noise, measure_noise<3>(noisy_sphere(5000, 0.3)).noise, 1e-6);
   // A curve: a circle of 400 samples, spacing about 1, noisy by a third of it.
   std::mt19937 random(3);
   std::normal_distribution<double> gauss(0, 1);

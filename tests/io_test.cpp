@@ -610,6 +610,8 @@ TEST(Io, ReadsLasColoursAsLevelsOfSixteenBitsOrOfABytes) {
     }
   }
   EXPECT_TRUE(io::read_points_from_memory(las_file(4, 6), ".las").attributes.colors.empty());
+  // A colour format whose colours are all 0 was written without any.
+  EXPECT_TRUE(io::read_points_from_memory(las_file(4, 7), ".las").attributes.colors.empty());
 }
 
 TEST(Io, ReadsLasOfEveryVersionAndPointFormat) {

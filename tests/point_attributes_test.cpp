@@ -63,6 +63,10 @@ TEST(Point_attributes, PlyNormalsAndColoursOfEveryScalarType) {
   const auto fractions = io::read_points_from_memory(
       binary_ply(2, "float", [](int, int c) { return c / 2.0; }), ".ply");
   EXPECT_EQ(fractions.attributes.colors[0], (std::array<std::uint8_t, 3>{0, 128, 255}));
+  // Float colours written as levels 0-255 (some writers do) are read as levels.
+  const auto float_levels = io::read_points_from_memory(
+      binary_ply(2, "float", [](int, int c) { return 100.0 * c; }), ".ply");
+  EXPECT_EQ(float_levels.attributes.colors[0], (std::array<std::uint8_t, 3>{0, 100, 200}));
 
   // An ASCII PLY with normals only, under the names MeshLab also writes.
   const auto text = io::read_points_from_memory(
@@ -88,12 +92,17 @@ TEST(Point_attributes, ObjNormalsOnePerVertexAndVertexColours) {
   EXPECT_EQ(set.attributes.colors[2], (std::array<std::uint8_t, 3>{0, 0, 255}));
   EXPECT_EQ(set.triangles.size(), 1u);
 
-  // Normals per corner (fewer than the vertices) are not the vertices': none kept, and said.
+  // Normals that are not one per vertex are not the vertices': none kept, and said. Fewer:
+  const auto fewer = io::read_points_from_memory("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n", ".obj");
+  EXPECT_TRUE(fewer.attributes.normals.empty());
+  ASSERT_EQ(fewer.warnings.size(), 1u);
+  EXPECT_NE(fewer.warnings[0].find("1 normals for 3 vertices"), std::string::npos);
+  // As many, but the faces' corners name others than their vertices' own:
   const auto corners = io::read_points_from_memory(
-      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1\n", ".obj");
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0 1 0\nvn 1 0 0\nf 1//3 2//1 3//2\n", ".obj");
   EXPECT_TRUE(corners.attributes.normals.empty());
   ASSERT_EQ(corners.warnings.size(), 1u);
-  EXPECT_NE(corners.warnings[0].find("1 normals for 3 vertices"), std::string::npos);
+  EXPECT_NE(corners.warnings[0].find("per corner"), std::string::npos);
 }
 
 TEST(Point_attributes, TextColumnsByTheFormat) {
@@ -112,6 +121,10 @@ TEST(Point_attributes, TextColumnsByTheFormat) {
   ASSERT_EQ(pts.attributes.colors.size(), 2u);
   EXPECT_EQ(pts.attributes.colors[0], (std::array<std::uint8_t, 3>{10, 20, 30}));
   EXPECT_EQ(pts.attributes.colors[1], (std::array<std::uint8_t, 3>{1, 1, 1}));
+  // Six columns of a .pts are read as an .xyz's: fractions are a normal.
+  const auto pts_normals = io::read_points_from_memory("0 0 0 0 0.6 0.8\n1 0 0 1 0 0\n", ".pts");
+  EXPECT_EQ(pts_normals.attributes.normals.size(), 2u);
+  EXPECT_TRUE(pts_normals.attributes.colors.empty());
   // Open3D's .xyzrgb: fractions.
   const auto xyzrgb = io::read_points_from_memory("0 0 0 1 0.5 0\n1 0 0 0 0 0\n", ".xyzrgb");
   EXPECT_EQ(xyzrgb.attributes.colors[0], (std::array<std::uint8_t, 3>{255, 128, 0}));

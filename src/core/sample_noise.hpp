@@ -143,6 +143,10 @@ double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& n
     normal = {nx / length, ny / length, 0};
     tangent_u = {-normal[1], normal[0], 0};
   }
+  // In units of the neighbourhood's size, so that the fit's conditioning (and its test for a
+  // degenerate system) is the same at any scale of the coordinates.
+  const double size = std::sqrt(covariance[0][0] + covariance[1][1] + covariance[2][2]);
+  if (!(size > 0)) return -1;
   // Least squares of h over the monomials 1, u, v, u^2, u v, v^2 (1, u, u^2 in 2D).
   constexpr int terms = D == 3 ? 6 : 3;
   double normal_matrix[6][6] = {}, right[6] = {};
@@ -152,9 +156,9 @@ double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& n
     double u = 0, v = 0, h = 0;
     for (int k = 0; k < D; ++k) {
       const double d = samples[j][k] - mean[k];
-      u += d * tangent_u[k];
-      v += d * tangent_v[k];
-      h += d * normal[k];
+      u += d * tangent_u[k] / size;
+      v += d * tangent_v[k] / size;
+      h += d * normal[k] / size;
     }
     std::array<double, 7> row{};
     if constexpr (D == 3) {
@@ -175,7 +179,7 @@ double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& n
     for (int a = 0; a < terms; ++a) fitted += right[a] * row[a];
     squares += (row[terms] - fitted) * (row[terms] - fitted);
   }
-  return std::sqrt(squares / (count - terms));
+  return size * std::sqrt(squares / (count - terms));
 }
 
 struct Noise_measure {

@@ -81,7 +81,7 @@ Verdict verdict(const Statistics& s) {
         "; through the samples smoothed first (noise {:.2f} of their spacing, {:.2f} after; "
         "moved {:.2f} of it on average)",
         s.noise, s.noise_after, s.cleaning_shift);
-  } else if (s.noise >= noise_worth_cleaning) {
+  } else if (surface && s.noise >= noise_worth_cleaning) {
     v.line += fmt::format(
         "; the samples are noisy ({:.2f} of their spacing): expect a crumpled surface with "
         "invented handles (cleaning jet smooths them first)",

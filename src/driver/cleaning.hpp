@@ -30,7 +30,7 @@ inline bool smooths(const Options& options, int dimension, std::size_t samples, 
       throw Input_error(
           "cleaning (jet smoothing) smooths surfaces' samples (3D points), not curves'");
     }
-    return samples >= 100 && noise >= 0;  // else the input checks refuse the samples, or:
+    return samples >= 100;  // fewer are refused below
   }
   return options.cleaning == Cleaning::automatic && options.method == Method::robust &&
          dimension == 3 && noise >= noise_worth_cleaning;
@@ -62,6 +62,19 @@ Reconstruction<D> reconstruct_cleaned(const std::vector<Point<D>>& samples, cons
     start = Clock::now();
     std::vector<Point<D>> smoothed;
     if constexpr (D == 3) smoothed = jet_smoothed(samples, jet_neighbours);
+    // Coordinates that are not numbers are the input's to refuse (the input checks name them);
+    // a smoothing that made some of its own (degenerate neighbourhoods) is refused as such.
+    const auto finite = [](const std::vector<Point<D>>& points) {
+      return std::all_of(points.begin(), points.end(), [](const Point<D>& p) {
+        return std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); });
+      });
+    };
+    if (!finite(samples)) return reconstruct(samples, options);
+    if (!finite(smoothed)) {
+      throw Input_error(
+          "cleaning (jet smoothing) failed on these samples: a neighbourhood is degenerate "
+          "(collinear or repeated samples); reconstruct them without it (cleaning none)");
+    }
     double moved = 0;
     for (std::size_t i = 0; i < samples.size(); ++i) {
       double d2 = 0;

@@ -557,8 +557,8 @@ PYBIND11_MODULE(_sculpt, m) {
               return rows_view(self, r.given_samples);
             });
           },
-          "When the samples were smoothed (clean=...), the points as given, (n, d), read-only; "
-          "None otherwise.")
+          "When the samples were smoothed (clean=...) and the triangulations kept (the "
+          "default), the points as given, (n, d), read-only; None otherwise.")
       .def_property_readonly(
           "sites",
           [](py::object self) {

@@ -34,8 +34,10 @@ inline py::object colors_array(const Point_attributes& attributes) {
 }
 
 // An (n, 3) array of real numbers named `what`, as float64; Input_error otherwise.
+// `given_kind`, when given, receives the dtype's kind of the array as given ('f', 'i', 'u').
 inline py::array_t<double, py::array::c_style> triples_from(const py::object& given,
-                                                            std::size_t samples, const char* what) {
+                                                            std::size_t samples, const char* what,
+                                                            char* given_kind = nullptr) {
   py::array array;
   try {
     array = py::module_::import("numpy").attr("asarray")(given);
@@ -43,6 +45,7 @@ inline py::array_t<double, py::array::c_style> triples_from(const py::object& gi
     throw Input_error(std::string(what) + " must be an array of shape (n, 3)");
   }
   const char kind = array.dtype().kind();
+  if (given_kind) *given_kind = kind;
   if (kind != 'f' && kind != 'i' && kind != 'u') {
     throw Input_error(std::string(what) + " must be real numbers, an array of shape (n, 3)");
   }
@@ -63,12 +66,8 @@ inline Point_attributes attributes_from(const py::object& normals, const py::obj
     std::memcpy(attributes.normals.data(), values.data(), samples * sizeof(double) * 3);
   }
   if (!colors.is_none()) {
-    const auto values = triples_from(colors, samples, "colors");
-    const char kind = py::module_::import("numpy")
-                          .attr("asarray")(colors)
-                          .attr("dtype")
-                          .attr("kind")
-                          .cast<std::string>()[0];
+    char kind = 0;
+    const auto values = triples_from(colors, samples, "colors", &kind);
     const double full = kind == 'f' ? 1.0 : 255.0;  // fractions or levels
     attributes.colors.resize(samples);
     const double* value = values.data();

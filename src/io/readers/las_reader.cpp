@@ -132,9 +132,12 @@ Point_set read_las(Byte_input& input) {
     }
   }
   // The specification scales colours to 16 bits; many writers store bytes in those fields. No
-  // level above 255 means bytes (as PDAL and CloudCompare read them).
+  // level above 255 means bytes (as PDAL and CloudCompare read them). A format with colour
+  // whose colours are all 0 was written without any: none kept.
   Attribute_collector attributes(brightest > 255 ? 65535 : 255);
-  for (std::size_t i = 0; i < colors.size(); ++i) attributes.color(i, colors[i]);
+  if (brightest > 0) {
+    for (std::size_t i = 0; i < colors.size(); ++i) attributes.color(i, colors[i]);
+  }
   attributes.finish(set, input.name());
   // What follows the points in 1.3 and 1.4 (waveform data, extended variable length records)
   // holds no point. In 1.0-1.2 nothing should follow; writers that pad are read past, as other

@@ -309,9 +309,10 @@ struct Roles {
   bool has_color() const { return color[0] >= 0 && color[1] >= 0 && color[2] >= 0; }
 };
 
-// The value that a colour property of this type gives to full intensity.
+// The value that a colour property of this type gives to full intensity; 0 for floats, whose
+// scale the values show (0-1 as a rule, 0-255 from some writers).
 double full_intensity(Scalar type) {
-  if (!is_integral(type)) return 1;
+  if (!is_integral(type)) return 0;
   return type == Scalar::uint16 || type == Scalar::int16 ? 65535 : 255;
 }
 

@@ -113,6 +113,7 @@ Point_set read_text_points(Byte_input& input, int forced_dimension, Text_columns
   std::string first_point_line;  // where that was, for the message on a line that differs
   std::vector<std::array<double, 3>> triples;  // the values after x y z, where there are some
   bool every_line_has_a_triple = true;
+  bool with_intensity = false;  // Leica's seven columns: the triple is a colour
   while (lines.next(words, '#', ",;")) {
     if (words.empty()) continue;
     std::size_t first = 0;
@@ -171,6 +172,7 @@ Point_set read_text_points(Byte_input& input, int forced_dimension, Text_columns
     add_vertex(set, p, input);
     if (set.dimension == 3) {
       if (const std::size_t start = triple_start(extra, numbers.size()); start > 0) {
+        with_intensity = with_intensity || start == 4;
         triples.push_back({numbers[start], numbers[start + 1], numbers[start + 2]});
       } else {
         every_line_has_a_triple = false;
@@ -182,7 +184,10 @@ Point_set read_text_points(Byte_input& input, int forced_dimension, Text_columns
                 std::to_string(announced) + " points, it holds " +
                 std::to_string(set.points.size()));
   }
-  keep_attributes(set, input.name(), extra, triples, every_line_has_a_triple);
+  // Six columns of a .pts are colours or normals as their values show, as in an .xyz.
+  const Text_columns kept =
+      extra == Text_columns::leica && !with_intensity ? Text_columns::by_values : extra;
+  keep_attributes(set, input.name(), kept, triples, every_line_has_a_triple);
   return set;
 }
 

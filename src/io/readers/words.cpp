@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "words.hpp"
 
-#include "decimal.hpp"
-
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
+
+#include "decimal.hpp"
 
 namespace sculpt::io {
 
