@@ -54,22 +54,21 @@ Reconstruction<D> reconstruct_cleaned(const std::vector<Point<D>>& samples, cons
                       "not " +
                       std::to_string(samples.size()));
   }
+  // Coordinates that are not numbers are the input's to refuse (the input checks name them),
+  // before any smoothing; a smoothing that made some of its own is refused as such.
+  const auto finite = [](const std::vector<Point<D>>& points) {
+    return std::all_of(points.begin(), points.end(), [](const Point<D>& p) {
+      return std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); });
+    });
+  };
   Reconstruction<D> result;
   std::optional<Stage_measure> cleaning;
-  if (!smooths(options, D, samples.size(), given.noise)) {
+  if (!smooths(options, D, samples.size(), given.noise) || !finite(samples)) {
     result = reconstruct(samples, options);
   } else {
     start = Clock::now();
     std::vector<Point<D>> smoothed;
     if constexpr (D == 3) smoothed = jet_smoothed(samples, jet_neighbours);
-    // Coordinates that are not numbers are the input's to refuse (the input checks name them);
-    // a smoothing that made some of its own (degenerate neighbourhoods) is refused as such.
-    const auto finite = [](const std::vector<Point<D>>& points) {
-      return std::all_of(points.begin(), points.end(), [](const Point<D>& p) {
-        return std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); });
-      });
-    };
-    if (!finite(samples)) return reconstruct(samples, options);
     if (!finite(smoothed)) {
       throw Input_error(
           "cleaning (jet smoothing) failed on these samples: a neighbourhood is degenerate "
