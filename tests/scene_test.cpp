@@ -52,6 +52,36 @@ TEST(Scene, StagesHaveTheirLayers) {
 
 // Where a result ends and where it is not a manifold is drawn, not only counted: curve ends, a
 // surface's border edges (two end points each) and its non-manifold edges.
+// Samples in rings of `around` around a torus's tube (radius 0.11), each ring turned half a step.
+std::vector<Point<3>> thin_torus(int around, int along = 40) {
+  std::vector<Point<3>> samples;
+  const double pi = std::acos(-1.0), tube = 0.11;
+  for (int i = 0; i < along; ++i) {
+    for (int j = 0; j < around; ++j) {
+      const double theta = 2 * pi * i / along, phi = (2 * j + i % 2) * pi / around;
+      const double r = 1 + tube * std::cos(phi);
+      samples.push_back({r * std::cos(theta), r * std::sin(theta), tube * std::sin(phi)});
+    }
+  }
+  return samples;
+}
+
+TEST(Scene, TheSurfaceStageDrawsTheLoopsOfThinHandles) {
+  Options options;
+  options.cleaning = Cleaning::none;
+  const auto torus = reconstruct(thin_torus(4), options);
+  ASSERT_EQ(torus.stats.thin_handles, 1u) << verdict(torus.stats).line;
+  scene::Request surface;
+  surface.stage = scene::Stage::surface;
+  const scene::Scene scene = scene::build_scene(torus, surface);
+  const scene::Layer* loops = find(scene, "thin-handles");
+  ASSERT_NE(loops, nullptr);
+  EXPECT_EQ(loops->positions.size(), 8u) << "four edges around the tube";
+  EXPECT_EQ(loops->label, "suspect handles, thinner than the spacing (1)");
+  EXPECT_EQ(find(scene::build_scene(reconstruct(thin_torus(5), options), surface), "thin-handles"),
+            nullptr);
+}
+
 TEST(Scene, TheSurfaceStageShowsBordersAndDefects) {
   scene::Request surface;
   surface.stage = scene::Stage::surface;

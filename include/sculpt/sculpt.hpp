@@ -383,6 +383,10 @@ struct Statistics {
   std::size_t components = 0;             ///< connected pieces of the result
   long euler_characteristic = 0;          ///< V - E + F (3D) or V - E (2D) of the result
   std::size_t unused_samples = 0;         ///< samples on no facet of the result
+  /// 3D, a closed 2-manifold: how many of its handles are thinner than the samples' spacing, a
+  /// neck of three or four samples that the sampling cannot tell from a gap (at least this many:
+  /// Reconstruction::thin_handles).
+  std::size_t thin_handles = 0;
   /// The samples' noise over their spacing (core/sample_noise.hpp), as given; -1 when not
   /// measured (fewer than 100 samples).
   double noise = -1;
@@ -391,6 +395,14 @@ struct Statistics {
   double cleaning_shift = 0;  ///< cleaned: how far the samples moved, on average, over the spacing
   std::vector<Stage_measure> stages;
   double total_seconds = 0;
+};
+
+/// A handle of a closed surface that its samples cannot vouch for: the loop of three samples
+/// (the fourth -1) or four around its neck, or through it, bounding no piece of the surface, with
+/// no sample around it (core/thin_handles.hpp).
+struct Thin_handle {
+  std::array<int, 4> loop{-1, -1, -1, -1};
+  double width_over_spacing = 0;  ///< the loop's longest edge over the samples' spacing there
 };
 
 /// Index ranges of the sites: samples first, then the 2^D box corners, then inserted poles.
@@ -413,6 +425,8 @@ struct Reconstruction {
   Candidates_stage<D> candidates;       ///< 6d (crust and co-cone in 3D)
   std::vector<Cell<D>> solid;           ///< 7: cells of stage 6 whose vertices are all samples
   std::vector<Facet<D>> surface;        ///< 8: oriented facets; closed: normals point outward
+  /// 3D, a closed surface of genus > 0: its thin handles, the evidence for Statistics::thin_handles
+  std::vector<Thin_handle> thin_handles;
   /// 0 (when Statistics::cleaned): the samples as they were given, before smoothing; the sites'
   /// first points are the smoothed samples, which the surface passes through.
   std::vector<Point<D>> given_samples;

@@ -101,6 +101,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   row(three ? "boundary loops" : "open curves", stats.boundary_loops);
   row("components", stats.components);
   row("Euler characteristic", stats.euler_characteristic);
+  if (stats.thin_handles > 0) row("thin handles (suspect)", stats.thin_handles);
   if (stats.surface_vertices > 0) {
     row("vertices (its own)", fmt::format("{} ({:.1f} per sample)", stats.surface_vertices,
                                           double(stats.surface_vertices) / double(stats.samples)));

@@ -72,6 +72,13 @@ Verdict verdict(const Statistics& s) {
                  ? fmt::format("{}: {}, {} vertices of its own for {} samples", what, shape,
                                s.surface_vertices, s.samples)
                  : fmt::format("{}: {}, all {} samples on it", what, shape, s.samples);
+    // Handles the samples cannot vouch for (core/thin_handles.hpp): the genus may be wrong.
+    if (s.thin_handles > 0) {
+      v.line += fmt::format(
+          "; {} suspect: a neck of 3-4 samples, thinner than their spacing (a gap or a "
+          "touching the sampling cannot tell apart)",
+          plural(s.thin_handles, "handle", "handles"));
+    }
   } else {
     v.line = fmt::format("NOT a {}: {}; {}", wanted, join(defects), shape);
   }

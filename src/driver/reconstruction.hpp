@@ -14,6 +14,7 @@
 #include "../core/delaunay.hpp"
 #include "../core/exact_normalisation.hpp"
 #include "../core/facet_topology.hpp"
+#include "../core/thin_handles.hpp"
 #include "../core/first_stages.hpp"
 #include "../core/input_checks.hpp"
 #include "../core/poles.hpp"
@@ -147,6 +148,7 @@ Reconstruction<Traits::dimension> reconstruct_with(
   measure_topology<Traits::dimension>(
       result.interpolates() ? samples.size() : result.surface_vertices.size(), result.surface,
       result.stats, checked_skin ? &*checked_skin : nullptr);
+  if constexpr (Traits::dimension == 3) find_thin_handles_of(result);
   if (keep) *keep = normalised_poles_of(result);
   undo_normalisation<Traits::dimension>(result, normalisation, samples);
   clock.finish();

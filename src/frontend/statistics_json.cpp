@@ -74,6 +74,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"components", stats.components},
       {"euler_characteristic", stats.euler_characteristic},
       {"unused_samples", stats.unused_samples},
+      {"thin_handles", stats.thin_handles},
       {"total_seconds", stats.total_seconds},
       {"stages", stages},
   };

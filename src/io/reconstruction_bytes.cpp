@@ -88,10 +88,10 @@ class Byte_reader {
 // A field added to these structures must be added to the lists below: their sizes on the two
 // machines the project builds for (x86-64, WebAssembly) are checked, so that the compiler says so.
 constexpr bool wasm32 = sizeof(void*) == 4;
-static_assert(sizeof(Statistics) == (wasm32 ? 264 : 440),
+static_assert(sizeof(Statistics) == (wasm32 ? 272 : 448),
               "a statistic to carry: statistics_fields");
 static_assert(sizeof(Options) == (wasm32 ? 72 : 80), "an option to carry: options_fields");
-static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 696 : 1232), "a stage to carry: stage_fields");
+static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 712 : 1264), "a stage to carry: stage_fields");
 
 // One list of every field, read or written by the same code: a field cannot be written and then
 // forgotten when read. `io` is a Byte_writer (fields const) or a Byte_reader.
@@ -161,6 +161,7 @@ void statistics_fields(Io& io, Statistics_ref& s) {
   io.value(s.components);
   io.value(s.euler_characteristic);
   io.value(s.unused_samples);
+  io.value(s.thin_handles);
   io.value(s.total_seconds);
 }
 
@@ -197,6 +198,7 @@ void stage_fields(Io& io, Reconstruction_ref& r) {
   io.values(r.candidates.without_umbrella);
   io.values(r.solid);
   io.values(r.surface);
+  io.values(r.thin_handles);
   io.values(r.surface_vertices);
   io.values(r.given_samples);
 }

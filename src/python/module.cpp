@@ -363,6 +363,9 @@ crust              voronoi_vertices (v, d), cells, cell_count: DT(S + V) of the 
 candidates         chosen, pruned (k, d): the facets the crust or co-cone chose, those pruned;
                    rims_kept; spanning (k, d): robust bordered surfaces, the facets removed as
                    spanning an opening (the paper's bordered surface is chosen + spanning)
+handles            thin: records (loop (4,) int32, width_over_spacing) of a closed surface's
+                   handles thinner than the samples' spacing, the loop of 3 samples (then -1)
+                   or 4 around or through each (any method, 3D; stats['thin_handles'] counts)
 
 The pictures of sculpt.render name stages as the viewer does (sculpt.stages(method, d)):
 'sculpted-delaunay' draws sculpted_delaunay, 'propagation' the events, and so on.)";

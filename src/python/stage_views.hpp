@@ -83,6 +83,13 @@ inline py::dtype carve_event_type() {
                      sizeof(Carve_event));
 }
 
+// Thin handles (core/thin_handles.hpp): the loop of 3 samples (then -1) or 4, width over spacing.
+inline py::dtype thin_handle_type() {
+  return record_type({{"loop", "(4,)i4", offsetof(Thin_handle, loop)},
+                      {"width_over_spacing", "f8", offsetof(Thin_handle, width_over_spacing)}},
+                     sizeof(Thin_handle));
+}
+
 // Poles (stage 2): center, radius, the cell of stage 1, its sites, convex.
 template <int D>
 py::dtype pole_type() {
@@ -176,6 +183,12 @@ py::dict stage_objects(py::handle owner, const Reconstruction<D>& r) {
     candidates["spanning"] = rows_view(owner, r.candidates.spanning);
     candidates["rims_kept"] = r.candidates.rims_kept;
     stages["candidates"] = stage_object(candidates);
+  }
+  {
+    py::dict handles;
+    handles["thin"] = read_only_view(owner, r.thin_handles.data(), r.thin_handles.size(),
+                                     thin_handle_type());
+    stages["handles"] = stage_object(handles);
   }
   return stages;
 }

@@ -49,6 +49,8 @@ inline constexpr Color border{1.00f, 0.45f, 0.00f};
 inline constexpr Color non_manifold{0.90f, 0.00f, 0.00f};
 // The triangles a bordered rule removed over an opening: where the samples end.
 inline constexpr Color opening{0.55f, 0.30f, 0.85f};
+// A handle thinner than the samples' spacing: a loop the sampling cannot vouch for.
+inline constexpr Color thin_handle{0.00f, 0.75f, 0.80f};
 // Samples an interpolating result leaves off.
 inline constexpr Color unused_sample{0.10f, 0.10f, 0.55f};
 // The curve a built-in 2D example was sampled from (the viewer's ground truth), light under all.

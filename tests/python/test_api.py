@@ -406,3 +406,30 @@ def test_noisy_samples_are_smoothed_first_and_the_command_line_agrees(sculpt_cli
         assert ("smoothed" in run.stdout) == expected
     run = sculpt_cli("reconstruct", path, "-o", tmp_path / "out.ply", "--clean", "bilateral")
     assert run.returncode == 2 and len(run.stderr.strip().splitlines()) == 1
+
+
+def thin_torus(around, along=40, tube_radius=0.11):
+    """Samples in rings of `around` around a tube of a torus, each ring turned half a step."""
+    ring = np.repeat(np.arange(along), around)
+    theta = ring * 2 * np.pi / along
+    phi = np.tile(np.arange(around) * 2 * np.pi / around, along) + (ring % 2) * np.pi / around
+    r = 1 + tube_radius * np.cos(phi)
+    return np.c_[r * np.cos(theta), r * np.sin(theta), tube_radius * np.sin(phi)]
+
+
+def test_a_handle_thinner_than_the_spacing_is_named_suspect_with_its_loop():
+    # A tube four samples around: the handle is real but no sample lies around its neck.
+    thin = sculpt.reconstruct(thin_torus(4), clean="none")
+    assert thin.stats["euler_characteristic"] == 0 and thin.manifold
+    assert thin.stats["thin_handles"] == 1
+    handles = thin.stages["handles"].thin
+    assert handles.dtype.names == ("loop", "width_over_spacing")
+    loop = handles["loop"][0]
+    assert len(set(loop // 4)) == 1  # one ring of the tube: the loop around its neck
+    assert 0 < handles["width_over_spacing"][0] <= 2
+    assert "1 handle suspect" in thin.verdict
+    # Five around (the samples as far apart around as along): the same genus, nothing suspect.
+    sampled = sculpt.reconstruct(thin_torus(5, tube_radius=0.12), clean="none")
+    assert sampled.stats["euler_characteristic"] == 0
+    assert sampled.stats["thin_handles"] == 0 and len(sampled.stages["handles"].thin) == 0
+    assert "suspect" not in sampled.verdict

@@ -1,0 +1,233 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "thin_handles.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <limits>
+#include <unordered_set>
+
+namespace sculpt {
+namespace {
+
+std::uint64_t edge_key(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
+  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (std::uint64_t{lo} << 32) | hi;
+}
+
+double distance(const Point<3>& a, const Point<3>& b) {
+  return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+                   (a[2] - b[2]) * (a[2] - b[2]));
+}
+
+// The surface as half-edges: each vertex's outgoing ones sorted by the vertex they lead to, with
+// the triangle on their left. On a closed 2-manifold every edge is two half-edges, so a vertex's
+// outgoing half-edges name each of its neighbours once.
+class Half_edges {
+ public:
+  Half_edges(std::size_t point_count, const std::vector<Facet<3>>& triangles)
+      : triangles_(triangles), offsets_(point_count + 1, 0) {
+    for (const auto& t : triangles) {
+      for (int v : t) ++offsets_[v + 1];
+    }
+    for (std::size_t v = 0; v < point_count; ++v) offsets_[v + 1] += offsets_[v];
+    entries_.resize(offsets_.back());
+    std::vector<std::size_t> fill(offsets_.begin(), offsets_.end() - 1);
+    for (std::size_t f = 0; f < triangles.size(); ++f) {
+      for (int j = 0; j < 3; ++j) {
+        entries_[fill[triangles[f][j]]++] = {triangles[f][(j + 1) % 3], static_cast<int>(f)};
+      }
+    }
+    for (std::size_t v = 0; v < point_count; ++v) {
+      std::sort(entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[v]),
+                entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[v + 1]));
+    }
+  }
+
+  struct Entry {
+    int to;
+    int triangle;
+    bool operator<(const Entry& other) const { return to < other.to; }
+  };
+
+  const Entry* begin(int v) const { return entries_.data() + offsets_[v]; }
+  const Entry* end(int v) const { return entries_.data() + offsets_[v + 1]; }
+
+  // The triangle on the left of a -> b, or -1 when a and b are not neighbours.
+  int triangle(int a, int b) const {
+    const Entry* found = std::lower_bound(begin(a), end(a), Entry{b, 0});
+    return found != end(a) && found->to == b ? found->triangle : -1;
+  }
+  bool adjacent(int a, int b) const { return triangle(a, b) >= 0; }
+
+  // The third vertex of the triangle on the left of a -> b.
+  int apex(int a, int b) const {
+    const auto& t = triangles_[triangle(a, b)];
+    for (int v : t) {
+      if (v != a && v != b) return v;
+    }
+    return -1;
+  }
+
+ private:
+  const std::vector<Facet<3>>& triangles_;
+  std::vector<std::size_t> offsets_;
+  std::vector<Entry> entries_;
+};
+
+class Thin_handle_search {
+ public:
+  Thin_handle_search(const std::vector<Point<3>>& points, const std::vector<Facet<3>>& triangles,
+                     std::size_t genus)
+      : points_(points),
+        triangles_(triangles),
+        genus_(genus),
+        half_edges_(points.size(), triangles),
+        seen_(triangles.size(), 0),
+        used_(points.size(), false),
+        // Flooding is bounded: a loop around a small disc is rejected after a few triangles, a
+        // separating neck costs the smaller side; a pathological surface stops the search early.
+        budget_(64 * triangles.size() + 4096) {}
+
+  std::vector<Thin_handle> run() {
+    const int n = static_cast<int>(points_.size());
+    // Triangles first (the thinnest necks), then quadrilaterals; each cycle is met once, from
+    // its smallest vertex.
+    for (int u = 0; u < n && !done(); ++u) {
+      for (const auto* v = half_edges_.begin(u); v != half_edges_.end(u) && !done(); ++v) {
+        if (v->to < u) continue;
+        const int apex_left = half_edges_.apex(u, v->to), apex_right = half_edges_.apex(v->to, u);
+        for (const auto* w = v + 1; w != half_edges_.end(u) && !done(); ++w) {
+          if (w->to == apex_left || w->to == apex_right) continue;
+          if (half_edges_.adjacent(v->to, w->to)) consider({u, v->to, w->to, -1});
+        }
+      }
+    }
+    for (int u = 0; u < n && !done(); ++u) {
+      for (const auto* v = half_edges_.begin(u); v != half_edges_.end(u) && !done(); ++v) {
+        if (v->to < u) continue;
+        for (const auto* w = v + 1; w != half_edges_.end(u) && !done(); ++w) {
+          if (half_edges_.adjacent(v->to, w->to)) continue;  // a chord
+          for (const auto* x = half_edges_.begin(v->to); x != half_edges_.end(v->to); ++x) {
+            if (x->to <= u || x->to == w->to || half_edges_.adjacent(u, x->to)) continue;
+            if (half_edges_.adjacent(x->to, w->to)) consider({u, v->to, x->to, w->to});
+          }
+        }
+      }
+    }
+    return found_;
+  }
+
+ private:
+  bool done() const { return found_.size() >= genus_ || budget_ == 0; }
+
+  static int length(const std::array<int, 4>& loop) { return loop[3] < 0 ? 3 : 4; }
+
+  void consider(const std::array<int, 4>& loop) {
+    const int k = length(loop);
+    for (int i = 0; i < k; ++i) {
+      if (used_[loop[i]]) return;
+    }
+    const double ratio = width_over_spacing(loop);
+    if (!(ratio <= thin_neck)) return;
+    std::unordered_set<std::uint64_t> loop_edges;
+    for (int i = 0; i < k; ++i) loop_edges.insert(edge_key(loop[i], loop[(i + 1) % k]));
+    if (!sides_meet(loop, loop_edges)) return;
+    for (int i = 0; i < k; ++i) used_[loop[i]] = true;
+    cut_.insert(loop_edges.begin(), loop_edges.end());
+    found_.push_back({loop, ratio});
+  }
+
+  // The loop's longest edge over the samples' spacing there: the mean, over its samples, of the
+  // distance to their nearest neighbour on the surface.
+  double width_over_spacing(const std::array<int, 4>& loop) const {
+    const int k = length(loop);
+    double longest = 0, spacing = 0;
+    for (int i = 0; i < k; ++i) {
+      longest = std::max(longest, distance(points_[loop[i]], points_[loop[(i + 1) % k]]));
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto* e = half_edges_.begin(loop[i]); e != half_edges_.end(loop[i]); ++e) {
+        nearest = std::min(nearest, distance(points_[loop[i]], points_[e->to]));
+      }
+      spacing += nearest / k;
+    }
+    return spacing > 0 ? longest / spacing : 0;
+  }
+
+  bool crosses(int a, int b, const std::unordered_set<std::uint64_t>& loop_edges) const {
+    const auto key = edge_key(a, b);
+    return loop_edges.count(key) > 0 || cut_.count(key) > 0;
+  }
+
+  // Whether the triangles on the two sides of the loop's first edge are joined on the surface
+  // cut along the loop and the loops kept: the loop is then independent of them. Both sides are
+  // flooded a triangle at a time in turn; the first to run out of triangles is a piece the loop
+  // cuts off.
+  bool sides_meet(const std::array<int, 4>& loop,
+                  const std::unordered_set<std::uint64_t>& loop_edges) {
+    ++round_;
+    const std::uint32_t mark[2] = {2 * round_, 2 * round_ + 1};
+    std::deque<int> front[2];
+    front[0].push_back(half_edges_.triangle(loop[0], loop[1]));
+    front[1].push_back(half_edges_.triangle(loop[1], loop[0]));
+    seen_[front[0].front()] = mark[0];
+    seen_[front[1].front()] = mark[1];
+    for (;;) {
+      for (int side = 0; side < 2; ++side) {
+        if (front[side].empty()) return false;
+        if (budget_ == 0) return false;
+        --budget_;
+        const int f = front[side].front();
+        front[side].pop_front();
+        const auto& t = triangles_[f];
+        for (int j = 0; j < 3; ++j) {
+          const int a = t[j], b = t[(j + 1) % 3];
+          if (crosses(a, b, loop_edges)) continue;
+          const int next = half_edges_.triangle(b, a);
+          if (next < 0) continue;
+          if (seen_[next] == mark[1 - side]) return true;
+          if (seen_[next] == mark[side]) continue;
+          seen_[next] = mark[side];
+          front[side].push_back(next);
+        }
+      }
+    }
+  }
+
+  const std::vector<Point<3>>& points_;
+  const std::vector<Facet<3>>& triangles_;
+  const std::size_t genus_;
+  const Half_edges half_edges_;
+  std::vector<std::uint32_t> seen_;
+  std::vector<bool> used_;
+  std::unordered_set<std::uint64_t> cut_;
+  std::vector<Thin_handle> found_;
+  std::uint32_t round_ = 0;
+  std::size_t budget_;
+};
+
+}  // namespace
+
+std::vector<Thin_handle> find_thin_handles(const std::vector<Point<3>>& points,
+                                           const std::vector<Facet<3>>& triangles,
+                                           std::size_t genus) {
+  if (genus == 0 || triangles.empty()) return {};
+  return Thin_handle_search(points, triangles, genus).run();
+}
+
+void find_thin_handles_of(Reconstruction<3>& result) {
+  auto& s = result.stats;
+  result.thin_handles.clear();
+  s.thin_handles = 0;
+  const bool closed_manifold = s.facets > 0 && s.boundary_ridges == 0 &&
+                               s.non_manifold_ridges == 0 && s.non_manifold_vertices == 0;
+  const long genus = (2 * static_cast<long>(s.components) - s.euler_characteristic) / 2;
+  if (!closed_manifold || genus <= 0) return;
+  result.thin_handles = find_thin_handles(result.surface_points(), result.surface,
+                                          static_cast<std::size_t>(genus));
+  s.thin_handles = result.thin_handles.size();
+}
+
+}  // namespace sculpt
