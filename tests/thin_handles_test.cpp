@@ -3,10 +3,11 @@
 // or four samples around is one thin handle, found once however many of its rings qualify; a
 // tube of eight around, or a fat tube of three, is not; a loop around a small disc (the link of a
 // vertex of three triangles) is no handle; the verdict says how many are suspect.
+#include "core/thin_handles.hpp"
+
 #include <cmath>
 
 #include "core/facet_topology.hpp"
-#include "core/thin_handles.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -27,7 +28,8 @@ Mesh torus(int ring, int tube, double tube_radius) {
     for (int j = 0; j < tube; ++j) {
       const double theta = 2 * pi * i / ring, phi = 2 * pi * j / tube;
       const double r = 1 + tube_radius * std::cos(phi);
-      mesh.points.push_back({r * std::cos(theta), r * std::sin(theta), tube_radius * std::sin(phi)});
+      mesh.points.push_back(
+          {r * std::cos(theta), r * std::sin(theta), tube_radius * std::sin(phi)});
     }
   }
   const auto at = [&](int i, int j) { return ((i + ring) % ring) * tube + (j + tube) % tube; };
@@ -40,7 +42,9 @@ Mesh torus(int ring, int tube, double tube_radius) {
   return mesh;
 }
 
-Statistics topology_of(const Mesh& mesh) { return facet_topology(mesh.points.size(), mesh.triangles); }
+Statistics topology_of(const Mesh& mesh) {
+  return facet_topology(mesh.points.size(), mesh.triangles);
+}
 
 TEST(ThinHandles, ATubeThreeSamplesAroundIsOneThinHandle) {
   // 40 segments along a core of length 2 pi: about 0.16 apart; three around a tube of radius 0.09
@@ -57,7 +61,8 @@ TEST(ThinHandles, ATubeThreeSamplesAroundIsOneThinHandle) {
 }
 
 TEST(ThinHandles, ATubeFourSamplesAroundIsOneToo) {
-  const auto handles = find_thin_handles(torus(40, 4, 0.11).points, torus(40, 4, 0.11).triangles, 1);
+  const auto handles =
+      find_thin_handles(torus(40, 4, 0.11).points, torus(40, 4, 0.11).triangles, 1);
   ASSERT_EQ(handles.size(), 1u);
   EXPECT_GE(handles[0].loop[3], 0);
 }

@@ -186,8 +186,8 @@ py::dict stage_objects(py::handle owner, const Reconstruction<D>& r) {
   }
   {
     py::dict handles;
-    handles["thin"] = read_only_view(owner, r.thin_handles.data(), r.thin_handles.size(),
-                                     thin_handle_type());
+    handles["thin"] =
+        read_only_view(owner, r.thin_handles.data(), r.thin_handles.size(), thin_handle_type());
     stages["handles"] = stage_object(handles);
   }
   return stages;

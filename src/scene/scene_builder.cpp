@@ -716,10 +716,10 @@ class Scene_builder {
   void thin_handles() {
     const auto& handles = r_.thin_handles;
     if (handles.empty()) return;
-    Layer& layer = add("thin-handles",
-                       "suspect handles, thinner than the spacing (" +
-                           std::to_string(handles.size()) + ")",
-                       Primitive::lines, palette::thin_handle, 4.0f);
+    Layer& layer =
+        add("thin-handles",
+            "suspect handles, thinner than the spacing (" + std::to_string(handles.size()) + ")",
+            Primitive::lines, palette::thin_handle, 4.0f);
     for (const auto& handle : handles) {
       const int k = handle.loop[3] < 0 ? 3 : 4;
       for (int j = 0; j < k; ++j) {
