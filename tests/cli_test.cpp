@@ -482,5 +482,23 @@ TEST(Cli, WhatDoesNotApplyIsRefused) {
   }
 }
 
+TEST(Cli, AMistypedCommandIsNamedWithTheNearestOne) {
+  const Command_result typo = run_sculpt("reconstrut --example torus");
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_NE(typo.err.find("no command 'reconstrut' (did you mean 'reconstruct'?)"),
+            std::string::npos)
+      << typo.err;
+  EXPECT_NE(typo.err.find("the commands are reconstruct, examples"), std::string::npos);
+  // Nothing near: the commands are listed, no guess.
+  const Command_result far = run_sculpt("sculptify");
+  EXPECT_EQ(far.exit_code, 2);
+  EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+  // A file given first: the command it was most likely meant for.
+  const std::string input = write_file("cli-first-word.xyz", "0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+  const Command_result file = run_sculpt(input);
+  EXPECT_NE(file.err.find("did you mean 'sculpt reconstruct " + input + "'?"), std::string::npos)
+      << file.err;
+}
+
 }  // namespace
 }  // namespace sculpt

@@ -330,6 +330,32 @@ TEST(Viewer, RefusesCommandsThatDoNotApplyToWhatIsShown) {
   refused("refuse-step", "example star\nmethod boissonnat\nwait\nstep 30", "no replay");
 }
 
+// Mistakes are named with what was meant: a stage name, the stages listed; the kind a script
+// opens an example as; --frames on a bad file says what failed, not a script's step.
+TEST(Viewer, AMistypedStageIsNamedAndTheKindCanBeChosen) {
+  EXPECT_EQ(run_viewer_script("stage-typo", "example star\nwait\nstage delauny\nquit\n"), 1);
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/stage-typo.log");
+  EXPECT_NE(log.find("no stage 'delauny' (did you mean 'delaunay'?); the stages are samples, "),
+            std::string::npos)
+      << log;
+
+  EXPECT_EQ(run_viewer_script("kind-bordered", "kind bordered\nexample star\nwait\nstats\nquit\n"),
+            0);
+  const std::string stats =
+      testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/kind-bordered.log");
+  EXPECT_NE(stats.find("\"kind\":\"bordered\""), std::string::npos) << stats;
+  EXPECT_EQ(run_viewer_script("kind-wrong", "kind open\nquit\n"), 1);
+
+  const std::string bad = testing::write_file("frames-bad.xyz", "not a point\n");
+  const std::string log_path = testing::output_path("frames-bad.log");
+  EXPECT_EQ(run("xvfb-run -a sh -c '" + std::string(SCULPT_VIEW_EXECUTABLE) + " " + bad +
+                " --frames 2' >" + log_path + " 2>&1"),
+            1);
+  const std::string frames_log = testing::read_file(log_path);
+  EXPECT_NE(frames_log.find("sculpt-view: error: "), std::string::npos) << frames_log;
+  EXPECT_EQ(frames_log.find("script"), std::string::npos) << frames_log;
+}
+
 // The lines "stats: {...}" a script printed, in order.
 std::vector<nlohmann::json> printed_statistics(const std::string& log) {
   std::vector<nlohmann::json> all;
@@ -352,6 +378,21 @@ std::size_t pixels_of(const render::Image& image, float r, float g, float b) {
     }
   }
   return count;
+}
+
+// A file that fails leaves no blank picture: a red notice in the picture says what failed, and
+// over an older picture, that it is the last one that worked.
+TEST(Viewer, AFailureIsSaidInThePicture) {
+  const std::string bad = testing::write_file("notice-bad.xyz", "not a point\n");
+  for (const std::string before : {"", "example torus\nwait\n"}) {
+    const std::string shot = testing::output_path("notice.png");
+    EXPECT_EQ(
+        run_viewer_script("notice", before + "open " + bad + "\nwait-idle\nframes 3\nscreenshot " +
+                                        shot + "\nquit\n"),
+        0);
+    const render::Image image = render::read_png(shot);
+    EXPECT_GT(pixels_of(image, 0.70f, 0.08f, 0.06f), 20000u) << before;  // the notice's red
+  }
 }
 
 // A lesson on undersampling: delete the samples of one of the star's valleys and the curve cuts

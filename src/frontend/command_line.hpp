@@ -6,12 +6,15 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <optional>
 #include <sculpt/sculpt.hpp>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "frontend/closest_name.hpp"
 #include "frontend/command_line_text.hpp"
 
 namespace sculpt::frontend {
@@ -93,6 +96,33 @@ class Usage_error : public std::runtime_error {
 // usage error reported in one line), nothing if it should run.
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
                                              const std::string& program) {
+  // A mistyped command: CLI11 would only say that one is required.
+  const auto commands = app.get_subcommands([](const CLI::App* command) {
+    return !command->get_description().empty();  // not the hidden ones
+  });
+  const auto all = app.get_subcommands({});
+  const bool known = argc > 1 && std::any_of(all.begin(), all.end(), [&](const CLI::App* command) {
+                       return command->check_name(argv[1]);
+                     });
+  if (!commands.empty() && argc > 1 && argv[1][0] != '-' && !known) {
+    std::vector<std::string> names;
+    std::string listed;
+    for (const CLI::App* command : commands) {
+      names.push_back(command->get_name());
+      listed += (listed.empty() ? "" : ", ") + command->get_name();
+    }
+    // A file given first is most likely a file to reconstruct.
+    std::error_code no_file;
+    const std::string hint =
+        std::filesystem::is_regular_file(argv[1], no_file) &&
+                std::any_of(all.begin(), all.end(),
+                            [](const CLI::App* c) { return c->get_name() == "reconstruct"; })
+            ? " (did you mean '" + program + " reconstruct " + one_line(argv[1]) + "'?)"
+            : did_you_mean(argv[1], names);
+    std::cerr << program << ": usage error: no command '" << one_line(argv[1]) << "'" << hint
+              << "; the commands are " << listed << " (see " << program << " --help)\n";
+    return exit_bad_usage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -153,7 +153,10 @@ int main(int argc, char** argv) {
       ->excludes("--figure")
       ->excludes("--bordered")
       ->excludes("--closed");
-  command_line.footer(sculpt::frontend::exit_codes_help);
+  command_line.footer(
+      "Exit codes: 0 success; 1 a file that cannot be read, a script that fails, a reconstruction "
+      "that fails under --frames or a script's wait, a picture that cannot be written; 2 bad "
+      "usage. Every failure is one line on stderr.");
   if (const auto stop =
           sculpt::frontend::parse_command_line(command_line, argc, argv, "sculpt-view")) {
     return *stop;
@@ -195,7 +198,7 @@ int main(int argc, char** argv) {
     std::optional<sculpt::viewer::Script> script;
     if (!script_path.empty()) script = sculpt::viewer::Script::from_file(script_path);
     if (frames > 0) {
-      script = sculpt::viewer::Script::from_text(
+      script = sculpt::viewer::Script::from_options(
           "wait\nframes " + std::to_string(frames) +
           (screenshot.empty() ? "" : "\nscreenshot " + screenshot) + "\nquit\n");
     }

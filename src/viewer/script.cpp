@@ -2,6 +2,7 @@
 #include "script.hpp"
 
 #include "figures/paper_figures.hpp"
+#include "frontend/closest_name.hpp"
 #include "io/point_reader.hpp"
 
 #define GLFW_INCLUDE_NONE
@@ -86,8 +87,15 @@ bool takes_arguments(const std::string& command) {
 }  // namespace
 
 void Script::fail(const std::string& why) {
-  std::cerr << "sculpt-view: script: " << why << '\n';
+  // A script the options made (--frames) is not the user's: its failures are the run's.
+  std::cerr << (from_options_ ? "sculpt-view: " : "sculpt-view: script: ") << why << '\n';
   failed_ = true;
+}
+
+Script Script::from_options(const std::string& text) {
+  Script script = from_text(text);
+  script.from_options_ = true;
+  return script;
 }
 
 Script Script::from_file(const std::string& path) {
@@ -171,7 +179,7 @@ std::string Script::before_frame(Viewer& viewer) {
       commands_.pop_front();
       // The reconstruction asked for must have come: an older one still on screen is not it.
       if (command == "wait" && (!viewer.has_reconstruction() || viewer.last_job_failed())) {
-        fail("no reconstruction: " + viewer.message());
+        fail(from_options_ ? viewer.message() : "no reconstruction: " + viewer.message());
       }
       continue;
     }
@@ -248,15 +256,31 @@ std::string Script::before_frame(Viewer& viewer) {
                    "animation on|off, wait, wait-idle, expect-busy, expect-idle, cancel, frames N, "
                    "screenshot F.png, export F.png [WxH], export-animation F.webp [WxH [FRAMES]], "
                    "quit\n";
+    } else if (command == "kind") {
+      Surface_kind kind;
+      if (!needs_argument("closed, bordered or automatic")) continue;
+      if (!parse_kind(argument, kind)) {
+        fail("no kind '" + argument + "' (closed, bordered or automatic)");
+        continue;
+      }
+      kind_ = kind;
+      viewer.set_file_kind(kind);
     } else if (command == "example") {
-      if (needs_argument("an example name")) viewer.open_example(argument);
+      if (needs_argument("an example name")) viewer.open_example(argument, kind_);
     } else if (command == "open") {
       if (needs_argument("a file")) viewer.open_file(argument);
     } else if (command == "stage") {
       scene::Stage stage;
       if (!needs_argument("a stage")) continue;
       if (!scene::parse_stage(argument, stage)) {
-        fail("no stage '" + argument + "'");
+        std::vector<std::string> names;
+        std::string listed;
+        for (const scene::Stage known : scene::all_stages()) {
+          names.emplace_back(scene::stage_id(known));
+          listed += (listed.empty() ? "" : ", ") + names.back();
+        }
+        fail("no stage '" + argument + "'" + frontend::did_you_mean(argument, names) +
+             "; the stages are " + listed);
         continue;
       }
       done(viewer.set_stage(stage));

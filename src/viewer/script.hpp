@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Scripted runs of the viewer, for tests and demonstrations: one command a line, run in order
 // between frames, e.g.
-//   example star        open a built-in example (open PATH for a file; bordered on|off before)
+//   example star        open a built-in example (open PATH for a file)
+//   kind bordered       the kind what is opened next is reconstructed as (closed, automatic)
 //   wait                until the reconstruction has finished and any move to a tour panel
 //                       has ended (fail if the reconstruction failed)
 //   wait-idle           until no reconstruction runs, whatever its outcome
@@ -57,6 +58,9 @@ class Script {
   enum class Mode { automatic, lesson };
   static Script from_file(const std::string& path);  // throws std::runtime_error
   static Script from_text(const std::string& text, Mode mode = Mode::automatic);
+  // A script the command line's options stand for (--frames): its failures say what failed
+  // without naming a script the user never wrote.
+  static Script from_options(const std::string& text);
 
   // Runs commands until one needs frames to pass. Returns a screenshot path to save after this
   // frame is drawn, if a command asked for one.
@@ -85,6 +89,8 @@ class Script {
   int frames_to_wait_ = 0;
   bool failed_ = false;
   Mode mode_ = Mode::automatic;
+  Surface_kind kind_ = Surface_kind::automatic;  // what `example` opens as (`kind`)
+  bool from_options_ = false;
   bool paused_ = false;
   int step_ = 1, pauses_ = 0;
   std::string narration_;

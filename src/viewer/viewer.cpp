@@ -97,6 +97,7 @@ Job_request Viewer::with_options(Job_request request) const {
 void Viewer::start_job(Job_request request) {
   request = with_options(std::move(request));
   last_request_ = request;
+  last_job_failed_ = false;  // a new attempt: its outcome will say
   message_ = "reconstructing " + (request.edited_points     ? "the edited samples"
                                   : request.example.empty() ? request.path
                                                             : "example " + request.example);
@@ -279,6 +280,7 @@ void Viewer::frame(int width, int height, double seconds) {
   if (show_help_) draw_help();
   rebuild_scene();
   if (reconstruction_) draw_off_screen_markers(width, height);
+  if (last_job_failed_) draw_failure_notice(width, height);
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glViewport(0, 0, width, height);

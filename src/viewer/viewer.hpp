@@ -242,6 +242,8 @@ class Viewer {
   void draw_editing_controls();
   void draw_selection();
   void draw_help();
+  // A reconstruction or file that failed, said in the picture, where it cannot be missed.
+  void draw_failure_notice(int width, int height);
 
   long event_count() const;
   const Labelling_event* latest_event() const;

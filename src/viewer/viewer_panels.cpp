@@ -21,7 +21,13 @@ void Viewer::draw_panel(int height) {
   ImGui::SetNextWindowSize(ImVec2(panel_width(), float(height) - top), ImGuiCond_Always);
   ImGui::Begin("Sculpt", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  ImGui::TextWrapped("%s", message_.c_str());
+  if (last_job_failed_) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.40f, 1.0f));
+    ImGui::TextWrapped("%s", message_.c_str());
+    ImGui::PopStyleColor();
+  } else {
+    ImGui::TextWrapped("%s", message_.c_str());
+  }
   if (job_->running()) {  // not while the view merely moves to a tour panel
     // Across the whole reconstruction, naming the stage it is in.
     const auto status = job_->status();
@@ -93,6 +99,29 @@ void Viewer::draw_panel(int height) {
     draw_statistics();
   }
   ImGui::End();
+}
+
+void Viewer::draw_failure_notice(int width, int height) {
+  // In the middle of an empty picture; over the top of the old one, which stays on screen.
+  const float left = panel_width(), picture_width = float(width) - left;
+  const float box_width = std::min(picture_width - 40.0f, 40.0f * ImGui::GetFontSize());
+  const float top = ImGui::GetFrameHeight() + 20.0f;
+  const float y = reconstruction_ ? top : std::max(top, 0.4f * float(height));
+  ImGui::SetNextWindowPos(ImVec2(left + 0.5f * (picture_width - box_width), y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(box_width, 0), ImGuiCond_Always);
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.70f, 0.08f, 0.06f, 0.95f));
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
+  ImGui::Begin("##failure", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+  ImGui::TextUnformatted(reconstruction_ ? "Failed: the picture is the last one that worked"
+                                         : "Nothing to show: it failed");
+  ImGui::Separator();
+  ImGui::TextWrapped("%s", message_.c_str());
+  ImGui::Spacing();
+  ImGui::TextWrapped("Open another file (File > Open) or an example (Examples).");
+  ImGui::End();
+  ImGui::PopStyleColor(2);
 }
 
 void Viewer::draw_stepper() {
