@@ -395,6 +395,51 @@ TEST(Viewer, AFailureIsSaidInThePicture) {
   }
 }
 
+// In front of a class: 1024x768, text at 2x. Presenting, the panel's dark grey is gone and the
+// picture takes the whole window, its legend in it; the picture scale makes the samples bigger.
+TEST(Viewer, PresentationModeGivesThePictureTheWholeWindow) {
+  const auto shot_of = [](const std::string& name, const std::string& commands) {
+    const std::string shot = testing::output_path(name + ".png");
+    EXPECT_EQ(
+        run_viewer_script(
+            name, "example star\nwait\n" + commands + "frames 3\nscreenshot " + shot + "\nquit\n",
+            "--size 1024x768 --font-scale 2"),
+        0);
+    return render::read_png(shot);
+  };
+  // The share of the window's left 70% (below the menu bar) in the panel's grey.
+  const auto panel_share = [](const render::Image& image) {
+    std::size_t grey = 0, all = 0;
+    for (int y = 40; y < image.height; ++y) {
+      for (int x = 0; x < image.width * 7 / 10; ++x, ++all) {
+        const auto* p = image.pixel(x, y);
+        grey += std::abs(p[0] - 29) < 6 && std::abs(p[1] - 29) < 6 && std::abs(p[2] - 29) < 6;
+      }
+    }
+    return double(grey) / double(all);
+  };
+  // The samples' green anywhere in the window.
+  const auto green = [](const render::Image& image) {
+    std::size_t count = 0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) {
+        const auto* p = image.pixel(x, y);
+        count += std::abs(p[0] - 13) < 14 && std::abs(p[1] - 140) < 14 && std::abs(p[2] - 26) < 14;
+      }
+    }
+    return count;
+  };
+  const render::Image plain = shot_of("present-off", "");
+  const render::Image presenting = shot_of("present-on", "present on\n");
+  const render::Image scaled = shot_of("present-scaled", "present on\npicture-scale 2\n");
+  EXPECT_GT(panel_share(plain), 0.5);
+  EXPECT_LT(panel_share(presenting), 0.02);
+  EXPECT_GT(green(scaled), 2 * green(presenting));
+  // F5 toggles it, as slide software does.
+  EXPECT_LT(panel_share(shot_of("present-key", "key f5\n")), 0.02);
+  EXPECT_EQ(run_viewer_script("present-bad", "picture-scale nan\nquit\n"), 1);
+}
+
 // A lesson on undersampling: delete the samples of one of the star's valleys and the curve cuts
 // across it; add one sample at the valley's bottom and the curve follows the valley again; drag
 // it out, undo; save the edited points, which then reconstruct as they were shown.

@@ -15,9 +15,9 @@ bool Picture_cache::same(const Key& a, const Key& b) {
          a.title == b.title && a.background.r == b.background.r &&
          a.background.g == b.background.g && a.background.b == b.background.b &&
          a.background.a == b.background.a && a.hidden_layers == b.hidden_layers &&
-         p.dimension == q.dimension && p.target == q.target && p.distance == q.distance &&
-         p.yaw == q.yaw && p.pitch == q.pitch && p.fov_degrees == q.fov_degrees &&
-         p.center == q.center && p.half_height == q.half_height;
+         a.picture_scale == b.picture_scale && p.dimension == q.dimension && p.target == q.target &&
+         p.distance == q.distance && p.yaw == q.yaw && p.pitch == q.pitch &&
+         p.fov_degrees == q.fov_degrees && p.center == q.center && p.half_height == q.half_height;
 }
 
 void Picture_cache::release() {
@@ -64,7 +64,8 @@ void Picture_cache::draw(Renderer& renderer, const Camera& camera, int width, in
           options.legend,
           options.title,
           options.background,
-          options.hidden_layers};
+          options.hidden_layers,
+          options.picture_scale};
   if (width != width_ || height != height_) make_framebuffers(width, height);
   if (!cached_ || !same(*cached_, key)) {
     Draw_options at_origin = options;

@@ -39,6 +39,7 @@ class Picture_cache {
     bool legend = false, title = false;
     scene::Color background;
     std::vector<std::string> hidden_layers;
+    float picture_scale = 1;
   };
   static bool same(const Key& a, const Key& b);
   void make_framebuffers(int width, int height);

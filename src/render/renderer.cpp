@@ -171,14 +171,14 @@ void Renderer::draw(const Camera& camera, int width, int height, const Draw_opti
     for (auto primitive : order_3d) {
       for (std::size_t i = 0; i < layers_.size(); ++i) {
         if (scene_.layers[i].primitive == primitive && !hidden(scene_.layers[i], options)) {
-          draw_layer(layers_[i], scene_.layers[i], camera, width, height);
+          draw_layer(layers_[i], scene_.layers[i], camera, width, height, options.picture_scale);
         }
       }
     }
   } else {
     for (std::size_t i = 0; i < layers_.size(); ++i) {
       if (!hidden(scene_.layers[i], options))
-        draw_layer(layers_[i], scene_.layers[i], camera, width, height);
+        draw_layer(layers_[i], scene_.layers[i], camera, width, height, options.picture_scale);
     }
   }
   draw_overlay(width, height, options);
@@ -206,8 +206,9 @@ Image read_pixels(int width, int height) {
 }
 
 void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera,
-                          int width, int height) {
+                          int width, int height, float picture_scale) {
   if (layer.count == 0) return;
+  const float size = info.size * picture_scale;  // a point's diameter, a line's width (pixels)
   const float aspect = float(width) / float(height);
   const glm::mat4 view = camera.view();
   const glm::mat4 projection = camera.projection(aspect);
@@ -219,11 +220,11 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
       glUseProgram(p);
       glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE,
                          glm::value_ptr(view_projection));
-      glUniform1f(uniform(p, "point_size"), info.size);
+      glUniform1f(uniform(p, "point_size"), size);
       glUniform1i(uniform(p, "shaded"), camera.dimension == 3 ? 1 : 0);
       // A few millionths of the depth range: enough for a nearer point to round over a
       // farther one, too little to lift a point through the surface it lies on.
-      glUniform1f(uniform(p, "depth_radius"), camera.dimension == 3 ? 2e-6f * info.size : 0.0f);
+      glUniform1f(uniform(p, "depth_radius"), camera.dimension == 3 ? 2e-6f * size : 0.0f);
       set_color(p, info.color);
       glDrawArrays(GL_POINTS, 0, layer.count);
       break;
@@ -234,7 +235,7 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
       glUniformMatrix4fv(uniform(p, "view_projection"), 1, GL_FALSE,
                          glm::value_ptr(view_projection));
       glUniform2f(uniform(p, "viewport"), float(width), float(height));
-      glUniform1f(uniform(p, "line_width"), info.size);
+      glUniform1f(uniform(p, "line_width"), size);
       set_color(p, info.color);
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, layer.count / 2);
       break;
@@ -260,7 +261,7 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
       glUniformMatrix4fv(uniform(p, "view"), 1, GL_FALSE, glm::value_ptr(view));
       glUniformMatrix4fv(uniform(p, "projection"), 1, GL_FALSE, glm::value_ptr(projection));
       glUniform1i(uniform(p, "translucent"), info.translucent);
-      glUniform1f(uniform(p, "line_width"), info.size);
+      glUniform1f(uniform(p, "line_width"), size);
       set_color(p, info.color);
       glDepthMask(GL_FALSE);
       glDrawArraysInstanced(GL_TRIANGLE_STRIP, 0, 4, layer.count);
@@ -278,7 +279,7 @@ void Renderer::draw_overlay(int width, int height, const Draw_options& options) 
     std::vector<float> triangles;  // x, y, z per vertex
   };
   std::vector<Piece> pieces;
-  const float scale = height >= 600 ? 2.0f : 1.0f;
+  const float scale = (height >= 600 ? 2.0f : 1.0f) * std::max(1.0f, options.picture_scale);
   const auto text = [&](float x, float y, const std::string& words, scene::Color color) {
     std::vector<char> quads(words.size() * 270 + 1000);
     const int count = stb_easy_font_print(0, 0, const_cast<char*>(words.c_str()), nullptr,

@@ -20,8 +20,9 @@ struct Draw_options {
   bool title = true;   // the stage's title, bottom left
   scene::Color background{1, 1, 1, 1};
   std::vector<std::string> hidden_layers;  // layer ids not to draw (nor list in the legend)
-  int viewport_x = 0;  // left edge of the drawing area in the framebuffer (the viewer's panel)
-  int viewport_y = 0;  // its bottom edge (the viewer's figure caption below the picture)
+  int viewport_x = 0;       // left edge of the drawing area in the framebuffer (the viewer's panel)
+  int viewport_y = 0;       // its bottom edge (the viewer's figure caption below the picture)
+  float picture_scale = 1;  // points and lines this many times their size (a projector: 2)
 };
 
 // Reads the bound framebuffer's colour into an image (rows from the top).
@@ -53,7 +54,7 @@ class Renderer {
   unsigned overlay_array_ = 0, overlay_buffer_ = 0;
 
   void draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera, int width,
-                  int height);
+                  int height, float picture_scale);
   void draw_overlay(int width, int height, const Draw_options& options);
   static bool hidden(const scene::Layer& layer, const Draw_options& options);
 };

@@ -96,8 +96,9 @@ void App::draw_lesson() {
   // A strip along the bottom of the picture, which it takes from the picture (as the tour's
   // caption does), so that the narration never covers what it speaks of.
   const ImGuiViewport* view = ImGui::GetMainViewport();
-  const float width = float(view_width(int(view->Size.x)));
-  ImGui::SetNextWindowPos(ImVec2(panel_width(), view->Size.y), ImGuiCond_Always, ImVec2(0, 1));
+  const float width = float(viewer_->view_width(int(view->Size.x)));
+  ImGui::SetNextWindowPos(ImVec2(viewer_->panel_width(), view->Size.y), ImGuiCond_Always,
+                          ImVec2(0, 1));
   ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0), ImVec2(width, 0.4f * view->Size.y));
   ImGui::Begin("Lesson", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |

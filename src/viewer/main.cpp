@@ -110,6 +110,21 @@ int main(int argc, char** argv) {
                    ? std::string()
                    : "'" + text + "' is not a scale from 0.5 to 4";
       });
+  bool present = false;
+  float picture_scale = 1.0f;
+  command_line.add_flag("--present", present,
+                        "Presentation mode: no panel, the legend in the picture (F5 toggles it)");
+  command_line
+      .add_option("--picture-scale", picture_scale,
+                  "Scale the picture's points, lines and legend, e.g. 2 for a projector")
+      ->capture_default_str()
+      ->check([](const std::string& text) {
+        char* end = nullptr;  // not CLI::Range, which lets NaN through
+        const double value = std::strtod(text.c_str(), &end);
+        return *end == '\0' && value >= 0.5 && value <= 4.0
+                   ? std::string()
+                   : "'" + text + "' is not a scale from 0.5 to 4";
+      });
   // The first view: what a link to the viewer opens (in the browser, the page's address gives
   // these options: ?example=torus&method=paper&stage=poles).
   std::string stage;
@@ -188,6 +203,8 @@ int main(int argc, char** argv) {
 
   auto app = std::make_unique<sculpt::viewer::App>(window, font_scale);
   sculpt::viewer::Viewer& viewer = app->viewer();
+  viewer.set_presenting(present);
+  viewer.set_picture_scale(picture_scale);
   try {
     // The first view, before anything a script or --frames does with it.
     std::string first_view;

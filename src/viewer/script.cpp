@@ -40,7 +40,8 @@ int key_code(const std::string& name) {
                                                   {".", GLFW_KEY_PERIOD},
                                                   {",", GLFW_KEY_COMMA},
                                                   {"r", GLFW_KEY_R},
-                                                  {"h", GLFW_KEY_H}};
+                                                  {"h", GLFW_KEY_H},
+                                                  {"f5", GLFW_KEY_F5}};
   const auto found = keys.find(name);
   return found == keys.end() ? -1 : found->second;
 }
@@ -247,6 +248,7 @@ std::string Script::before_frame(Viewer& viewer) {
       std::cout << "commands: example NAME, open FILE, method NAME, stage ID, next, previous, "
                    "step K, pick-sample K, pick-pole K, clip POS AZ EL [SLAB] | off, "
                    "neighbourhood on|off, polar-balls EVERY|off, follow on|off, layer ID on|off, "
+                   "present on|off, picture-scale S, kind closed|bordered|automatic, "
                    "camera fit|zoom F|orbit YAW PITCH|pan X Y|save F|load F, edit on|off, "
                    "add-point X Y, move-point K X Y, delete-point K, stroke SPACING X Y X Y... "
                    "(SPACING a share of the box diagonal), undo, "
@@ -444,6 +446,15 @@ std::string Script::before_frame(Viewer& viewer) {
       }
     } else if (command == "follow") {
       on_off([&](bool on) { viewer.set_follow(on); });
+    } else if (command == "present") {
+      on_off([&](bool on) { viewer.set_presenting(on); });
+    } else if (command == "picture-scale") {
+      const auto scale = real(argument);
+      if (!scale || *scale < 0.5 || *scale > 4) {
+        fail("'" + line + "': expected a picture scale from 0.5 to 4");
+        continue;
+      }
+      viewer.set_picture_scale(float(*scale));
     } else if (command == "edit") {
       on_off([&](bool on) {
         if (on && viewer.shown_dimension() == 3) {

@@ -25,6 +25,8 @@
 //   camera zoom 0.5     also: camera fit, orbit 30 -10 (degrees), pan 0.2 0 (half heights),
 //                       save cam.json, load cam.json
 //   follow off          the replay's camera stays put (on: it keeps the pole just labelled in view)
+//   present on          presentation mode: no panel, the legend in the picture (off: back)
+//   picture-scale 2     points, lines and the picture's legend twice their size (0.5 to 4)
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included
 //   export b.png 800x600  save a picture through the headless renderer

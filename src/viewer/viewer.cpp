@@ -24,11 +24,11 @@ constexpr std::size_t recent_reconstructions = 4;
 
 }  // namespace
 
-float panel_width() {
-  return 360.0f * std::max(1.0f, ImGui::GetIO().FontGlobalScale);
+float Viewer::panel_width() const {
+  return presenting_ ? 0.0f : 360.0f * std::max(1.0f, ImGui::GetIO().FontGlobalScale);
 }
 
-int view_width(int window_width) {
+int Viewer::view_width(int window_width) const {
   return std::max(1, window_width - int(panel_width()));
 }
 
@@ -275,7 +275,7 @@ void Viewer::frame(int width, int height, double seconds) {
   advance_move_to_panel(seconds);
   handle_input(width, height);
   draw_menu();
-  draw_panel(height);
+  if (!presenting_) draw_panel(height);
   draw_caption(width, height);
   if (show_help_) draw_help();
   rebuild_scene();
@@ -288,7 +288,10 @@ void Viewer::frame(int width, int height, double seconds) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   if (reconstruction_) {
     render::Draw_options options;
-    options.legend = options.title = false;  // the panel shows both
+    // The panel shows the legend and the title; presenting, the picture shows the legend.
+    options.legend = presenting_;
+    options.title = false;
+    options.picture_scale = picture_scale_;
     options.hidden_layers = hidden_layers_;
     // The picture takes the window right of the panel, above the figure's caption.
     options.viewport_x = int(panel_width());

@@ -24,14 +24,22 @@
 
 namespace sculpt::viewer {
 
-// The panel's width: 360 pixels at the normal text size, wider as the text is scaled up. The
-// picture takes the window right of it (view_width).
-float panel_width();
-int view_width(int window_width);
-
 class Viewer {
  public:
   Viewer();
+
+  // The panel's width: 360 pixels at the normal text size, wider as the text is scaled up; none
+  // while presenting. The picture takes the window right of it (view_width).
+  float panel_width() const;
+  int view_width(int window_width) const;
+
+  // Presentation mode (F5, the View menu, --present, script `present on|off`): the panel hides
+  // and the picture, with its legend drawn in it, takes the whole window.
+  void set_presenting(bool on) { presenting_ = on; }
+  bool presenting() const { return presenting_; }
+  // One scale for the picture's points, lines and arrows (a projector: 2), --picture-scale.
+  void set_picture_scale(float scale) { picture_scale_ = scale; }
+  float picture_scale() const { return picture_scale_; }
 
   // Reconstruction inputs; each starts a background job.
   // An example is reconstructed as its own kind (bordered or closed), unless one is forced.
@@ -335,6 +343,8 @@ class Viewer {
   bool show_help_ = false;
   bool lesson_running_ = false;
   bool last_job_failed_ = false;
+  bool presenting_ = false;
+  float picture_scale_ = 1.0f;
   std::vector<int> key_presses_;
   bool quit_ = false;
   int frame_width_ = 0, frame_height_ = 0;

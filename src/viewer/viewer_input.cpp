@@ -41,7 +41,8 @@ void Viewer::handle_input(int width, int height) {
                     GLFW_KEY_U,
                     GLFW_KEY_Z,
                     GLFW_KEY_DELETE,
-                    GLFW_KEY_BACKSPACE}) {
+                    GLFW_KEY_BACKSPACE,
+                    GLFW_KEY_F5}) {
       // A lesson running takes the page keys (App): it goes on with Page Down.
       const bool lesson_key = key == GLFW_KEY_PAGE_DOWN || key == GLFW_KEY_PAGE_UP;
       const int presses =
@@ -144,6 +145,9 @@ void Viewer::on_key(int key) {
       break;
     case GLFW_KEY_U:
       undo_edit();
+      break;
+    case GLFW_KEY_F5:  // as slide software starts and ends a presentation
+      presenting_ = !presenting_;
       break;
     case GLFW_KEY_Z:  // Ctrl+Z
       if (ImGui::GetIO().KeyCtrl) undo_edit();

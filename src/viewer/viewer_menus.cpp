@@ -50,8 +50,13 @@ void Viewer::draw_menu() {
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Fit / reset camera", "R")) reset_camera(), scene_dirty_ = true;
     if (ImGui::MenuItem("Controls", "H", show_help_)) show_help_ = !show_help_;
-    // Projector mode: text large enough for the back of a room.
+    if (ImGui::MenuItem("Presentation mode", "F5", presenting_)) presenting_ = !presenting_;
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("The panel hides, the picture takes the window with its legend in it");
+    }
+    // Projector mode: text large enough for the back of a room, points and lines to match.
     ImGui::SliderFloat("text size", &ImGui::GetIO().FontGlobalScale, 0.5f, 3.0f, "%.1fx");
+    ImGui::SliderFloat("picture scale", &picture_scale_, 0.5f, 4.0f, "%.1fx");
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();

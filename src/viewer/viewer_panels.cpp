@@ -397,6 +397,7 @@ void Viewer::draw_help() {
       "T                    paper tour: back to the panel after exploring\n"
       "Esc                  close the paper tour\n"
       "P                    save a picture (File menu: path and size)\n"
+      "F5                   presentation mode: no panel, the legend in the picture\n"
       "H                    this help");
   ImGui::End();
 }
