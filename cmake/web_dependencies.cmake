@@ -2,15 +2,15 @@
 # The browser build's libraries (configured by emcmake; scripts/web). Emscripten brings its own C
 # and C++ libraries and does not search the host's /usr/include, so the header-only libraries
 # Debian installs (CGAL, Boost, fmt, nlohmann-json, CLI11, GLM, stb) are reached through a folder
-# of links to them alone; what Debian ships compiled (libstb, Dear ImGui, libwebp) is compiled
+# of links to them alone; what Debian ships compiled (libstb, Dear ImGui, libwebp, giflib) is compiled
 # from Debian's own sources: scripts/web fetches the source packages into SCULPT_DEBIAN_SOURCES.
 # The targets made here carry the names the native build finds, so the rest of the build is one.
 
-# stb and libwebp are C.
+# stb, libwebp and giflib are C.
 enable_language(C)
 
 set(SCULPT_DEBIAN_SOURCES "${CMAKE_BINARY_DIR}/debian-sources" CACHE PATH
-    "Where `apt-get source imgui libwebp` unpacked Dear ImGui and libwebp")
+    "Where `apt-get source imgui libwebp giflib` unpacked Dear ImGui, libwebp and giflib")
 
 # C++ exceptions as WebAssembly's own (CGAL's filtered predicates throw on every filter failure;
 # JavaScript-based exceptions make each call that may throw a trip through JavaScript).
@@ -80,6 +80,17 @@ file(GLOB webp_sources ${webp}/src/dec/*.c ${webp}/src/dsp/*.c ${webp}/src/enc/*
 add_library(sculpt_webp STATIC ${webp_sources})
 target_include_directories(sculpt_webp SYSTEM PUBLIC ${webp}/src PRIVATE ${webp})
 add_library(PkgConfig::WEBP ALIAS sculpt_webp)
+
+# giflib 5.2.1 (with Debian's patches), for animated GIF exports: the encoder and its colour
+# quantizer.
+set(gif ${SCULPT_DEBIAN_SOURCES}/giflib-5.2.1)
+if(NOT EXISTS ${gif}/gif_lib.h)
+  message(FATAL_ERROR "${gif} is missing: scripts/web fetches Debian's source package giflib")
+endif()
+add_library(sculpt_gif STATIC ${gif}/egif_lib.c ${gif}/gif_err.c ${gif}/gif_hash.c ${gif}/gifalloc.c
+                              ${gif}/openbsd-reallocarray.c ${gif}/quantize.c)
+target_include_directories(sculpt_gif SYSTEM PUBLIC ${gif})
+add_library(GIF::GIF ALIAS sculpt_gif)
 
 # The window: Emscripten's GLFW on the page's canvas, WebGL 2 (OpenGL ES 3.0).
 add_library(sculpt_browser_window INTERFACE)

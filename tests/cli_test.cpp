@@ -401,7 +401,7 @@ std::size_t webp_frames(const std::string& bytes) {
 }
 
 // `sculpt render --animate`: the replay of the labelling or a sweep of the stages as an
-// animated WebP; a method without a replay, or a PNG name, is one line and no file.
+// animated WebP or GIF; a method without a replay, or a PNG name, is one line and no file.
 TEST(Cli, RenderAnimatesTheReplayAndTheStages) {
   const std::string replay = output_path("replay.webp"), stages = output_path("stages.webp");
   ASSERT_EQ(
@@ -416,14 +416,26 @@ TEST(Cli, RenderAnimatesTheReplayAndTheStages) {
                 .exit_code,
             0);
   EXPECT_EQ(webp_frames(read_file(stages)), 5u);  // the crust's five 2D stages
+  // For slide software: a looping GIF (its frames are checked in tests/animation_test.cpp).
+  const std::string gif = output_path("stages.gif");
+  ASSERT_EQ(
+      run_sculpt("render --example blob --method crust --animate stages --size 200x150 -o " + gif)
+          .exit_code,
+      0);
+  const std::string gif_bytes = read_file(gif);
+  EXPECT_EQ(gif_bytes.substr(0, 6), "GIF89a");
+  EXPECT_NE(gif_bytes.find("NETSCAPE2.0"), std::string::npos);
+  EXPECT_EQ(gif_bytes.back(), ';');  // the trailer
   const std::string refused = output_path("refused.webp");
   const Command_result no_replay =
       run_sculpt("render --example blob --method crust --animate replay -o " + refused);
   EXPECT_EQ(no_replay.exit_code, 1);
   EXPECT_NE(no_replay.err.find("no replay"), std::string::npos) << no_replay.err;
   EXPECT_FALSE(std::filesystem::exists(refused));
-  EXPECT_EQ(
-      run_sculpt("render --example star --animate replay -o " + output_path("a.png")).exit_code, 2);
+  const Command_result png =
+      run_sculpt("render --example star --animate replay -o " + output_path("a.png"));
+  EXPECT_EQ(png.exit_code, 2);
+  EXPECT_NE(png.err.find("ends in neither .webp nor .gif"), std::string::npos) << png.err;
 }
 
 TEST(Cli, VersionAndHelp) {

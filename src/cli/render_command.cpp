@@ -136,7 +136,7 @@ int run_render(const Render_arguments& args) {
   frontend::Shot_renderer renderer;
   if (args.shots_file.empty()) {
     if (args.shot.output.empty())
-      throw frontend::Usage_error("render needs -o FILE.png (FILE.webp with --animate)");
+      throw frontend::Usage_error("render needs -o FILE.png (FILE.webp or FILE.gif with --animate)");
     // A usage error here, before any work (Shot_renderer checks the same for --shots lists).
     if (const std::string problem = frontend::output_format_problem(args.shot); !problem.empty())
       throw frontend::Usage_error(problem);

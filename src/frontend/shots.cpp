@@ -311,9 +311,10 @@ std::string output_format_problem(const Shot& shot) {
                ? ""
                : "render writes PNG images: '" + shot.output + "' does not end in .png";
   }
-  return io::extension_of(shot.output) == ".webp" ? ""
-                                                  : "an animation is written as animated WebP: '" +
-                                                        shot.output + "' does not end in .webp";
+  return render::animation_format_of(shot.output)
+             ? ""
+             : "an animation is written as animated WebP or GIF: '" + shot.output +
+                   "' ends in neither .webp nor .gif";
 }
 
 namespace {
@@ -386,7 +387,9 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
 #endif
     std::optional<render::Animation_writer> animation;
     try {
-      animation.emplace(width, height, milliseconds);
+      animation.emplace(
+          width, height, milliseconds,
+          render::animation_format_of(shot.output).value_or(render::Animation_format::webp));
     } catch (const std::runtime_error& e) {
       throw io::Error(e.what());
     }

@@ -26,7 +26,7 @@ std::pair<int, int> parse_size(const std::string& size);
 nlohmann::json read_json(const std::string& path);
 
 // Why a shot's output cannot be written ("" if it can): a picture is a .png, an animation a
-// .webp.
+// .webp or a .gif.
 std::string output_format_problem(const Shot& shot);
 
 // Reads a shot's fields from JSON (the names of Shot's members; "legend": false for no legend).

@@ -245,19 +245,20 @@ std::string Script::before_frame(Viewer& viewer) {
       continue;
     }
     if (command == "help") {
-      std::cout << "commands: example NAME, open FILE, method NAME, stage ID, next, previous, "
-                   "step K, pick-sample K, pick-pole K, clip POS AZ EL [SLAB] | off, "
-                   "neighbourhood on|off, polar-balls EVERY|off, follow on|off, layer ID on|off, "
-                   "present on|off, picture-scale S, kind closed|bordered|automatic, "
-                   "camera fit|zoom F|orbit YAW PITCH|pan X Y|save F|load F, edit on|off, "
-                   "add-point X Y, move-point K X Y, delete-point K, stroke SPACING X Y X Y... "
-                   "(SPACING a share of the box diagonal), undo, "
-                   "save-points F, save-result F, link, message, figures, explain, stats, "
-                   "figure ID, panel ID, "
-                   "expect-panel ID, key K, "
-                   "animation on|off, wait, wait-idle, expect-busy, expect-idle, cancel, frames N, "
-                   "screenshot F.png, export F.png [WxH], export-animation F.webp [WxH [FRAMES]], "
-                   "quit\n";
+      std::cout
+          << "commands: example NAME, open FILE, method NAME, stage ID, next, previous, "
+             "step K, pick-sample K, pick-pole K, clip POS AZ EL [SLAB] | off, "
+             "neighbourhood on|off, polar-balls EVERY|off, follow on|off, layer ID on|off, "
+             "present on|off, picture-scale S, kind closed|bordered|automatic, "
+             "camera fit|zoom F|orbit YAW PITCH|pan X Y|save F|load F, edit on|off, "
+             "add-point X Y, move-point K X Y, delete-point K, stroke SPACING X Y X Y... "
+             "(SPACING a share of the box diagonal), undo, "
+             "save-points F, save-result F, link, message, figures, explain, stats, "
+             "figure ID, panel ID, "
+             "expect-panel ID, key K, "
+             "animation on|off, wait, wait-idle, expect-busy, expect-idle, cancel, frames N, "
+             "screenshot F.png, export F.png [WxH], export-animation F.webp|F.gif [WxH [FRAMES]], "
+             "quit\n";
     } else if (command == "kind") {
       Surface_kind kind;
       if (!needs_argument("closed, bordered or automatic")) continue;
@@ -415,16 +416,17 @@ std::string Script::before_frame(Viewer& viewer) {
              "(half heights), save FILE or load FILE");
       }
     } else if (command == "export-animation") {
-      // export-animation PATH.webp [WIDTHxHEIGHT [FRAMES]]
+      // export-animation PATH.webp|PATH.gif [WIDTHxHEIGHT [FRAMES]]
       if (arguments.empty()) {
-        fail("'export-animation' needs a .webp path");
+        fail("'export-animation' needs a .webp or .gif path");
         continue;
       }
       const auto size =
           arguments.size() > 1 ? picture_size(arguments[1]) : std::pair<int, int>(800, 600);
       const auto frames = arguments.size() > 2 ? number(arguments[2], 2, 2000) : 60L;
       if (!size || !frames || arguments.size() > 3) {
-        fail("'" + line + "': expected export-animation PATH.webp [WIDTHxHEIGHT [FRAMES 2-2000]]");
+        fail("'" + line +
+             "': expected export-animation PATH.webp|PATH.gif [WIDTHxHEIGHT [FRAMES 2-2000]]");
         continue;
       }
       done(viewer.export_animation(arguments[0], size->first, size->second, int(*frames)));

@@ -30,7 +30,7 @@
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included
 //   export b.png 800x600  save a picture through the headless renderer
-//   export-animation c.webp 640x480 40  an animated WebP: the replay at the propagation
+//   export-animation c.webp 640x480 40  an animated WebP (or c.gif): the replay at the propagation
 //                       stage (40 pictures), else the method's stages
 //   figure fig06        open a figure of the paper at its first panel
 //   panel next          the tour: next, previous, 3 (1-based) or c

@@ -4,6 +4,8 @@
 // leave as downloads, so the File menu asks for no paths.
 #include <imgui.h>
 
+#include <string>
+
 #include "platform/platform.hpp"
 #include "shapes/shapes.hpp"
 #include "viewer.hpp"
@@ -79,7 +81,8 @@ void Viewer::draw_file_fields() {
     export_picture(picture_field_, picture_size_[0], picture_size_[1]);
   ImGui::InputText("animation", animation_field_, sizeof animation_field_);
   // The replay at the propagation stage, else a sweep of the stages.
-  if (ImGui::MenuItem("Save animation (WebP)"))
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("An animated .webp, or a .gif for slide software");
+  if (ImGui::MenuItem("Save animation (WebP or GIF)"))
     export_animation(animation_field_, picture_size_[0], picture_size_[1]);
   ImGui::InputText("result", result_field_, sizeof result_field_);
   if (ImGui::IsItemHovered())
@@ -96,11 +99,15 @@ void Viewer::draw_download_items() {
     export_picture(platform::output_path(download_name(".png")), picture_size_[0],
                    picture_size_[1]);
   const bool replay = request_.stage == scene::Stage::propagation;
-  if (ImGui::MenuItem(
-          replay ? "Save the replay (animated WebP)" : "Save the stages (animated WebP)", nullptr,
-          false, shown))
-    export_animation(platform::output_path(download_name(".webp")), picture_size_[0],
-                     picture_size_[1]);
+  // WebP keeps every pixel; slide software plays GIF.
+  for (const char* extension : {".webp", ".gif"}) {
+    const std::string what =
+        std::string(replay ? "Save the replay" : "Save the stages") +
+        (extension == std::string(".gif") ? " (animated GIF, for slides)" : " (animated WebP)");
+    if (ImGui::MenuItem(what.c_str(), nullptr, false, shown))
+      export_animation(platform::output_path(download_name(extension)), picture_size_[0],
+                       picture_size_[1]);
+  }
   if (shown && shown_dimension() == 3) {
     if (ImGui::BeginMenu("Save the surface")) {
       for (const char* extension : {".ply", ".obj", ".stl", ".off"}) {
