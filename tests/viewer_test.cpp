@@ -438,6 +438,27 @@ TEST(Viewer, PresentationModeGivesThePictureTheWholeWindow) {
   // F5 toggles it, as slide software does.
   EXPECT_LT(panel_share(shot_of("present-key", "key f5\n")), 0.02);
   EXPECT_EQ(run_viewer_script("present-bad", "picture-scale nan\nquit\n"), 1);
+  // The command line that opens this view again opens it presenting.
+  EXPECT_EQ(run_viewer_script("present-link",
+                              "example star\nwait\npresent on\npicture-scale 2\nlink\nquit\n"),
+            0);
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/present-link.log");
+  EXPECT_NE(log.find("sculpt-view --example star --present --picture-scale 2"), std::string::npos)
+      << log;
+}
+
+// The torus's outer seeds lie far off screen in every direction: gathered, one arrow for each
+// sixteenth of the turn with its count, not a solid frame of arrows around the picture.
+TEST(Viewer, OffScreenSeedsAreGatheredByDirection) {
+  const std::string shot = testing::output_path("gathered-seeds.png");
+  ASSERT_EQ(run_viewer_script(
+                "gathered-seeds",
+                "example torus\nwait\nstage seeds\nframes 3\nscreenshot " + shot + "\nquit\n"),
+            0);
+  const std::size_t magenta =
+      pixels_of(render::read_png(shot), 200 / 255.0f, 40 / 255.0f, 160 / 255.0f);
+  EXPECT_GT(magenta, 100u);
+  EXPECT_LT(magenta, 16u * 900u);  // 16 arrows and their counts at most
 }
 
 // A lesson on undersampling: delete the samples of one of the star's valleys and the curve cuts

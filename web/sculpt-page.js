@@ -13,12 +13,12 @@ function show(message, isError = false) {
 }
 
 // The address's parameters as the viewer's options: ?example=torus&method=paper&stage=poles,
-// ?figure=fig06&panel=c, ?lesson=undersampling. Unknown ones are refused by the viewer in one
+// ?figure=fig06&panel=c, ?lesson=undersampling, ?present=on&scale=2 (a class). Unknown ones are refused by the viewer in one
 // line, as on the command line.
 const options = {
   example: '--example', method: '--method', stage: '--stage', step: '--step',
   sample: '--pick-sample', figure: '--figure', panel: '--panel', lesson: '--lesson',
-  text: '--font-scale',
+  text: '--font-scale', scale: '--picture-scale',
 };
 // A refusal of the command line in the address's words: `stage` for `--stage`, and no pointer
 // to a --help the page cannot show.
@@ -38,6 +38,8 @@ function argumentsFromAddress() {
       args.push(options[key], value);
     } else if (key === 'kind' && (value === 'closed' || value === 'bordered')) {
       args.push(`--${value}`);
+    } else if (key === 'present' && value === 'on') {
+      args.push('--present');
     } else if (key === 'animation' && value === 'off') {
       args.push('--no-animation');
     } else {

@@ -80,6 +80,13 @@ std::string Viewer::link_to_view(std::string& why_not) const {
     std::snprintf(scale, sizeof scale, "%g", double(text_scale));
     options.push_back({"text", scale});
   }
+  // So does a presentation: a link a teacher opens in front of the class.
+  if (presenting_) options.push_back({"present", "on"});
+  if (picture_scale_ != 1.0f) {
+    char scale[32];
+    std::snprintf(scale, sizeof scale, "%g", double(picture_scale_));
+    options.push_back({"scale", scale});
+  }
   std::ostringstream text;
   if (platform::in_browser) {
     text << platform::page_address();
@@ -89,15 +96,19 @@ std::string Viewer::link_to_view(std::string& why_not) const {
       separator = '&';
     }
   } else {
-    // The command line's names: sample is --pick-sample, kind is --closed or --bordered.
+    // The command line's names: sample is --pick-sample, kind is --closed or --bordered,
+    // present is --present.
     text << "sculpt-view";
     for (const auto& [key, value] : options) {
       if (key == "kind") {
         text << " --" << value;
+      } else if (key == "present") {
+        text << " --present";
       } else {
-        const std::string option = key == "sample" ? "pick-sample"
-                                   : key == "text" ? "font-scale"
-                                                   : key;
+        const std::string option = key == "sample"  ? "pick-sample"
+                                   : key == "text"  ? "font-scale"
+                                   : key == "scale" ? "picture-scale"
+                                                    : key;
         text << " --" << option << ' ' << value;
       }
     }

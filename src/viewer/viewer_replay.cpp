@@ -7,8 +7,11 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <glm/glm.hpp>
+#include <glm/gtc/constants.hpp>
+#include <string>
 
 #include "viewer.hpp"
 #include "viewer_internals.hpp"
@@ -138,46 +141,67 @@ void Viewer::follow_latest_event() {
 
 // For each point of interest outside the view, a small arrow at the view's edge pointing to it,
 // labelled once per direction.
+// Off-screen points are gathered by direction: one arrow for each sixteenth of the turn that
+// holds any, with how many it stands for (the thousands of outer seeds of a 3D example would
+// otherwise merge into a solid frame around the picture).
 void Viewer::draw_off_screen_markers(int width, int height) {
   const auto points = points_of_interest();
   if (points.empty()) return;
   const float left = panel_width(), top = ImGui::GetFrameHeight();
   const float view_w = float(view_width(width)), view_h = float(view_height(height));
   const glm::mat4 view_projection = camera_.projection(view_w / view_h) * camera_.view();
-  ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const ImU32 colour = IM_COL32(200, 40, 160, 255);
-  int labelled_sides = 0;  // one label per side of the view (bit per side)
+  constexpr int sectors = 16;
+  struct Gathered {
+    glm::vec2 direction{0.0f};  // the sum of the points' directions from the centre (NDC)
+    int count = 0;
+    std::string label;  // the first point's
+  };
+  std::array<Gathered, sectors> gathered;
   for (const auto& point : points) {
     glm::vec4 clip = view_projection * glm::vec4(point.at, 1.0f);
     // Behind the camera the direction flips: mirror it so the arrow points the right way.
     if (clip.w <= 0) clip = -clip;
     const glm::vec2 ndc = glm::vec2(clip) / std::max(clip.w, 1e-6f);
     if (std::abs(ndc.x) <= 1 && std::abs(ndc.y) <= 1) continue;
-    // Where the line from the centre to the point leaves the view, a little inside it.
+    const float turn = std::atan2(ndc.y, ndc.x) / (2 * glm::pi<float>()) + 0.5f;  // 0..1
+    Gathered& sector = gathered[std::min(sectors - 1, int(turn * sectors))];
+    sector.direction += glm::normalize(ndc);
+    if (sector.count++ == 0) sector.label = point.label;
+  }
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImU32 colour = IM_COL32(200, 40, 160, 255);
+  const float scale = std::max(1.0f, picture_scale_);  // a projector's arrows are bigger
+  int labelled_sides = 0;  // one label per side of the view (bit per side)
+  for (const Gathered& sector : gathered) {
+    if (sector.count == 0 || glm::length(sector.direction) < 1e-6f) continue;
+    const glm::vec2 ndc = glm::normalize(sector.direction);
+    // Where the line from the centre leaves the view, a little inside it.
     const float reach = std::max(std::abs(ndc.x), std::abs(ndc.y));
     const glm::vec2 edge = ndc / reach * 0.93f;
     const ImVec2 tip(left + (edge.x + 1) * 0.5f * view_w,
-                     std::max(top + 10, (1 - edge.y) * 0.5f * view_h));
+                     std::max(top + 10 * scale, (1 - edge.y) * 0.5f * view_h));
     const glm::vec2 direction = glm::normalize(glm::vec2(ndc.x, -ndc.y));
     const glm::vec2 across(-direction.y, direction.x);
     const auto corner = [&](float back, float side) {
-      return ImVec2(tip.x - direction.x * back + across.x * side,
-                    tip.y - direction.y * back + across.y * side);
+      return ImVec2(tip.x - direction.x * back * scale + across.x * side * scale,
+                    tip.y - direction.y * back * scale + across.y * side * scale);
     };
     draw->AddTriangleFilled(tip, corner(16, 7), corner(16, -7), colour);
     const int side = std::abs(ndc.x) >= std::abs(ndc.y) ? (ndc.x > 0 ? 1 : 2) : (ndc.y > 0 ? 4 : 8);
+    std::string text = sector.count > 1 ? std::to_string(sector.count) : "";
     if (!(labelled_sides & side)) {
       labelled_sides |= side;
-      // Beside the arrow, inside the view whatever side it is on.
-      const ImVec2 size = ImGui::CalcTextSize(point.label.c_str());
-      // Behind the arrow, clear of it whichever way it points.
-      ImVec2 at =
-          corner(20 + 0.5f * (std::abs(direction.x) * size.x + std::abs(direction.y) * size.y), 0);
-      // (max of min, not clamp: in a narrow view the upper bound may fall below the lower.)
-      at.x = std::max(left + 4, std::min(at.x - size.x / 2, left + view_w - size.x - 4));
-      at.y = std::max(top + 4, std::min(at.y - size.y / 2, view_h - size.y - 4));
-      draw->AddText(at, colour, point.label.c_str());
+      text = sector.label + (text.empty() ? "" : " (" + text + ")");
     }
+    if (text.empty()) continue;
+    // Behind the arrow, clear of it whichever way it points, and inside the view.
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    ImVec2 at = corner(
+        20 + 0.5f * (std::abs(direction.x) * size.x + std::abs(direction.y) * size.y) / scale, 0);
+    // (max of min, not clamp: in a narrow view the upper bound may fall below the lower.)
+    at.x = std::max(left + 4, std::min(at.x - size.x / 2, left + view_w - size.x - 4));
+    at.y = std::max(top + 4, std::min(at.y - size.y / 2, view_h - size.y - 4));
+    draw->AddText(at, colour, text.c_str());
   }
 }
 
