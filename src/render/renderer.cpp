@@ -279,7 +279,9 @@ void Renderer::draw_overlay(int width, int height, const Draw_options& options) 
     std::vector<float> triangles;  // x, y, z per vertex
   };
   std::vector<Piece> pieces;
-  const float scale = (height >= 600 ? 2.0f : 1.0f) * std::max(1.0f, options.picture_scale);
+  // The legend's text grows half as fast as the points and lines: it is read, not found.
+  const float scale =
+      (height >= 600 ? 2.0f : 1.0f) * (1.0f + 0.5f * std::max(0.0f, options.picture_scale - 1.0f));
   const auto text = [&](float x, float y, const std::string& words, scene::Color color) {
     std::vector<char> quads(words.size() * 270 + 1000);
     const int count = stb_easy_font_print(0, 0, const_cast<char*>(words.c_str()), nullptr,
