@@ -91,6 +91,12 @@ TEST(ThinHandles, ALoopAroundASmallDiscIsNoHandle) {
   EXPECT_TRUE(find_thin_handles(mesh.points, mesh.triangles, 3).empty());
 }
 
+TEST(ThinHandles, TrianglesOrientedEveryWhichWayAreNotSearched) {
+  Mesh mesh = torus(40, 3, 0.09);
+  std::swap(mesh.triangles[7][0], mesh.triangles[7][1]);  // one triangle turned over
+  EXPECT_TRUE(find_thin_handles(mesh.points, mesh.triangles, 1).empty());
+}
+
 TEST(ThinHandles, AResultCarriesThemAndItsVerdictSaysSo) {
   const Mesh mesh = torus(40, 3, 0.09);
   Reconstruction<3> result;

@@ -40,10 +40,18 @@ class Half_edges {
       }
     }
     for (std::size_t v = 0; v < point_count; ++v) {
-      std::sort(entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[v]),
-                entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[v + 1]));
+      const auto first = entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[v]);
+      const auto last = entries_.begin() + static_cast<std::ptrdiff_t>(offsets_[v + 1]);
+      std::sort(first, last);
+      // Two triangles that both go a -> b are not oriented alike across their edge.
+      oriented_ = oriented_ && std::adjacent_find(first, last, [](const Entry& x, const Entry& y) {
+                                 return x.to == y.to;
+                               }) == last;
     }
   }
+
+  // Whether every edge is two opposite half-edges: the triangles are oriented consistently.
+  bool oriented() const { return oriented_; }
 
   struct Entry {
     int to;
@@ -63,7 +71,9 @@ class Half_edges {
 
   // The third vertex of the triangle on the left of a -> b.
   int apex(int a, int b) const {
-    const auto& t = triangles_[triangle(a, b)];
+    const int f = triangle(a, b);
+    if (f < 0) return -1;
+    const auto& t = triangles_[f];
     for (int v : t) {
       if (v != a && v != b) return v;
     }
@@ -74,6 +84,7 @@ class Half_edges {
   const std::vector<Facet<3>>& triangles_;
   std::vector<std::size_t> offsets_;
   std::vector<Entry> entries_;
+  bool oriented_ = true;
 };
 
 // The samples on the triangles in the order a breadth-first walk over the surface meets them,
@@ -114,6 +125,8 @@ class Thin_handle_search {
         budget_(64 * triangles.size() + 4096) {}
 
   std::vector<Thin_handle> run() {
+    // The search walks half-edges: triangles oriented every which way are not searched.
+    if (!half_edges_.oriented()) return {};
     const int n = static_cast<int>(points_.size());
     for (int v = 0; v < n; ++v) nearest_[v] = nearest_neighbour_distance(v);
     // Triangles first (the thinnest necks), then quadrilaterals; each cycle is met once, from
@@ -236,8 +249,10 @@ class Thin_handle_search {
     std::size_t head[2] = {0, 0};
     for (int side = 0; side < 2; ++side) {
       front_[side].clear();
-      front_[side].push_back(half_edges_.triangle(loop[side], loop[1 - side]));
-      seen_[front_[side].front()] = mark[side];
+      const int start = half_edges_.triangle(loop[side], loop[1 - side]);
+      if (start < 0) return false;
+      front_[side].push_back(start);
+      seen_[start] = mark[side];
     }
     auto& front = front_;
     for (;;) {

@@ -12,6 +12,7 @@
 //   - kept: a candidate independent of those kept before, that is, cutting the surface along all
 //     of them leaves it connected (found by flooding from both sides of the new loop at once, so
 //     that a loop around a small disc is rejected after a few triangles).
+// Triangles not oriented alike (two that both go a -> b) are not searched.
 // A candidate through a sample of a loop kept is passed over (the count stays exact for loops
 // that share no sample), and the search stops at the genus: the count is a lower bound of the
 // handles so thin, and each loop kept is drawn where it is.
