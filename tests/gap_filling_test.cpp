@@ -51,7 +51,7 @@ TEST(Gap_filling, TheEdgeTableAnswersAsAMapWould) {
   std::uniform_int_distribution<int> vertex(0, 3000);
   for (int k = 0; k < 20000; ++k) {
     const int a = vertex(random), b = vertex(random);
-    const std::uint64_t key = k % 2 ? directed_key(a, b) : extraction_detail::edge_key(a, b);
+    const std::uint64_t key = k % 2 ? directed_key(a, b) : edge_key(a, b);
     ++table[key];
     ++expected[key];
   }
@@ -123,7 +123,6 @@ TEST(Gap_filling, HolesSharingAVertexAreTwoLoops) {
 // is on a torn loop: a torn loop sharing a vertex with another loop that is not torn leaves its
 // piece an opening.
 TEST(Gap_filling, ABorderPieceIsTornWhenAllItsLoopsAre) {
-  using extraction_detail::edge_key;
   // Two triangles meeting at vertex 4 only (a bow tie): one border piece of six edges.
   const std::vector<Facet<3>> bowtie = {{4, 0, 1}, {4, 2, 3}};
   const std::unordered_set<std::uint64_t> both = {edge_key(4, 0), edge_key(0, 1), edge_key(1, 4),
@@ -270,7 +269,7 @@ TEST(Gap_filling, TheFillIsTheLeastFoldedTriangulation) {
         points[loop.back()] = at_position.back();
         edge_normals.push_back({jitter(random), jitter(random), 1.0});
       }
-      const Edge_uses edges = {{extraction_detail::edge_key(loop[1], loop[3]), 2}};
+      const Edge_uses edges = {{edge_key(loop[1], loop[3]), 2}};
       const Loop_fill fill = least_folded_fill(points, loop, edge_normals, edges);
       ASSERT_EQ(fill.triangles.size(), static_cast<std::size_t>(k - 2));
       const auto uses_diagonal = [](const std::vector<Facet<3>>& triangles, int a, int b) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A map from 64-bit keys (an edge's, directed or not: extraction/edge_map.hpp) to small values,
+// A map from 64-bit keys (an edge's, directed or not: edge_keys.hpp) to small values,
 // in two flat arrays with linear probing. The manifold extraction and the mending of a bordered
 // surface ask about every edge of a surface, several times over; std::unordered_map made a node
 // per edge (a noisy scan of 20k points: 4% of the whole run in the mending's inserts and finds).

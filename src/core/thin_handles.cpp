@@ -7,14 +7,10 @@
 #include <limits>
 #include <unordered_set>
 
+#include "edge_keys.hpp"
+
 namespace sculpt {
 namespace {
-
-std::uint64_t edge_key(int a, int b) {
-  const auto lo = static_cast<std::uint32_t>(std::min(a, b));
-  const auto hi = static_cast<std::uint32_t>(std::max(a, b));
-  return (std::uint64_t{lo} << 32) | hi;
-}
 
 double distance(const Point<3>& a, const Point<3>& b) {
   return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +

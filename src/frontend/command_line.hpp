@@ -6,6 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <optional>
@@ -86,6 +88,21 @@ inline CLI::Validator whole_number_above_zero() {
       "N");
 }
 
+// A scale (--font-scale, --picture-scale) from low to high: CLI::Range lets NaN through (every
+// comparison with it is false).
+inline CLI::Validator scale_from(double low, double high) {
+  return CLI::Validator(
+      [low, high](std::string& text) {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (*end == '\0' && value >= low && value <= high) return std::string();
+        char range[64];
+        std::snprintf(range, sizeof range, "%g to %g", low, high);
+        return "'" + text + "' is not a scale from " + range;
+      },
+      "");  // unnamed: the help shows the option's type alone (FLOAT)
+}
+
 // A mistake in the arguments themselves (exit code 2), found before any work is done.
 class Usage_error : public std::runtime_error {
  public:
@@ -97,26 +114,23 @@ class Usage_error : public std::runtime_error {
 inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv,
                                              const std::string& program) {
   // A mistyped command: CLI11 would only say that one is required.
-  const auto commands = app.get_subcommands([](const CLI::App* command) {
-    return !command->get_description().empty();  // not the hidden ones
-  });
   const auto all = app.get_subcommands({});
   const bool known = argc > 1 && std::any_of(all.begin(), all.end(), [&](const CLI::App* command) {
                        return command->check_name(argv[1]);
                      });
-  if (!commands.empty() && argc > 1 && argv[1][0] != '-' && !known) {
-    std::vector<std::string> names;
+  if (!all.empty() && argc > 1 && argv[1][0] != '-' && !known) {
+    std::vector<std::string> names;  // the commands --help lists, not the hidden ones
     std::string listed;
-    for (const CLI::App* command : commands) {
+    for (const CLI::App* command : all) {
+      if (command->get_description().empty()) continue;
       names.push_back(command->get_name());
-      listed += (listed.empty() ? "" : ", ") + command->get_name();
+      listed += (listed.empty() ? "" : ", ") + names.back();
     }
     // A file given first is most likely a file to reconstruct.
     std::error_code no_file;
+    const bool reconstructs = std::count(names.begin(), names.end(), "reconstruct") > 0;
     const std::string hint =
-        std::filesystem::is_regular_file(argv[1], no_file) &&
-                std::any_of(all.begin(), all.end(),
-                            [](const CLI::App* c) { return c->get_name() == "reconstruct"; })
+        reconstructs && std::filesystem::is_regular_file(argv[1], no_file)
             ? " (did you mean '" + program + " reconstruct " + one_line(argv[1]) + "'?)"
             : did_you_mean(argv[1], names);
     std::cerr << program << ": usage error: no command '" << one_line(argv[1]) << "'" << hint

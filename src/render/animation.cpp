@@ -23,7 +23,7 @@ std::optional<Animation_format> animation_format_of(const std::string& path) {
 }
 
 Animation_writer::Animation_writer(int width, int height, int milliseconds, Animation_format format)
-    : width_(width), height_(height), milliseconds_(milliseconds), format_(format) {
+    : width_(width), height_(height), milliseconds_(milliseconds) {
   if (milliseconds <= 0)
     throw std::runtime_error("each picture of an animation shows for 1 ms or more");
   if (format == Animation_format::gif) {
@@ -47,7 +47,7 @@ void Animation_writer::add(const Image& frame) {
     throw std::runtime_error("the frames of an animation must be of one size");
   if (timestamp_ > std::numeric_limits<int>::max() - 4LL * milliseconds_)
     throw std::runtime_error("an animation cannot last that long");
-  if (format_ == Animation_format::gif) {
+  if (gif_) {
     // A frame's delay is written with it, and the last one's is longer: each frame waits for the
     // next before it is encoded.
     if (held_) gif_->add(*held_, centiseconds(1));
@@ -100,7 +100,7 @@ std::vector<unsigned char> Animation_writer::finish_webp() {
 void Animation_writer::write(const std::string& path) {
   if (frames_ == 0) throw std::runtime_error("an animation needs at least one frame");
   std::vector<unsigned char> bytes;
-  if (format_ == Animation_format::gif) {
+  if (gif_) {
     gif_->add(*held_, centiseconds(3));  // the last picture held three times as long
     held_.reset();
     bytes = gif_->finish();

@@ -45,8 +45,7 @@ class Animation_writer {
   std::vector<unsigned char> finish_webp();
 
   int width_, height_, milliseconds_;
-  Animation_format format_;
-  WebPAnimEncoder* encoder_ = nullptr;
+  WebPAnimEncoder* encoder_ = nullptr;  // one of the two, as the format asked
   std::unique_ptr<Gif_animation> gif_;
   std::optional<Image> held_;  // GIF: the frame last given, written when its delay is known
   long long timestamp_ = 0, last_start_ = 0;

@@ -102,14 +102,7 @@ int main(int argc, char** argv) {
       .add_option("--font-scale", font_scale,
                   "Scale the panel's text, e.g. 1.5 for a projector (also in the View menu)")
       ->capture_default_str()
-      ->check([](const std::string& text) {
-        // CLI::Range lets NaN through (every comparison with it is false).
-        char* end = nullptr;
-        const double value = std::strtod(text.c_str(), &end);
-        return *end == '\0' && value >= 0.5 && value <= 4.0
-                   ? std::string()
-                   : "'" + text + "' is not a scale from 0.5 to 4";
-      });
+      ->check(sculpt::frontend::scale_from(0.5, 4.0));
   bool present = false;
   float picture_scale = 1.0f;
   command_line.add_flag("--present", present,
@@ -118,13 +111,8 @@ int main(int argc, char** argv) {
       .add_option("--picture-scale", picture_scale,
                   "Scale the picture's points, lines and legend, e.g. 2 for a projector")
       ->capture_default_str()
-      ->check([](const std::string& text) {
-        char* end = nullptr;  // not CLI::Range, which lets NaN through
-        const double value = std::strtod(text.c_str(), &end);
-        return *end == '\0' && value >= 0.5 && value <= 4.0
-                   ? std::string()
-                   : "'" + text + "' is not a scale from 0.5 to 4";
-      });
+      ->check(sculpt::frontend::scale_from(sculpt::viewer::Viewer::smallest_picture_scale,
+                                           sculpt::viewer::Viewer::largest_picture_scale));
   // The first view: what a link to the viewer opens (in the browser, the page's address gives
   // these options: ?example=torus&method=paper&stage=poles).
   std::string stage;

@@ -266,10 +266,9 @@ std::string Script::before_frame(Viewer& viewer) {
         fail("no kind '" + argument + "' (closed, bordered or automatic)");
         continue;
       }
-      kind_ = kind;
       viewer.set_file_kind(kind);
     } else if (command == "example") {
-      if (needs_argument("an example name")) viewer.open_example(argument, kind_);
+      if (needs_argument("an example name")) viewer.open_example(argument, viewer.file_kind());
     } else if (command == "open") {
       if (needs_argument("a file")) viewer.open_file(argument);
     } else if (command == "stage") {
@@ -452,7 +451,8 @@ std::string Script::before_frame(Viewer& viewer) {
       on_off([&](bool on) { viewer.set_presenting(on); });
     } else if (command == "picture-scale") {
       const auto scale = real(argument);
-      if (!scale || *scale < 0.5 || *scale > 4) {
+      if (!scale || *scale < Viewer::smallest_picture_scale ||
+          *scale > Viewer::largest_picture_scale) {
         fail("'" + line + "': expected a picture scale from 0.5 to 4");
         continue;
       }

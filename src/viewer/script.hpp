@@ -91,7 +91,6 @@ class Script {
   int frames_to_wait_ = 0;
   bool failed_ = false;
   Mode mode_ = Mode::automatic;
-  Surface_kind kind_ = Surface_kind::automatic;  // what `example` opens as (`kind`)
   bool from_options_ = false;
   bool paused_ = false;
   int step_ = 1, pauses_ = 0;

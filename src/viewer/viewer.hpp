@@ -37,7 +37,9 @@ class Viewer {
   // and the picture, with its legend drawn in it, takes the whole window.
   void set_presenting(bool on) { presenting_ = on; }
   bool presenting() const { return presenting_; }
-  // One scale for the picture's points, lines and arrows (a projector: 2), --picture-scale.
+  // One scale for the picture's points, lines and arrows (a projector: 2), --picture-scale,
+  // from smallest_picture_scale to largest_picture_scale.
+  static constexpr float smallest_picture_scale = 0.5f, largest_picture_scale = 4.0f;
   void set_picture_scale(float scale) { picture_scale_ = scale; }
   float picture_scale() const { return picture_scale_; }
 
@@ -51,6 +53,7 @@ class Viewer {
   bool switch_method(const std::string& name);
   // The kind files are reconstructed as (--closed, --bordered; else automatic).
   void set_file_kind(Surface_kind kind) { kind_ = file_kind_ = kind; }
+  Surface_kind file_kind() const { return file_kind_; }
   void set_merge_duplicates(bool merge) { merge_duplicates_ = merge; }
   void set_method(Method method) {
     const auto& names = method_names();

@@ -75,18 +75,15 @@ std::string Viewer::link_to_view(std::string& why_not) const {
   if (options.empty()) return "";
   // The text size chosen for a projector goes with the view it was chosen for.
   const float text_scale = ImGui::GetIO().FontGlobalScale;
-  if (text_scale != 1.0f) {
-    char scale[32];
-    std::snprintf(scale, sizeof scale, "%g", double(text_scale));
-    options.push_back({"text", scale});
-  }
+  const auto scale_text = [](float scale) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", double(scale));
+    return std::string(text);
+  };
+  if (text_scale != 1.0f) options.push_back({"text", scale_text(text_scale)});
   // So does a presentation: a link a teacher opens in front of the class.
   if (presenting_) options.push_back({"present", "on"});
-  if (picture_scale_ != 1.0f) {
-    char scale[32];
-    std::snprintf(scale, sizeof scale, "%g", double(picture_scale_));
-    options.push_back({"scale", scale});
-  }
+  if (picture_scale_ != 1.0f) options.push_back({"scale", scale_text(picture_scale_)});
   std::ostringstream text;
   if (platform::in_browser) {
     text << platform::page_address();

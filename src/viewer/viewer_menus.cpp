@@ -58,7 +58,8 @@ void Viewer::draw_menu() {
     }
     // Projector mode: text large enough for the back of a room, points and lines to match.
     ImGui::SliderFloat("text size", &ImGui::GetIO().FontGlobalScale, 0.5f, 3.0f, "%.1fx");
-    ImGui::SliderFloat("picture scale", &picture_scale_, 0.5f, 4.0f, "%.1fx");
+    ImGui::SliderFloat("picture scale", &picture_scale_, smallest_picture_scale,
+                       largest_picture_scale, "%.1fx");
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();

@@ -21,13 +21,9 @@ void Viewer::draw_panel(int height) {
   ImGui::SetNextWindowSize(ImVec2(panel_width(), float(height) - top), ImGuiCond_Always);
   ImGui::Begin("Sculpt", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  if (last_job_failed_) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.40f, 1.0f));
-    ImGui::TextWrapped("%s", message_.c_str());
-    ImGui::PopStyleColor();
-  } else {
-    ImGui::TextWrapped("%s", message_.c_str());
-  }
+  if (last_job_failed_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.40f, 1.0f));
+  ImGui::TextWrapped("%s", message_.c_str());
+  if (last_job_failed_) ImGui::PopStyleColor();
   if (job_->running()) {  // not while the view merely moves to a tour panel
     // Across the whole reconstruction, naming the stage it is in.
     const auto status = job_->status();

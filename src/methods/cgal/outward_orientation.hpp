@@ -27,7 +27,6 @@ inline void orient_outward(const std::vector<Point<3>>& points, std::vector<Face
   // triangle), and whether every edge has one triangle on each side, used once each way round.
   std::vector<double> six_volume(points.size(), 0.0);
   std::vector<char> closed(points.size(), 1);
-  using extraction_detail::directed_key;
   std::vector<std::uint64_t> directed_edges;  // sorted
   directed_edges.reserve(3 * surface.size());
   for (const auto& t : surface) {

@@ -12,22 +12,10 @@
 #include <utility>
 #include <vector>
 
+#include "../../core/edge_keys.hpp"
 #include "../../core/key_table.hpp"
 
 namespace sculpt::extraction_detail {
-
-// The same key for (a, b) and (b, a).
-inline std::uint64_t edge_key(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
-
-// A key of the directed edge a -> b (edge_key is the undirected one).
-inline std::uint64_t directed_key(int a, int b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) |
-         static_cast<std::uint32_t>(b);
-}
 
 // How many edges a surface of this many triangles has, about: a closed one's, and some border.
 inline std::size_t expected_edge_count(std::size_t triangles) {

@@ -16,19 +16,17 @@
 
 namespace sculpt {
 
-// How many triangles each edge is on, by extraction_detail::edge_key.
+// How many triangles each edge is on, by edge_key.
 using Edge_uses = Key_table<int>;
 
 inline Edge_uses edge_uses(const std::vector<Facet<3>>& triangles) {
   Edge_uses uses;
   uses.reserve(extraction_detail::expected_edge_count(triangles.size()));
   for (const auto& t : triangles) {
-    for (int j = 0; j < 3; ++j) ++uses[extraction_detail::edge_key(t[j], t[(j + 1) % 3])];
+    for (int j = 0; j < 3; ++j) ++uses[edge_key(t[j], t[(j + 1) % 3])];
   }
   return uses;
 }
-
-using extraction_detail::directed_key;
 
 // Per directed edge a -> b of a triangle (directed_key), the triangle's third vertex. On an
 // oriented surface an edge's uses are those of its two directions.
@@ -71,7 +69,7 @@ inline std::vector<Border_edge> border_edges(const std::vector<Facet<3>>& triang
   for (const auto& t : triangles) {
     for (int j = 0; j < 3; ++j) {
       const int a = t[j], b = t[(j + 1) % 3];
-      if (uses.at(extraction_detail::edge_key(a, b)) == 1) border.push_back({a, b, t[(j + 2) % 3]});
+      if (uses.at(edge_key(a, b)) == 1) border.push_back({a, b, t[(j + 2) % 3]});
     }
   }
   return border;

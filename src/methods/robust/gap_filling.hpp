@@ -171,7 +171,7 @@ inline std::size_t count_torn_pieces(const std::vector<Facet<3>>& surface, const
     const std::size_t i = index.emplace(a, index.size()).first->second;
     const std::size_t j = index.emplace(b, index.size()).first->second;
     border.push_back({i, j});
-    on_torn_loop.push_back(torn.count(extraction_detail::edge_key(a, b)) > 0);
+    on_torn_loop.push_back(torn.count(edge_key(a, b)) > 0);
   }
   Union_find pieces(index.size());
   for (const auto& [i, j] : border) pieces.unite(i, j);
@@ -195,7 +195,6 @@ struct Gaps_filled {
 inline Gaps_filled fill_gaps(const std::vector<Point<3>>& samples, std::vector<Facet<3>>& surface,
                              const std::function<bool(const Facet<3>&)>& not_to_add,
                              Pinches pinches = Pinches::passed) {
-  using extraction_detail::edge_key;
   Edge_uses edges = edge_uses(surface);
   Gaps_filled result;
   std::unordered_set<std::uint64_t> torn;

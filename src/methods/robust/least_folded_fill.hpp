@@ -78,7 +78,6 @@ inline Loop_fill least_folded_fill(const std::vector<Point<3>>& samples,
                                    const std::vector<extraction_detail::Vector>& edge_normals,
                                    const Edge_uses& edges) {
   using extraction_detail::dot;
-  using extraction_detail::edge_key;
   using extraction_detail::normal_of;
   using extraction_detail::Vector;
   using fill_detail::Quality;

@@ -146,7 +146,6 @@ inline std::size_t close_border_notches(const std::vector<Point<3>>& samples,
                                         std::vector<Facet<3>>& surface,
                                         const std::function<bool(const Facet<3>&)>& not_to_add) {
   using extraction_detail::dot;
-  using extraction_detail::edge_key;
   using extraction_detail::minus;
   std::size_t closed = 0;
   for (bool progress = true; progress;) {

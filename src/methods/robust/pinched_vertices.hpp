@@ -192,7 +192,6 @@ inline bool one_fan(const std::vector<Facet<3>>& surface, int v, const std::vect
 // off by it (a search from each triangle left at the fan's other vertices, across edges,
 // reaches far enough).
 inline std::size_t drop_pinched_fans(std::vector<Facet<3>>& surface, std::size_t sample_count) {
-  using extraction_detail::edge_key;
   using pinch_detail::one_fan;
   using pinch_detail::Span;
   constexpr std::size_t small_piece = 64;  // triangles: fewer cut off is a piece of its own
