@@ -482,6 +482,11 @@ TEST(Cli, WhatDoesNotApplyIsRefused) {
   const std::vector<std::pair<std::string, std::string>> cases = {
       {"render --example star -o " + picture + " --size 64x64garbage", "WIDTHxHEIGHT"},
       {"render --example star -o " + picture + " --clip 0.5,0,90", "2D curve"},
+      {"render --example star -o " + picture + " --section 0.5,0,90", "2D curve"},
+      {"render --example torus -o " + picture + " --section 0.5,0,90 --clip 0.5,0,90", "not both"},
+      {"render --example torus -o " + picture + " --section 0.5,0,90,0.1", "POSITION,AZIMUTH"},
+      {"render --example torus -o " + picture + " --polar-balls --ball-opacity 1.5",
+       "ball_opacity"},
       {"reconstruct --example star -o " + output_path("s.svg") + " --seed-sample -2", "-2"},
       {"render --shots " + shots + " -o " + picture, "excludes"}};
   for (const auto& [arguments, says] : cases) {

@@ -72,10 +72,11 @@ void check_every_stage(const std::vector<Point<D>>& points, Surface_kind kind,
     const auto r = reconstruct(points, options);
     const int events = static_cast<int>(r.propagation.events.size());
     for (scene::Stage stage : scene::stages_of(options.method, D)) {
-      std::vector<scene::Request> requests(4);
+      std::vector<scene::Request> requests(D == 3 ? 5 : 4);
       requests[1].focus_sample = 0;  // a picked sample: its cell, poles, balls, cubes
       requests[2].focus_pole = r.poles.poles.empty() ? -1 : 0;
       requests[3].step = events / 2;  // mid-replay: the pole just labelled and its source
+      if (D == 3) requests[4].sectioned = true;  // in section, the balls as circles
       // Every layer the stage can draw, polar balls and samples included (3D draws them on
       // shaded stages only when asked).
       for (auto& request : requests) {

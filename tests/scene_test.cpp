@@ -249,18 +249,26 @@ TEST(Scene, PolarBallsIn3dWithAStride) {
   const auto r = reconstruct(shapes::sphere(800));
   scene::Request request;
   request.stage = scene::Stage::surface;
-  EXPECT_EQ(find(scene::build_scene(r, request), "polar-balls"), nullptr);
+  EXPECT_EQ(find(scene::build_scene(r, request), "inner-balls"), nullptr);
   request.polar_balls = true;
   request.ball_every = 10;
   const auto scene = scene::build_scene(r, request);
-  const scene::Layer* balls = find(scene, "polar-balls");
-  ASSERT_NE(balls, nullptr);
-  EXPECT_GT(balls->radii.size(), 0u);
-  EXPECT_LE(balls->radii.size(), r.poles.poles.size() / 10 + 1);
+  std::size_t count = 0;
   float diagonal = 0;
   for (int c = 0; c < 3; ++c)
     diagonal += (scene.upper[c] - scene.lower[c]) * (scene.upper[c] - scene.lower[c]);
-  for (float radius : balls->radii) EXPECT_LE(radius, 0.5f * std::sqrt(diagonal));
+  for (const char* id : {"polar-balls", "inner-balls", "outer-balls"}) {
+    const scene::Layer* balls = find(scene, id);
+    ASSERT_NE(balls, nullptr) << id;
+    count += balls->radii.size();
+    for (float radius : balls->radii) EXPECT_LE(radius, 0.5f * std::sqrt(diagonal));
+  }
+  EXPECT_GT(count, 0u);
+  EXPECT_LE(count, r.poles.poles.size() / 10 + 1);
+  // --layers polar-balls names them all.
+  request.layers = {"polar-balls"};
+  EXPECT_EQ(scene::layer_ids(scene::build_scene(r, request)),
+            (std::vector<std::string>{"polar-balls", "inner-balls", "outer-balls"}));
 }
 
 TEST(Camera, FitsAndRoundTripsThroughJson) {

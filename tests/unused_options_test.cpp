@@ -80,6 +80,8 @@ TEST(Unused_options, AreRefusedInOneLineThatSaysWhereTheyApply) {
        "this picture has none"},
       {{"render", "sphere.xyz", "--stage", "voronoi", "--ball-every", "5", "-o", "x.png"},
        "draws none"},
+      {{"render", "sphere.xyz", "--stage", "voronoi", "--ball-limit", "5", "-o", "x.png"},
+       "draws none"},
       {{"render", "circle.xy", "--frames", "10", "-o", "x.png"}, "this is one picture"},
       {{"render", "circle.xy", "--animate", "stages", "--stage", "poles", "-o", "x.webp"},
        "draws every stage in order"},
@@ -136,6 +138,8 @@ TEST(Unused_options, WhereTheyApplyTheyAreTaken) {
       {"render", "sphere.xyz", "--wireframe", "--smooth", "-o", "f.png"},
       {"render", "sphere.xyz", "--stage", "poles", "--polar-balls", "--ball-every", "5", "-o",
        "g.png"},
+      {"render", "sphere.xyz", "--stage", "solid", "--polar-balls", "--ball-limit", "20",
+       "--ball-opacity", "0.4", "--section", "0.5,30,60", "-o", "g2.png"},
       {"render", "circle.xy", "--animate", "stages", "--frame-ms", "500", "-o", "h.webp"},
       // The box of DT(S ∪ BBV) drawn, whatever the method; the edges alone; the paper's rule
       // where robust inserts poles as the paper does.

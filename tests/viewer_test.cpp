@@ -293,6 +293,38 @@ TEST(Viewer, ACutAwayShowsInsideTheDelaunayTriangulation) {
             << "\n";
 }
 
+// Share of the window right of the panel that is exactly this colour (an unlit fill).
+double share_of_colour(const render::Image& image, const scene::Color& colour) {
+  const auto level = [](float c) { return int(std::lround(255 * c)); };
+  std::size_t total = 0, matching = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = panel_width + 1; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      ++total;
+      matching += std::abs(p[0] - level(colour.r)) <= 2 && std::abs(p[1] - level(colour.g)) <= 2 &&
+                  std::abs(p[2] - level(colour.b)) <= 2;
+    }
+  }
+  return double(matching) / double(total);
+}
+
+// In section, the paper method's DT(S + OUP) of a torus reads as its Fig. 1: the tube's two
+// discs kept, the cells with an inserted pole sculpted away around them, seen along the plane.
+TEST(Viewer, ASectionShowsTheCellsKeptAndSculptedAway) {
+  const std::string picture = testing::output_path("viewer-section.png");
+  ASSERT_EQ(run_viewer_script("section",
+                              "example torus\nmethod paper\nwait\nstage sculpted-delaunay\n"
+                              "section 0.5 0 0\nframes 2\nscreenshot " +
+                                  picture + "\nsection 0.5 0 0 7\nquit\n"),
+            1);  // the last command is refused: a fourth number
+  const render::Image image = render::read_png(picture);
+  const double kept = share_of_colour(image, scene::palette::solid);
+  const double away = share_of_colour(image, scene::palette::sculpted_away);
+  EXPECT_GT(kept, 0.01) << "away " << away;
+  EXPECT_GT(away, 0.05) << "kept " << kept;
+  std::cout << "section: " << kept << " of the view kept cells, " << away << " sculpted away\n";
+}
+
 // A picture exported from the viewer is the view on screen: the cut-away and the neighbourhood
 // go with it, and the layers are those of the stage just chosen, before a frame has drawn it.
 TEST(Viewer, ExportedPicturesKeepTheCutAwayAndTheNeighbourhood) {

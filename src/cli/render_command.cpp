@@ -43,6 +43,14 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->check(CLI::PositiveNumber);
   render->add_flag("--polar-balls", shot.polar_balls,
                    "3D: also draw the polar balls (every --ball-every-th), at any stage");
+  render
+      ->add_option("--ball-limit", shot.ball_limit,
+                   "3D: at most this many inner and this many outer polar balls, evenly picked")
+      ->check(CLI::PositiveNumber);
+  render
+      ->add_option("--ball-opacity", shot.ball_opacity,
+                   "3D: the polar balls' opacity, above 0 and at most 1")
+      ->capture_default_str();
   render->add_flag("--neighbourhood", shot.neighbourhood,
                    "Only the cells, faces and balls near the --focus-sample");
   render->add_option("--focus-pole", shot.focus_pole,
@@ -55,13 +63,19 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->check(frontend::positive_length());
   render->add_option("--rule", shot.rule, "Surface rule: auto, skin or extraction")
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
-  render->add_option("--clean", shot.clean,
-                     "Smooth the samples first (3D): auto, jet or none (as reconstruct's); the "
-                     "samples stage then shows them as given and as smoothed")
+  render
+      ->add_option("--clean", shot.clean,
+                   "Smooth the samples first (3D): auto, jet or none (as reconstruct's); the "
+                   "samples stage then shows them as given and as smoothed")
       ->capture_default_str()
       ->check(CLI::IsMember({"auto", "jet", "none"}));
   render->add_option("--layers", shot.layers, "Only these layers (comma separated)")
       ->delimiter(',');
+  render->add_option("--section", shot.section,
+                     "3D: a true section at a plane, POSITION,AZIMUTH,ELEVATION (as --clip): the "
+                     "cells it cuts as polygons filled by what they are, the Voronoi faces and "
+                     "the surface where it crosses them, the samples near it; seen along the "
+                     "plane's normal");
   render->add_option("--clip", shot.clip,
                      "3D: cut away what lies beyond a plane, POSITION,AZIMUTH,ELEVATION[,SLAB] (0 "
                      "to 1 across the samples' box along the normal; the normal's angles in "
@@ -136,7 +150,8 @@ int run_render(const Render_arguments& args) {
   frontend::Shot_renderer renderer;
   if (args.shots_file.empty()) {
     if (args.shot.output.empty())
-      throw frontend::Usage_error("render needs -o FILE.png (FILE.webp or FILE.gif with --animate)");
+      throw frontend::Usage_error(
+          "render needs -o FILE.png (FILE.webp or FILE.gif with --animate)");
     // A usage error here, before any work (Shot_renderer checks the same for --shots lists).
     if (const std::string problem = frontend::output_format_problem(args.shot); !problem.empty())
       throw frontend::Usage_error(problem);

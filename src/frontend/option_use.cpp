@@ -130,7 +130,17 @@ std::string unused_drawing_option(const Shot& shot, const scene::Scene& scene, S
            " draws a reconstructed surface, at the stage surface of 3D points; this picture "
            "has none";
   }
-  if (shot.ball_every != defaults.ball_every && !has_layer("polar-balls")) {
+  const bool balls =
+      has_layer("polar-balls") || has_layer("inner-balls") || has_layer("outer-balls");
+  if ((shot.ball_limit != defaults.ball_limit || shot.ball_opacity != defaults.ball_opacity) &&
+      !balls) {
+    const bool limit = shot.ball_limit != defaults.ball_limit;
+    return named(limit ? "--ball-limit" : "--ball-opacity", limit ? "ball_limit" : "ball_opacity",
+                 spelling) +
+           " applies to the polar balls; this picture draws none (" +
+           named("--polar-balls", "polar_balls", spelling) + " draws them at any stage)";
+  }
+  if (shot.ball_every != defaults.ball_every && !balls) {
     return named("--ball-every", "ball_every", spelling) +
            " thins the polar balls; this picture draws none (" +
            named("--polar-balls", "polar_balls", spelling) + " draws them at any stage)";

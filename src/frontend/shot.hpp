@@ -27,13 +27,16 @@ struct Shot {
   std::string rule = "auto";
   std::string clean = "auto";  // Options::cleaning by name: auto, jet, none
   std::vector<std::string> layers;
-  std::string clip;  // 3D cut-away "POSITION,AZIMUTH,ELEVATION" (scene::Clip); empty: none
+  std::string clip;     // 3D cut-away "POSITION,AZIMUTH,ELEVATION" (scene::Clip); empty: none
+  std::string section;  // 3D true section at the plane "POSITION,AZIMUTH,ELEVATION"; empty: none
   std::string camera_file, save_camera;
   std::string size = "800x800";
   bool wireframe = false, smooth = false, no_legend = false;
   double zoom = 1.0;               // applied to the fitted camera (< 1 zooms in)
   int ball_every = 1;              // polar balls of every k-th pole only
   bool polar_balls = false;        // 3D: the polar balls at any stage (every ball_every-th)
+  int ball_limit = 0;              // 3D: at most this many balls of each kind (0: all)
+  double ball_opacity = 0.8;       // 3D: of the translucent balls
   bool neighbourhood = false;      // only what lies near the focus sample (scene::Request)
   double yaw = 0.6, pitch = 0.35;  // 3D: direction the fitted camera looks from (radians)
   std::string title;               // replaces the stage's title, when given

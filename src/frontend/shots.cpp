@@ -9,6 +9,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <tuple>
 #include <type_traits>
 #if defined(__GLIBC__)  // set by the C library's headers above
 #include <malloc.h>
@@ -22,6 +23,7 @@
 #include "io/point_reader.hpp"
 #include "render/animation.hpp"
 #include "render/camera.hpp"
+#include "scene/clipping.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt::frontend {
@@ -188,6 +190,7 @@ Shot shot_from_json(const nlohmann::json& j, const std::string& name) {
   shot.clean = f.text("clean", shot.clean);
   shot.layers = f.texts("layers");
   shot.clip = f.text("clip", "");
+  shot.section = f.text("section", "");
   shot.camera_file = f.text("camera_file", "");
   shot.save_camera = f.text("save_camera", "");
   shot.size = f.text("size", shot.size);
@@ -197,6 +200,8 @@ Shot shot_from_json(const nlohmann::json& j, const std::string& name) {
   shot.zoom = f.number("zoom", shot.zoom);
   shot.ball_every = static_cast<int>(f.whole("ball_every", 1, 1, most));
   shot.polar_balls = f.flag("polar_balls", false);
+  shot.ball_limit = static_cast<int>(f.whole("ball_limit", 0, 0, most));
+  shot.ball_opacity = f.number("ball_opacity", shot.ball_opacity);
   shot.neighbourhood = f.flag("neighbourhood", false);
   shot.yaw = f.number("yaw", shot.yaw);
   shot.pitch = f.number("pitch", shot.pitch);
@@ -208,6 +213,30 @@ Shot shot_from_json(const nlohmann::json& j, const std::string& name) {
   f.refuse_unknown_keys({"camera"});  // an inline camera, read with the shot's scene
   return shot;
 }
+
+namespace {
+
+// "POSITION,AZIMUTH,ELEVATION[,SLAB]": a plane across the samples' box (scene::Clip).
+scene::Clip plane_from_text(const std::string& text, const char* name, bool slab) {
+  scene::Clip c;
+  char comma1 = 0, comma2 = 0, comma3 = ',';
+  std::istringstream in(text);
+  const bool read = in >> c.position >> comma1 >> c.azimuth >> comma2 >> c.elevation &&
+                    (!(in >> std::ws >> comma3) || (slab && comma3 == ',' && in >> c.slab));
+  if (!read || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
+      !(c.position >= 0 && c.position <= 1) || !std::isfinite(c.azimuth) ||
+      !std::isfinite(c.elevation) || !(c.slab >= 0 && c.slab <= 1)) {
+    throw io::Error(std::string("the ") + name + " must be POSITION,AZIMUTH,ELEVATION" +
+                    (slab ? "[,SLAB]" : "") +
+                    ": a position 0 to 1 across the samples' box, the plane's normal in "
+                    "degrees" +
+                    (slab ? ", a slab's thickness 0 to 1" : "") + ", e.g. 0.5,0,90: '" + text +
+                    "'");
+  }
+  return c;
+}
+
+}  // namespace
 
 scene::Request request_of(const Shot& shot) {
   scene::Request request;
@@ -231,29 +260,28 @@ scene::Request request_of(const Shot& shot) {
     throw io::Error("ball_every must be at least 1 (every k-th polar ball): " +
                     std::to_string(shot.ball_every));
   }
+  if (!(shot.ball_opacity > 0 && shot.ball_opacity <= 1)) {
+    throw io::Error("ball_opacity must be above 0 and at most 1: " +
+                    std::to_string(shot.ball_opacity));
+  }
+  if (!shot.clip.empty() && !shot.section.empty())
+    throw io::Error(
+        "a picture is cut away at a plane (clip) or drawn in section (section), not both");
   if (!shot.clip.empty()) {
-    char comma1 = 0, comma2 = 0;
-    std::istringstream in(shot.clip);
-    auto& c = request.clip;
-    char comma3 = ',';
-    const bool read = in >> c.position >> comma1 >> c.azimuth >> comma2 >> c.elevation &&
-                      (!(in >> std::ws >> comma3) || (comma3 == ',' && in >> c.slab));
-    if (!read || comma1 != ',' || comma2 != ',' || !(in >> std::ws).eof() ||
-        !(c.position >= 0 && c.position <= 1) || !std::isfinite(c.azimuth) ||
-        !std::isfinite(c.elevation) || !(c.slab >= 0 && c.slab <= 1)) {
-      throw io::Error(
-          "the clip must be POSITION,AZIMUTH,ELEVATION[,SLAB]: a position 0 to 1 "
-          "across the samples' box, the plane's normal in degrees, a slab's "
-          "thickness 0 to 1, e.g. 0.5,0,90: '" +
-          shot.clip + "'");
-    }
+    request.clip = plane_from_text(shot.clip, "clip", /*slab=*/true);
     request.clipped = true;
+  }
+  if (!shot.section.empty()) {
+    request.clip = plane_from_text(shot.section, "section", /*slab=*/false);
+    request.sectioned = true;
   }
   request.step = shot.step;
   request.focus_sample = shot.focus_sample;
   request.focus_pole = shot.focus_pole;
   request.ball_every = shot.ball_every;
   request.polar_balls = shot.polar_balls;
+  request.ball_limit = shot.ball_limit;
+  request.ball_opacity = float(shot.ball_opacity);
   if (shot.neighbourhood && shot.focus_sample < 0)
     throw io::Error("the neighbourhood view needs a picked sample (focus_sample)");
   request.neighbourhood = shot.neighbourhood;
@@ -266,6 +294,9 @@ scene::Request request_of(const Shot& shot) {
 void check_shot_applies(const Shot& shot, const Any_reconstruction& reconstruction) {
   if (!shot.clip.empty() && reconstruction.index() == 0) {
     throw io::Error("a clip cuts a 3D scene open; this reconstruction is a 2D curve");
+  }
+  if (!shot.section.empty() && reconstruction.index() == 0) {
+    throw io::Error("a section cuts a 3D scene by a plane; this reconstruction is a 2D curve");
   }
 }
 
@@ -291,8 +322,11 @@ Picture draw_scene(render::Picture_renderer& renderer, const Shot& shot, scene::
   Picture picture;
   picture.scene = std::move(scene);
   if (!shot.title.empty()) picture.scene.title = shot.title;
-  picture.camera =
-      render::fit(picture.scene, float(width) / float(height), shot.zoom, shot.yaw, shot.pitch);
+  float yaw = float(shot.yaw), pitch = float(shot.pitch);
+  // A section is seen along its plane's normal, unless the shot turns the camera itself.
+  if (picture.scene.seen_along && shot.yaw == Shot{}.yaw && shot.pitch == Shot{}.pitch)
+    std::tie(yaw, pitch) = render::yaw_pitch_along(picture.scene.along);
+  picture.camera = render::fit(picture.scene, float(width) / float(height), shot.zoom, yaw, pitch);
   if (inline_camera)
     picture.camera = camera_or_error(*inline_camera, picture.scene, "the shot's \"camera\"");
   if (!shot.camera_file.empty()) {
@@ -319,6 +353,19 @@ std::string output_format_problem(const Shot& shot) {
 
 namespace {
 
+// A section across the middle facing a camera that looks from (yaw, pitch), as --section takes it.
+std::string section_facing(double yaw, double pitch) {
+  const scene::Clip plane =
+      scene::facing({float(std::cos(pitch) * std::sin(yaw)), float(std::sin(pitch)),
+                     float(std::cos(pitch) * std::cos(yaw))});
+  std::ostringstream text;
+  text.precision(9);
+  text << plane.position << ',' << plane.azimuth << ',' << plane.elevation;
+  return text.str();
+}
+
+}  // namespace
+
 // The pictures of an animation: the shot at each step of the replay, or at each stage.
 std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& reconstruction) {
   std::vector<Shot> frames;
@@ -329,6 +376,15 @@ std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& r
           for (scene::Stage stage : scene::stages_of(r.options.method, D)) {
             frames.push_back(shot);
             frames.back().stage = scene::stage_id(stage);
+            // Edges of a 3D triangulation or diagram fill the picture with one colour: those
+            // stages are drawn in section, at a plane across the middle facing the camera.
+            const bool fills_space = stage == scene::Stage::delaunay ||
+                                     stage == scene::Stage::voronoi ||
+                                     stage == scene::Stage::crust_delaunay ||
+                                     (stage == scene::Stage::sculpted_delaunay &&
+                                      !joins_neighbours(r.options.method, r.options.kind, D));
+            if (D == 3 && fills_space && shot.clip.empty() && shot.section.empty())
+              frames.back().section = section_facing(shot.yaw, shot.pitch);
           }
           return;
         }
@@ -347,8 +403,6 @@ std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& r
       reconstruction);
   return frames;
 }
-
-}  // namespace
 
 void check_shot(const Shot& shot) {
   if (shot.output.empty()) throw io::Error("a shot has no output file");

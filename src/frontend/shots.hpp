@@ -51,6 +51,10 @@ void check_shot_applies(const Shot& shot, const Any_reconstruction& reconstructi
 // a one-line message.
 scene::Scene scene_of(const Shot& shot, const Any_reconstruction& reconstruction);
 
+// The shots of an animation's pictures: the replay's steps, or the method's stages (those of a
+// 3D triangulation or diagram in section, facing the camera, unless the shot cuts or sections).
+std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& reconstruction);
+
 // `camera`, if given, replaces the fitted camera. Throws io::Error with a one-line message.
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr);

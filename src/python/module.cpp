@@ -684,7 +684,8 @@ next progress report.)");
       [](const Result& result, const std::string& stage, const py::object& size, long step,
          int focus_sample, int focus_pole, std::vector<std::string> layers, bool wireframe,
          bool smooth, bool legend, double zoom, int ball_every, double yaw, double pitch,
-         std::optional<std::vector<double>> clip) {
+         std::optional<std::vector<double>> clip, std::optional<std::vector<double>> section,
+         bool polar_balls, int ball_limit, double ball_opacity) {
         frontend::Shot shot;
         shot.stage = stage;
         shot.size = size_of(size);
@@ -704,6 +705,15 @@ next progress report.)");
             throw Input_error("clip is (position, azimuth, elevation) or with a slab, 4 numbers");
           shot.clip = fmt::format("{}", fmt::join(*clip, ","));
         }
+        if (section) {
+          if (section->size() != 3)
+            throw Input_error("section is (position, azimuth, elevation), 3 numbers");
+          shot.section = fmt::format("{}", fmt::join(*section, ","));
+        }
+        shot.polar_balls = polar_balls;
+        if (ball_limit < 0) throw Input_error("ball_limit is a count of balls, 0 for all");
+        shot.ball_limit = ball_limit;
+        shot.ball_opacity = ball_opacity;
         return render_stage(result, shot);
       },
       py::arg("result"), py::arg("stage") = shot_defaults.stage,
@@ -715,6 +725,9 @@ next progress report.)");
       py::arg("legend") = !shot_defaults.no_legend, py::arg("zoom") = shot_defaults.zoom,
       py::arg("ball_every") = shot_defaults.ball_every, py::arg("yaw") = shot_defaults.yaw,
       py::arg("pitch") = shot_defaults.pitch, py::arg("clip") = py::none(),
+      py::arg("section") = py::none(), py::arg("polar_balls") = shot_defaults.polar_balls,
+      py::arg("ball_limit") = shot_defaults.ball_limit,
+      py::arg("ball_opacity") = shot_defaults.ball_opacity,
       R"(A picture of a stage, as `sculpt render` and the viewer draw it: an (height, width, 4)
 uint8 RGBA array (matplotlib's imshow shows it).
 
@@ -733,7 +746,13 @@ yaw, pitch    3D: the direction the camera looks from, in radians
 clip          3D: (position, azimuth, elevation[, slab]) cuts away what lies beyond a plane:
               position 0 to 1 across the samples' box along its normal, the normal's angles in
               degrees, and a slab (a share of the box) keeps only that thickness before it;
-              (0.5, 0, 90) shows the lower half of the Delaunay cells, whole)");
+              (0.5, 0, 90) shows the lower half of the Delaunay cells, whole
+section       3D: (position, azimuth, elevation) draws the stage in that plane instead: the
+              cells it cuts as polygons filled by what they are, the Voronoi faces and the
+              surface where it crosses them, the samples near it; seen along the plane
+polar_balls   3D: the polar balls at any stage, inner and outer apart
+ball_limit    3D: at most this many inner and this many outer balls (0: all)
+ball_opacity  3D: the balls' opacity, above 0 and at most 1 (the outer ones fainter))");
 
   m.def("write", &write_result, py::arg("result"), py::arg("path"), py::arg("solid") = py::none(),
         py::arg("ascii") = false, py::arg("normals") = py::none(), py::arg("colors") = py::none(),

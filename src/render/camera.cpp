@@ -159,6 +159,14 @@ Camera fit(const scene::Scene& scene, float aspect, float zoom, float yaw, float
   return camera;
 }
 
+std::pair<float, float> yaw_pitch_along(const scene::Vec3& direction) {
+  // eye() places the camera at target + distance * (cos p sin y, sin p, cos p cos y).
+  const glm::vec3 d = glm::normalize(glm::vec3(direction[0], direction[1], direction[2]));
+  const float pitch = std::clamp(std::asin(std::clamp(d.y, -1.0f, 1.0f)), -1.55f, 1.55f);
+  const float yaw = std::abs(d.x) + std::abs(d.z) > 1e-6f ? std::atan2(d.x, d.z) : 0.0f;
+  return {yaw, pitch};
+}
+
 Camera interpolate(const Camera& a, const Camera& b, float t) {
   const auto geometric = [t](float x, float y) { return x * std::pow(y / x, t); };
   Camera c = b;

@@ -7,6 +7,7 @@
 #include <glm/glm.hpp>
 #include <nlohmann/json.hpp>
 #include <tuple>
+#include <utility>
 
 #include "scene/scene.hpp"
 
@@ -37,6 +38,10 @@ struct Camera {
 Camera fit(const scene::Scene& scene, float aspect = 1.0f);
 // The same, looking from (yaw, pitch) in 3D and zoomed by `zoom` (< 1 zooms in): a shot's camera.
 Camera fit(const scene::Scene& scene, float aspect, float zoom, float yaw, float pitch);
+
+// The yaw and pitch of a camera that looks along `direction` from its positive side (a section
+// is seen so), the pitch kept short of the poles as orbit() keeps it.
+std::pair<float, float> yaw_pitch_along(const scene::Vec3& direction);
 
 // The camera a fraction t in [0, 1] of the way from a to b (same dimension): centres and targets
 // move linearly, scale and distance geometrically, the orbit along the shorter way round.

@@ -49,20 +49,42 @@ std::size_t positions_per_primitive(Primitive primitive) {
 
 }  // namespace
 
-void clip(Scene& scene, const Clip& clip) {
+Vec3 normal_of(const Clip& clip) {
   const float degrees = float(M_PI) / 180.0f;
   const float az = clip.azimuth * degrees, el = clip.elevation * degrees;
-  const Vec3 normal{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+  return {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+}
+
+Clip facing(const Vec3& direction) {
+  const float length = std::sqrt(dot(direction, direction));
+  Clip clip;
+  clip.position = 0.5f;
+  if (!(length > 0)) return clip;
+  const float degrees = 180.0f / float(M_PI);
+  clip.elevation = std::asin(std::clamp(direction[2] / length, -1.0f, 1.0f)) * degrees;
+  clip.azimuth = std::atan2(direction[1], direction[0]) * degrees;
+  return clip;
+}
+
+Clip_plane plane_of(const Scene& scene, const Clip& clip) {
+  Clip_plane plane;
+  plane.normal = normal_of(clip);
   // Where the plane crosses the samples' box: its corners' extent along the normal.
   float low = std::numeric_limits<float>::max(), high = std::numeric_limits<float>::lowest();
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3 p{corner & 1 ? scene.upper[0] : scene.lower[0],
                  corner & 2 ? scene.upper[1] : scene.lower[1],
                  corner & 4 ? scene.upper[2] : scene.lower[2]};
-    low = std::min(low, dot(normal, p));
-    high = std::max(high, dot(normal, p));
+    low = std::min(low, dot(plane.normal, p));
+    high = std::max(high, dot(plane.normal, p));
   }
-  const float offset = low + clip.position * (high - low);
+  plane.offset = low + clip.position * (high - low);
+  plane.extent = high - low;
+  return plane;
+}
+
+void clip(Scene& scene, const Clip& clip) {
+  const Clip_plane plane = plane_of(scene, clip);
   // A section shows the samples' region: what reaches far outside it (edges to the box corners,
   // Voronoi vertices of flat cells) would stand as a wall in front of it.
   const float margin =
@@ -77,10 +99,11 @@ void clip(Scene& scene, const Clip& clip) {
     return true;
   };
   for (auto& layer : scene.layers) {
+    if (layer.cut) continue;
     keep_primitives(layer, positions_per_primitive(layer.primitive),
                     [&](const Vec3* positions, std::size_t count, const Vec3& centre) {
-                      const float side = dot(normal, centre) - offset;
-                      if (side > 0 || (clip.slab > 0 && side < -clip.slab * (high - low)))
+                      const float side = plane.side(centre);
+                      if (side > 0 || (clip.slab > 0 && side < -clip.slab * plane.extent))
                         return false;
                       return std::all_of(positions, positions + count, near_samples);
                     });

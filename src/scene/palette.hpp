@@ -26,6 +26,10 @@ inline constexpr Color box_corner{0.10f, 0.10f, 0.10f};
 inline constexpr Color polar_ball{0.30f, 0.30f, 0.30f, 0.55f};
 // Translucent spheres in 3D, legible a few at a time (a stride, or a picked sample).
 inline constexpr Color polar_ball_3d{0.00f, 0.45f, 0.70f, 0.8f};
+// Inner and outer balls apart, near their poles' hues but lighter, so that a pole shows on
+// its ball (the opacity is the request's).
+inline constexpr Color inner_ball{0.85f, 0.40f, 0.25f};
+inline constexpr Color outer_ball{1.00f, 0.90f, 0.45f};
 // What is picked: the sample's Voronoi cell, its polar balls and their inscribed cubes, and the
 // poles (the sample's two, or the pole clicked).
 inline constexpr Color focus_cell{0.45f, 0.30f, 0.00f};
@@ -39,6 +43,11 @@ inline constexpr Color source_ball{0.70f, 0.55f, 0.00f, 0.9f};
 inline constexpr Color source_cube{0.50f, 0.05f, 0.10f};
 inline constexpr Color contradicted_pole{0.00f, 0.80f, 0.85f};  // cyan: apart from every label
 inline constexpr Color solid{0.55f, 0.70f, 0.90f};
+// In a section, the cells with a box corner: outside the samples' hull, quiet.
+inline constexpr Color section_outside{0.86f, 0.86f, 0.80f};
+// The cells' sides in a section: mid grey, as thin slivers crowd them together.
+inline constexpr Color section_edge{0.45f, 0.45f, 0.50f};
+inline constexpr Color cut_cell_edge{0.15f, 0.15f, 0.20f};  // the cells' edges on a section
 // What sculpting removed from the hull, beside what it kept (Kuo & Yau, Figs. 1 and 2).
 inline constexpr Color sculpted_away{0.95f, 0.60f, 0.55f};
 inline constexpr Color surface{0.78f, 0.80f, 0.86f};

@@ -36,6 +36,7 @@ struct Layer {
   bool lit = false;           // triangles: shaded by a light that follows the camera
   bool translucent = false;   // balls: filled translucent spheres instead of outlines
   bool in_legend = true;
+  bool cut = false;  // already cut at the clip plane through whole cells: clip() leaves it
 };
 
 // The stages a picture can show, in the order the algorithm runs.
@@ -63,6 +64,8 @@ const std::vector<Stage>& all_stages();  // of every method, in order
 // delaunay, surface; the alpha shape samples, delaunay, solid, surface.
 const std::vector<Stage>& stages_of(Method method, int dimension);
 bool has_stage(Method method, int dimension, Stage stage);
+// Throws std::invalid_argument naming the method's stages when it has no such stage.
+void require_stage(Method method, int dimension, Stage stage);
 const char* stage_id(Stage stage);     // "delaunay", "outer-concave", ...
 const char* stage_title(Stage stage);  // "Delaunay triangulation DT(S ∪ BBV)", ...
 bool parse_stage(const std::string& id, Stage& stage);
@@ -86,18 +89,25 @@ struct Request {
   int ball_every = 1;  // polar balls: draw those of every k-th pole only (legible medial circles)
   std::vector<std::string> layers;  // only these layer ids; empty = the stage's own choice
   bool clipped = false;  // 3D: leave out what lies beyond the plane `clip` (clipping.hpp)
+  // 3D: instead, a true section at the plane `clip` (section.hpp): the polygons of the cells
+  // it cuts, the Voronoi faces and the surface where it crosses them, the samples near it.
+  bool sectioned = false;
   Clip clip;
   // With a picked sample: only the cells, edges, faces, poles and balls near it (its few dozen
   // nearest samples), the picked sample's own cell, poles and balls whole.
   bool neighbourhood = false;
-  bool polar_balls = false;  // 3D: also the polar balls (every ball_every-th), at any stage
+  bool polar_balls = false;   // 3D: also the polar balls (every ball_every-th), at any stage
+  int ball_limit = 0;         // 3D: at most this many balls of each kind, evenly picked; 0: all
+  float ball_opacity = 0.8f;  // 3D: of the translucent spheres
 };
 
 struct Scene {
   int dimension = 3;
   std::string title;
   std::vector<Layer> layers;
-  Vec3 lower{}, upper{};  // bounds of the samples: what a camera fits by default
+  Vec3 lower{}, upper{};    // bounds of the samples: what a camera fits by default
+  bool seen_along = false;  // best seen looking along `along` (a section: its plane's normal)
+  Vec3 along{};
 };
 
 // The scene of one stage. Stages 1 and 6 need the triangulations kept in the reconstruction

@@ -9,8 +9,10 @@
 
 #include "clipping.hpp"
 #include "core/facet_orientation.hpp"
+#include "cut_cells.hpp"
 #include "palette.hpp"
 #include "scene.hpp"
+#include "section.hpp"
 #include "simplex_geometry.hpp"
 
 namespace sculpt::scene {
@@ -27,14 +29,7 @@ class Scene_builder {
   }
 
   Scene build() {
-    if (!has_stage(r_.options.method, D, request_.stage)) {
-      std::string stages;
-      for (Stage s : stages_of(r_.options.method, D))
-        stages += (stages.empty() ? "" : ", ") + std::string(stage_id(s));
-      throw std::invalid_argument(std::string("the method ") + to_string(r_.options.method) +
-                                  " has no stage '" + stage_id(request_.stage) +
-                                  "' (its stages: " + stages + ")");
-    }
+    require_stage(r_.options.method, D, request_.stage);
     switch (request_.stage) {
       case Stage::samples:
         if (!r_.given_samples.empty()) smoothing();
@@ -116,7 +111,10 @@ class Scene_builder {
     return std::move(scene_);
   }
 
-  bool wants_polar_balls() const { return request_.polar_balls || requested("polar-balls"); }
+  bool wants_polar_balls() const {
+    return request_.polar_balls || requested("polar-balls") || requested("inner-balls") ||
+           requested("outer-balls");
+  }
 
   // The neighbourhood view: what lies within 1.5 times the distance of the picked sample's
   // 4th (2D) or 12th (3D) nearest sample: its ring of neighbours and a little beyond.
@@ -254,10 +252,11 @@ class Scene_builder {
     return layer;
   }
 
+  // The polar balls: in 2D the paper's circles, one colour; in 3D translucent spheres, the
+  // inner and outer balls apart (by the labels known at this stage: at the labelling replay,
+  // those given so far; before it, the final ones), at most `ball_limit` of each kind.
   void polar_balls() {
-    Layer& layer = add("polar-balls", D == 2 ? "polar circles" : "polar balls", Primitive::balls,
-                       D == 2 ? palette::polar_ball : palette::polar_ball_3d, 1.0f);
-    layer.translucent = D == 3;  // outlines of overlapping spheres are unreadable in 3D
+    const auto& poles = r_.poles.poles;
     const int every = std::max(1, request_.ball_every);
     // In 3D, a ball larger than the samples' box would wrap the camera in a translucent fog:
     // those (outer poles far out) are left out, the medial balls inside and near stay.
@@ -265,10 +264,55 @@ class Scene_builder {
     for (int c = 0; c < 3; ++c)
       diagonal += (scene_.upper[c] - scene_.lower[c]) * (scene_.upper[c] - scene_.lower[c]);
     const float largest = D == 3 ? 0.5f * std::sqrt(diagonal) : INFINITY;
-    for (std::size_t p = 0; p < r_.poles.poles.size(); ++p) {
-      const auto& pole = r_.poles.poles[p];
-      if (pole.convex || p % every != 0) continue;  // convex poles' huge balls hide everything
-      if (pole.radius > largest) continue;
+    std::vector<int> shown;
+    for (std::size_t p = 0; p < poles.size(); ++p) {
+      // Convex poles' huge balls hide everything.
+      if (!poles[p].convex && p % every == 0 && poles[p].radius <= largest) shown.push_back(int(p));
+    }
+    if constexpr (D == 2) {
+      balls_layer("polar-balls", "polar circles", palette::polar_ball, shown);
+    } else {
+      const std::vector<Label> labels = labels_at_this_stage();
+      std::vector<int> of_kind[3];
+      for (int p : shown) of_kind[labels.empty() ? 0 : int(labels[p])].push_back(p);
+      const auto translucent = [&](Color c, float share = 1) {
+        return Color{c.r, c.g, c.b, share * request_.ball_opacity};
+      };
+      balls_layer("polar-balls", labels.empty() ? "polar balls" : "polar balls not yet labelled",
+                  translucent(palette::polar_ball_3d), of_kind[int(Label::unlabelled)]);
+      balls_layer("inner-balls", "inner polar balls", translucent(palette::inner_ball),
+                  of_kind[int(Label::inner)]);
+      // Fainter: the outer balls are the larger, and would hide the medial axis inside.
+      balls_layer("outer-balls", "outer polar balls", translucent(palette::outer_ball, 0.35f),
+                  of_kind[int(Label::outer)]);
+    }
+  }
+
+  // The labels the poles have at the stage shown; empty for a method that labels none.
+  std::vector<Label> labels_at_this_stage() const {
+    const auto& events = r_.propagation.events;
+    if (r_.propagation.labels.empty()) return {};
+    if (request_.stage != Stage::propagation || request_.step < 0) return r_.propagation.labels;
+    std::vector<Label> labels(r_.poles.poles.size(), Label::unlabelled);
+    const std::size_t shown = std::min<std::size_t>(request_.step, events.size());
+    for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
+    return labels;
+  }
+
+  // A layer of the balls of `poles`, thinned to `ball_limit` evenly (an empty one stays out of
+  // the legend; the layer polar-balls names them all, as --layers takes it).
+  void balls_layer(const char* id, const std::string& label, Color color,
+                   const std::vector<int>& poles) {
+    const std::size_t limit = request_.ball_limit > 0 ? std::size_t(request_.ball_limit) : 0;
+    const std::size_t count = limit > 0 ? std::min(limit, poles.size()) : poles.size();
+    Layer& layer = add(id,
+                       label + (count < poles.size() ? " (" + std::to_string(count) + " of " +
+                                                           std::to_string(poles.size()) + ")"
+                                                     : ""),
+                       Primitive::balls, color, 1.0f);
+    layer.translucent = D == 3;  // outlines of overlapping spheres are unreadable in 3D
+    for (std::size_t k = 0; k < count; ++k) {
+      const auto& pole = r_.poles.poles[poles[k * poles.size() / count]];
       layer.positions.push_back(vec(pole.center));
       layer.radii.push_back(float(pole.radius));
     }
@@ -508,50 +552,79 @@ class Scene_builder {
         }
       }
     } else {
-      // Shrunk, the front half cut away, so that the inside of the solid shows.
-      const bool alpha = r_.options.method == Method::alpha_shape;
-      const bool tight = r_.options.method == Method::tight_cocone;
-      if (r_.options.method == Method::boissonnat) {
-        scene_.title = "Boissonnat: the cells left when every sample is on the boundary";
-      }
-      if (alpha) scene_.title = "Alpha solid: the cells of circumradius below alpha";
-      if (tight) scene_.title = "Tight co-cone: the cells left after peeling";
-      Layer& layer = add("solid",
-                         alpha   ? "alpha solid (tetrahedra)"
-                         : tight ? "cells not peeled (tetrahedra)"
-                                 : "sculpted solid (all-sample tetrahedra)",
-                         Primitive::triangles, palette::solid, 1.0f);
-      layer.lit = true;
-      shrunk_back_half(r_.solid, layer);
-      if (!removed.empty()) {
-        Layer& away = add("sculpted-away",
-                          "sculpted away (" + std::to_string(removed.size()) + " tetrahedra)",
-                          Primitive::triangles, palette::sculpted_away, 1.0f);
-        away.lit = true;
-        shrunk_back_half(removed, away);
-      }
+      solid_cut_through_whole_cells(removed);
     }
   }
 
-  // Tetrahedra shrunk towards their centroids, those in the front half (+z, towards the default
-  // camera) left out, so the inside shows.
-  void shrunk_back_half(const std::vector<Cell<D>>& cells, Layer& layer) const {
-    const float cut = 0.5f * (scene_.lower[2] + scene_.upper[2]);
-    for (const auto& cell : cells) {
-      Vec3 corner[4], centroid{0, 0, 0};
-      for (int i = 0; i < 4; ++i) {
-        corner[i] = vec(r_.sites[cell[i]]);
-        for (int k = 0; k < 3; ++k) centroid[k] += corner[i][k] / 4;
-      }
-      if (centroid[2] > cut) continue;
-      for (auto& c : corner) {
-        for (int k = 0; k < 3; ++k) c[k] = centroid[k] + 0.75f * (c[k] - centroid[k]);
-      }
-      for (int skip = 0; skip < 4; ++skip) {
-        for (int i = 0; i < 4; ++i) {
-          if (i != skip) layer.positions.push_back(corner[i]);
+  // The solid and what was sculpted away, cut at a plane through whole cells: the user's clip,
+  // or else the middle of the box across z with the half towards the default camera cut away,
+  // so that the inside shows. The title says which (no half is ever hidden unsaid).
+  void solid_cut_through_whole_cells(const std::vector<Cell<D>>& removed) {
+    const bool alpha = r_.options.method == Method::alpha_shape;
+    const bool tight = r_.options.method == Method::tight_cocone;
+    if (r_.options.method == Method::boissonnat)
+      scene_.title = "Boissonnat: the cells left when every sample is on the boundary";
+    if (alpha) scene_.title = "Alpha solid: the cells of circumradius below alpha";
+    if (tight) scene_.title = "Tight co-cone: the cells left after peeling";
+    Clip middle;
+    middle.elevation = 90;  // the normal +z: the upper half goes
+    const Clip& clip = request_.clipped ? request_.clip : middle;
+    scene_.title += request_.clipped ? "; whole cells, cut at the clip plane"
+                                     : "; whole cells, those above mid z cut away";
+    const Clip_plane plane = plane_of(scene_, clip);
+    const auto before_the_plane = [&](const std::vector<Cell<D>>& cells) {
+      std::vector<bool> kept(cells.size());
+      for (std::size_t c = 0; c < cells.size(); ++c) {
+        Vec3 centroid{0, 0, 0};
+        for (int v : cells[c]) {
+          const Vec3 p = vec(r_.sites[v]);
+          for (int k = 0; k < 3; ++k) centroid[k] += p[k] / 4;
         }
+        const float side = plane.side(centroid);
+        kept[c] = side <= 0 && (clip.slab <= 0 || side >= -clip.slab * plane.extent);
       }
+      return kept;
+    };
+    const Shown_faces solid = shown_faces(r_.solid, before_the_plane(r_.solid));
+    faces_layer(solid.faces, "solid",
+                alpha   ? "alpha solid (tetrahedra)"
+                : tight ? "cells not peeled (tetrahedra)"
+                        : "sculpted solid (all-sample tetrahedra)",
+                palette::solid);
+    std::vector<Face> on_cut = solid.on_cut;
+    if (!removed.empty()) {
+      // The faces between the solid and what was sculpted away are the solid's to draw.
+      const Shown_faces away =
+          shown_faces(removed, before_the_plane(removed), sorted_faces(solid.faces));
+      faces_layer(away.faces, "sculpted-away",
+                  "sculpted away (" + std::to_string(removed.size()) + " tetrahedra)",
+                  palette::sculpted_away);
+      on_cut.insert(on_cut.end(), away.on_cut.begin(), away.on_cut.end());
+    }
+    // A few thousand cut cells' edges tell the tetrahedra apart; more are a dark fog.
+    if (on_cut.size() > 2000 && !requested("cut-cells")) return;
+    Layer& edges =
+        add("cut-cells", "edges of the cells cut", Primitive::lines, palette::cut_cell_edge, 1.0f);
+    edges.cut = true;
+    std::vector<std::pair<int, int>> pairs;
+    for (const auto& f : on_cut) {
+      for (int i = 0; i < 3; ++i) pairs.push_back(std::minmax(f[i], f[(i + 1) % 3]));
+    }
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    for (const auto& [a, b] : pairs) {
+      edges.positions.push_back(vec(r_.sites[a]));
+      edges.positions.push_back(vec(r_.sites[b]));
+    }
+  }
+
+  void faces_layer(const std::vector<Face>& faces, const char* id, const std::string& label,
+                   Color color) {
+    Layer& layer = add(id, label, Primitive::triangles, color, 1.0f);
+    layer.lit = true;
+    layer.cut = true;
+    for (const auto& face : faces) {
+      for (int v : face) layer.positions.push_back(vec(r_.sites[v]));
     }
   }
 
@@ -760,12 +833,13 @@ class Scene_builder {
                                     " has no layer '" + id + "' (it has: " + ids + ")");
       }
     }
+    // The layer polar-balls stands for every polar ball, inner and outer ones too.
+    std::vector<std::string> ids = request_.layers;
+    if (requested("polar-balls")) ids.insert(ids.end(), {"inner-balls", "outer-balls"});
     std::vector<Layer> kept;
     for (auto& layer : scene_.layers) {
-      if (std::find(request_.layers.begin(), request_.layers.end(), layer.id) !=
-          request_.layers.end()) {
+      if (std::find(ids.begin(), ids.end(), layer.id) != ids.end())
         kept.push_back(std::move(layer));
-      }
     }
     scene_.layers = std::move(kept);
   }
@@ -784,6 +858,7 @@ Scene build_scene(const Reconstruction<2>& reconstruction, const Request& reques
 }
 
 Scene build_scene(const Reconstruction<3>& reconstruction, const Request& request) {
+  if (request.sectioned) return build_section(reconstruction, request);
   Scene scene = Scene_builder<3>(reconstruction, request).build();
   if (request.clipped) clip(scene, request.clip);
   return scene;

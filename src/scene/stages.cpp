@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The names of the stages, as the command line, the viewer's stepper and the figures use them.
 #include <algorithm>
+#include <stdexcept>
 
 #include "scene.hpp"
 
@@ -140,6 +141,15 @@ bool parse_stage(const std::string& id, Stage& stage) {
     }
   }
   return false;
+}
+
+void require_stage(Method method, int dimension, Stage stage) {
+  if (has_stage(method, dimension, stage)) return;
+  std::string stages;
+  for (Stage s : stages_of(method, dimension))
+    stages += (stages.empty() ? "" : ", ") + std::string(stage_id(s));
+  throw std::invalid_argument(std::string("the method ") + to_string(method) + " has no stage '" +
+                              stage_id(stage) + "' (its stages: " + stages + ")");
 }
 
 }  // namespace sculpt::scene

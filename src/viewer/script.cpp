@@ -78,8 +78,8 @@ std::optional<double> real(const std::string& word) {
 
 // Commands that take more than one argument parse their own.
 bool takes_arguments(const std::string& command) {
-  for (const char* name : {"export", "export-animation", "clip", "add-point", "move-point",
-                           "stroke", "layer", "camera"}) {
+  for (const char* name : {"export", "export-animation", "clip", "section", "add-point",
+                           "move-point", "stroke", "layer", "camera"}) {
     if (command == name) return true;
   }
   return false;
@@ -248,6 +248,7 @@ std::string Script::before_frame(Viewer& viewer) {
       std::cout
           << "commands: example NAME, open FILE, method NAME, stage ID, next, previous, "
              "step K, pick-sample K, pick-pole K, clip POS AZ EL [SLAB] | off, "
+             "section POS AZ EL | off, "
              "neighbourhood on|off, polar-balls EVERY|off, follow on|off, layer ID on|off, "
              "present on|off, picture-scale S, kind closed|bordered|automatic, "
              "camera fit|zoom F|orbit YAW PITCH|pan X Y|save F|load F, edit on|off, "
@@ -315,6 +316,26 @@ std::string Script::before_frame(Viewer& viewer) {
           fail("'" + line +
                "': expected clip POSITION AZIMUTH ELEVATION [SLAB] (position 0 to 1, angles "
                "in degrees, slab a share of the box) or clip off");
+        }
+      }
+    } else if (command == "section") {
+      // section POSITION AZIMUTH ELEVATION, or section off
+      if (viewer.shown_dimension() == 2) {
+        fail("'" + line + "': a section cuts 3D stages; this is a curve");
+      } else if (argument == "off") {
+        viewer.clear_section();
+      } else {
+        scene::Clip plane;
+        std::istringstream numbers(argument + " " + extra);
+        numbers >> plane.position >> plane.azimuth;
+        std::string more;
+        if (numbers && (words >> plane.elevation) && !(words >> more) && plane.position >= 0 &&
+            plane.position <= 1 && std::isfinite(plane.azimuth) && std::isfinite(plane.elevation)) {
+          viewer.set_section(plane);
+        } else {
+          fail("'" + line +
+               "': expected section POSITION AZIMUTH ELEVATION (position 0 to 1 across the "
+               "box, the plane's normal in degrees) or section off");
         }
       }
     } else if (command == "pick-sample") {

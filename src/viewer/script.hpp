@@ -13,6 +13,7 @@
 //   method crust        reconstruct the loaded input again with another method
 //   step 25             propagation: show the first 25 labelling events
 //   clip 0.5 30 60      3D: cut away beyond a plane (position 0..1, azimuth, elevation); clip off
+//   section 0.5 0 90    3D: the stage in section at that plane, seen along it; section off
 //   pick-sample 10      select a sample (pick-pole N: a pole)
 //   explain             print the Explanation panel's paragraph for the stage on screen
 //   stats               print the shown reconstruction's statistics, one JSON line

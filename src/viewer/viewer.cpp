@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "io/destinations.hpp"
+#include "scene/clipping.hpp"
 #include "shapes/shapes.hpp"
 #include "viewer_internals.hpp"
 
@@ -218,6 +219,19 @@ void Viewer::zoom_camera(float factor) {
   camera_move_.reset();
   camera_is_panel_camera_ = false;
   camera_.zoom(factor);
+}
+
+void Viewer::set_section(const scene::Clip& plane) {
+  request_.sectioned = true;
+  request_.clip = plane;
+  scene_dirty_ = true;
+  look_along_the_section();
+}
+
+void Viewer::look_along_the_section() {
+  camera_move_.reset();
+  camera_is_panel_camera_ = false;
+  std::tie(camera_.yaw, camera_.pitch) = render::yaw_pitch_along(scene::normal_of(request_.clip));
 }
 
 void Viewer::reset_camera() {

@@ -77,6 +77,14 @@ class Viewer {
     request_.clipped = false;
     scene_dirty_ = true;
   }
+  // 3D: draw the stage in section at a plane (scene::Request::sectioned), the camera turned to
+  // look along its normal; or back to the stage whole.
+  void set_section(const scene::Clip& plane);
+  void look_along_the_section();  // the camera turned to look along the plane's normal
+  void clear_section() {
+    request_.sectioned = false;
+    scene_dirty_ = true;
+  }
   // Only what lies near the picked sample (scene::Request::neighbourhood).
   void set_neighbourhood(bool on) {
     request_.neighbourhood = on;

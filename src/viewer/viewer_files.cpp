@@ -52,6 +52,8 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
   shot.wireframe = request_.wireframe;
   shot.smooth = request_.smooth;
   shot.ball_every = request_.ball_every;
+  shot.ball_limit = request_.ball_limit;
+  shot.ball_opacity = request_.ball_opacity;
   shot.polar_balls = request_.polar_balls;
   shot.neighbourhood = request_.neighbourhood && request_.focus_sample >= 0;
   shot.size = std::to_string(width) + "x" + std::to_string(height);
@@ -60,11 +62,16 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
     shot.animate = animate;
     shot.frames = frames;
   }
-  if (request_.clipped && reconstruction_->index() == 1) {  // a cut-away is for 3D scenes
+  if ((request_.clipped || request_.sectioned) && reconstruction_->index() == 1) {  // 3D only
     const scene::Clip& c = request_.clip;
-    std::ostringstream clip;
-    clip << c.position << ',' << c.azimuth << ',' << c.elevation << ',' << c.slab;
-    shot.clip = clip.str();
+    std::ostringstream plane;
+    plane << c.position << ',' << c.azimuth << ',' << c.elevation;
+    if (request_.sectioned) {
+      shot.section = plane.str();
+    } else {
+      plane << ',' << c.slab;
+      shot.clip = plane.str();
+    }
   }
   nlohmann::json camera;
   if (camera_is_panel_camera_ && !panel_on_screen().empty()) {

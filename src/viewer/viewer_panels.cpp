@@ -352,6 +352,15 @@ void Viewer::draw_clip_controls() {
                                 ImGuiSliderFlags_Logarithmic);
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Thousands of balls hide one another: draw every k-th pole's");
+    ImGui::SetNextItemWidth(120);
+    changed |=
+        ImGui::SliderInt("at most", &request_.ball_limit, 0, 2000,
+                         request_.ball_limit > 0 ? "%d" : "all", ImGuiSliderFlags_Logarithmic);
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("At most this many inner and this many outer balls, evenly picked");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(120);
+    changed |= ImGui::SliderFloat("opacity", &request_.ball_opacity, 0.1f, 1.0f, "%.2f");
   }
   changed |= ImGui::Checkbox("cut at a plane", &request_.clipped);
   if (ImGui::IsItemHovered())
@@ -359,16 +368,31 @@ void Viewer::draw_clip_controls() {
         "Leave out every cell, edge, face and ball whose centre lies beyond the "
         "plane, to see inside the Delaunay triangulation, the Voronoi diagram or "
         "the solid");
-  if (request_.clipped) {
+  ImGui::SameLine();
+  if (ImGui::Checkbox("section", &request_.sectioned)) {
+    changed = true;
+    if (request_.sectioned) look_along_the_section();
+  }
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "Draw the stage in the plane: each cell it cuts as the polygon of the cut, filled by "
+        "what the cell is (inside or outside the hull, kept or sculpted away), the Voronoi "
+        "faces and the surface where it crosses them, the samples near it");
+  if (request_.clipped || request_.sectioned) {
     auto& clip = request_.clip;
+    bool turned = false;
     changed |= ImGui::SliderFloat("position", &clip.position, 0.0f, 1.0f, "%.2f");
-    changed |= ImGui::SliderFloat("azimuth", &clip.azimuth, -180.0f, 180.0f, "%.0f deg");
-    changed |= ImGui::SliderFloat("elevation", &clip.elevation, -90.0f, 90.0f, "%.0f deg");
-    changed |= ImGui::SliderFloat("slab", &clip.slab, 0.0f, 0.5f, clip.slab > 0 ? "%.2f" : "off");
-    if (ImGui::IsItemHovered())
-      ImGui::SetTooltip(
-          "Keep only a slab this thick before the plane (a share of the box): a "
-          "section of the cells instead of a half");
+    turned |= ImGui::SliderFloat("azimuth", &clip.azimuth, -180.0f, 180.0f, "%.0f deg");
+    turned |= ImGui::SliderFloat("elevation", &clip.elevation, -90.0f, 90.0f, "%.0f deg");
+    if (turned && request_.sectioned) look_along_the_section();
+    changed |= turned;
+    if (request_.clipped && !request_.sectioned) {
+      changed |= ImGui::SliderFloat("slab", &clip.slab, 0.0f, 0.5f, clip.slab > 0 ? "%.2f" : "off");
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "Keep only a slab this thick before the plane (a share of the box): the cells "
+            "near the plane instead of a half");
+    }
   }
   if (changed) scene_dirty_ = true;
 }
