@@ -325,6 +325,23 @@ TEST(Viewer, ASectionShowsTheCellsKeptAndSculptedAway) {
   std::cout << "section: " << kept << " of the view kept cells, " << away << " sculpted away\n";
 }
 
+// The colour-blind palette redraws the picture: the paper's red poles become vermillion.
+TEST(Viewer, TheColourBlindPaletteRedrawsThePicture) {
+  const std::string paper = testing::output_path("viewer-palette-paper.png"),
+                    safe = testing::output_path("viewer-palette-safe.png");
+  ASSERT_EQ(
+      run_viewer_script("palette", "example star\nwait\nstage poles\nframes 2\nscreenshot " +
+                                       paper + "\npalette colour-blind\nframes 2\nscreenshot " +
+                                       safe + "\npalette pink\nquit\n"),
+      1);  // the last command is refused: no such palette
+  const scene::Color vermillion{0.835f, 0.369f, 0.0f};
+  const double before = share_of_colour(render::read_png(paper), vermillion);
+  const double after = share_of_colour(render::read_png(safe), vermillion);
+  EXPECT_EQ(before, 0.0);
+  EXPECT_GT(after, 0.0005);
+  EXPECT_GT(share_of_colour(render::read_png(paper), scene::palette::pole), 0.0005);
+}
+
 // A picture exported from the viewer is the view on screen: the cut-away and the neighbourhood
 // go with it, and the layers are those of the stage just chosen, before a frame has drawn it.
 TEST(Viewer, ExportedPicturesKeepTheCutAwayAndTheNeighbourhood) {

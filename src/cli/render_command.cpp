@@ -71,6 +71,12 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->check(CLI::IsMember({"auto", "jet", "none"}));
   render->add_option("--layers", shot.layers, "Only these layers (comma separated)")
       ->delimiter(',');
+  render
+      ->add_option("--palette", shot.palette,
+                   "Colours: paper (the paper's) or colour-blind (every pair of layers apart "
+                   "with deuteranopia and protanopia too)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"paper", "colour-blind", "color-blind"}));
   render->add_option("--section", shot.section,
                      "3D: a true section at a plane, POSITION,AZIMUTH,ELEVATION (as --clip): the "
                      "cells it cuts as polygons filled by what they are, the Voronoi faces and "

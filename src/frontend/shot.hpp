@@ -35,6 +35,7 @@ struct Shot {
   double zoom = 1.0;               // applied to the fitted camera (< 1 zooms in)
   int ball_every = 1;              // polar balls of every k-th pole only
   bool polar_balls = false;        // 3D: the polar balls at any stage (every ball_every-th)
+  std::string palette = "paper";  // the colour scheme: paper or colour-blind (scene/colours.hpp)
   int ball_limit = 0;              // 3D: at most this many balls of each kind (0: all)
   double ball_opacity = 0.8;       // 3D: of the translucent balls
   bool neighbourhood = false;      // only what lies near the focus sample (scene::Request)

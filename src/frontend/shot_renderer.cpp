@@ -51,8 +51,7 @@ const Any_reconstruction& Shot_renderer::reconstruction(const Shot& shot) {
   const std::string key = shot.input + "|" + shot.example + "|" + to_string(kind_of(shot)) + "|" +
                           std::to_string(shot.dimension) + "|" + std::to_string(shot.box_factor) +
                           "|" + shot.rule + "|" + shot.clean + "|" + shot.method + "|" +
-                          std::to_string(shot.alpha) +
-                          "|" + std::to_string(shot.merge_duplicates);
+                          std::to_string(shot.alpha) + "|" + std::to_string(shot.merge_duplicates);
   auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
   const Options options = options_of(shot);

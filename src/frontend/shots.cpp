@@ -24,6 +24,7 @@
 #include "render/animation.hpp"
 #include "render/camera.hpp"
 #include "scene/clipping.hpp"
+#include "scene/colours.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt::frontend {
@@ -201,6 +202,7 @@ Shot shot_from_json(const nlohmann::json& j, const std::string& name) {
   shot.ball_every = static_cast<int>(f.whole("ball_every", 1, 1, most));
   shot.polar_balls = f.flag("polar_balls", false);
   shot.ball_limit = static_cast<int>(f.whole("ball_limit", 0, 0, most));
+  shot.palette = f.text("palette", shot.palette);
   shot.ball_opacity = f.number("ball_opacity", shot.ball_opacity);
   shot.neighbourhood = f.flag("neighbourhood", false);
   shot.yaw = f.number("yaw", shot.yaw);
@@ -281,6 +283,10 @@ scene::Request request_of(const Shot& shot) {
   request.ball_every = shot.ball_every;
   request.polar_balls = shot.polar_balls;
   request.ball_limit = shot.ball_limit;
+  scene::Colours colours = scene::Colours::paper;
+  if (!scene::parse_colours(shot.palette, colours))
+    throw io::Error("no palette '" + shot.palette + "' (palettes: paper, colour-blind)");
+  request.colour_blind = colours == scene::Colours::colour_blind;
   request.ball_opacity = float(shot.ball_opacity);
   if (shot.neighbourhood && shot.focus_sample < 0)
     throw io::Error("the neighbourhood view needs a picked sample (focus_sample)");

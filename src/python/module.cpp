@@ -685,7 +685,7 @@ next progress report.)");
          int focus_sample, int focus_pole, std::vector<std::string> layers, bool wireframe,
          bool smooth, bool legend, double zoom, int ball_every, double yaw, double pitch,
          std::optional<std::vector<double>> clip, std::optional<std::vector<double>> section,
-         bool polar_balls, int ball_limit, double ball_opacity) {
+         bool polar_balls, int ball_limit, double ball_opacity, const std::string& palette) {
         frontend::Shot shot;
         shot.stage = stage;
         shot.size = size_of(size);
@@ -714,6 +714,7 @@ next progress report.)");
         if (ball_limit < 0) throw Input_error("ball_limit is a count of balls, 0 for all");
         shot.ball_limit = ball_limit;
         shot.ball_opacity = ball_opacity;
+        shot.palette = palette;
         return render_stage(result, shot);
       },
       py::arg("result"), py::arg("stage") = shot_defaults.stage,
@@ -728,6 +729,7 @@ next progress report.)");
       py::arg("section") = py::none(), py::arg("polar_balls") = shot_defaults.polar_balls,
       py::arg("ball_limit") = shot_defaults.ball_limit,
       py::arg("ball_opacity") = shot_defaults.ball_opacity,
+      py::arg("palette") = shot_defaults.palette,
       R"(A picture of a stage, as `sculpt render` and the viewer draw it: an (height, width, 4)
 uint8 RGBA array (matplotlib's imshow shows it).
 
@@ -752,7 +754,9 @@ section       3D: (position, azimuth, elevation) draws the stage in that plane i
               surface where it crosses them, the samples near it; seen along the plane
 polar_balls   3D: the polar balls at any stage, inner and outer apart
 ball_limit    3D: at most this many inner and this many outer balls (0: all)
-ball_opacity  3D: the balls' opacity, above 0 and at most 1 (the outer ones fainter))");
+ball_opacity  3D: the balls' opacity, above 0 and at most 1 (the outer ones fainter)
+palette       'paper' (the paper's colours) or 'colour-blind' (every pair of layers apart with
+              deuteranopia and protanopia too))");
 
   m.def("write", &write_result, py::arg("result"), py::arg("path"), py::arg("solid") = py::none(),
         py::arg("ascii") = false, py::arg("normals") = py::none(), py::arg("colors") = py::none(),

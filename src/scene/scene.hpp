@@ -96,6 +96,7 @@ struct Request {
   // With a picked sample: only the cells, edges, faces, poles and balls near it (its few dozen
   // nearest samples), the picked sample's own cell, poles and balls whole.
   bool neighbourhood = false;
+  bool colour_blind = false;  // the colour-blind-safe scheme (colours.hpp), not the paper's
   bool polar_balls = false;   // 3D: also the polar balls (every ball_every-th), at any stage
   int ball_limit = 0;         // 3D: at most this many balls of each kind, evenly picked; 0: all
   float ball_opacity = 0.8f;  // 3D: of the translucent spheres

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "clipping.hpp"
+#include "colours.hpp"
 #include "core/facet_orientation.hpp"
 #include "cut_cells.hpp"
 #include "palette.hpp"
@@ -854,13 +855,16 @@ class Scene_builder {
 }  // namespace
 
 Scene build_scene(const Reconstruction<2>& reconstruction, const Request& request) {
-  return Scene_builder<2>(reconstruction, request).build();
+  Scene scene = Scene_builder<2>(reconstruction, request).build();
+  if (request.colour_blind) recolour(scene, Colours::colour_blind);
+  return scene;
 }
 
 Scene build_scene(const Reconstruction<3>& reconstruction, const Request& request) {
-  if (request.sectioned) return build_section(reconstruction, request);
-  Scene scene = Scene_builder<3>(reconstruction, request).build();
-  if (request.clipped) clip(scene, request.clip);
+  Scene scene = request.sectioned ? build_section(reconstruction, request)
+                                  : Scene_builder<3>(reconstruction, request).build();
+  if (request.clipped && !request.sectioned) clip(scene, request.clip);
+  if (request.colour_blind) recolour(scene, Colours::colour_blind);
   return scene;
 }
 

@@ -17,6 +17,7 @@
 
 #include "lessons.hpp"
 #include "platform/platform.hpp"
+#include "readable_style.hpp"
 #include "render/image.hpp"
 
 namespace sculpt::viewer {
@@ -48,6 +49,7 @@ App::App(GLFWwindow* window, float font_scale) : window_(window) {
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
   ImGui::GetIO().FontGlobalScale = font_scale;
   ImGui::StyleColorsDark();
+  use_readable_colours(ImGui::GetStyle());
   // Ours first: ImGui's backend installs its own callback and calls the one it replaced.
   glfwSetKeyCallback(window, on_key);
   ImGui_ImplGlfw_InitForOpenGL(window, true);
@@ -105,7 +107,8 @@ void App::draw_lesson() {
                    ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::PushTextWrapPos(width - ImGui::GetStyle().WindowPadding.x);
-  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "Lesson: %s", lesson_title_.c_str());
+  ImGui::TextColored(imgui_colour(panel_colours::current_line), "Lesson: %s",
+                     lesson_title_.c_str());
   ImGui::TextDisabled("step %d of %d", std::min(script_->step(), script_->steps()),
                       script_->steps());
   ImGui::SameLine();

@@ -17,6 +17,7 @@
 #include "io/temporary_files.hpp"
 #include "lessons.hpp"
 #include "platform/platform.hpp"
+#include "scene/colours.hpp"
 #include "scene/scene.hpp"
 
 namespace {
@@ -105,6 +106,13 @@ int main(int argc, char** argv) {
       ->check(sculpt::frontend::scale_from(0.5, 4.0));
   bool present = false;
   float picture_scale = 1.0f;
+  std::string palette = "paper";
+  command_line
+      .add_option("--palette", palette,
+                  "Colours: paper or colour-blind (every pair of layers apart with "
+                  "deuteranopia and protanopia too; also in the View menu)")
+      ->capture_default_str()
+      ->check(CLI::IsMember(sculpt::scene::colours_names()));
   command_line.add_flag("--present", present,
                         "Presentation mode: no panel, the legend in the picture (F5 toggles it)");
   command_line
@@ -193,6 +201,7 @@ int main(int argc, char** argv) {
   sculpt::viewer::Viewer& viewer = app->viewer();
   viewer.set_presenting(present);
   viewer.set_picture_scale(picture_scale);
+  viewer.set_colour_blind(palette == "colour-blind");
   try {
     // The first view, before anything a script or --frames does with it.
     std::string first_view;

@@ -4,6 +4,7 @@
 #include "figures/paper_figures.hpp"
 #include "frontend/closest_name.hpp"
 #include "io/point_reader.hpp"
+#include "scene/colours.hpp"
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -250,7 +251,8 @@ std::string Script::before_frame(Viewer& viewer) {
              "step K, pick-sample K, pick-pole K, clip POS AZ EL [SLAB] | off, "
              "section POS AZ EL | off, "
              "neighbourhood on|off, polar-balls EVERY|off, follow on|off, layer ID on|off, "
-             "present on|off, picture-scale S, kind closed|bordered|automatic, "
+             "present on|off, palette paper|colour-blind, picture-scale S, kind "
+             "closed|bordered|automatic, "
              "camera fit|zoom F|orbit YAW PITCH|pan X Y|save F|load F, edit on|off, "
              "add-point X Y, move-point K X Y, delete-point K, stroke SPACING X Y X Y... "
              "(SPACING a share of the box diagonal), undo, "
@@ -468,6 +470,13 @@ std::string Script::before_frame(Viewer& viewer) {
       }
     } else if (command == "follow") {
       on_off([&](bool on) { viewer.set_follow(on); });
+    } else if (command == "palette") {
+      scene::Colours colours;
+      if (scene::parse_colours(argument, colours)) {
+        viewer.set_colour_blind(colours == scene::Colours::colour_blind);
+      } else {
+        fail("'" + line + "': expected palette paper or palette colour-blind");
+      }
     } else if (command == "present") {
       on_off([&](bool on) { viewer.set_presenting(on); });
     } else if (command == "picture-scale") {

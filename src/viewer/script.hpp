@@ -27,6 +27,7 @@
 //                       save cam.json, load cam.json
 //   follow off          the replay's camera stays put (on: it keeps the pole just labelled in view)
 //   present on          presentation mode: no panel, the legend in the picture (off: back)
+//   palette colour-blind  colours apart with deuteranopia and protanopia too (paper: the paper's)
 //   picture-scale 2     points, lines and the picture's legend twice their size (0.5 to 4)
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included

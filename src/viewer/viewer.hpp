@@ -81,6 +81,12 @@ class Viewer {
   // look along its normal; or back to the stage whole.
   void set_section(const scene::Clip& plane);
   void look_along_the_section();  // the camera turned to look along the plane's normal
+  // The colour-blind-safe colours (scene/colours.hpp), or the paper's.
+  void set_colour_blind(bool on) {
+    request_.colour_blind = on;
+    scene_dirty_ = true;
+  }
+  bool colour_blind() const { return request_.colour_blind; }
   void clear_section() {
     request_.sectioned = false;
     scene_dirty_ = true;

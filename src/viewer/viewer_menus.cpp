@@ -56,6 +56,13 @@ void Viewer::draw_menu() {
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("The panel hides, the picture takes the window with its legend in it");
     }
+    if (ImGui::MenuItem("Colour-blind palette", nullptr, request_.colour_blind))
+      set_colour_blind(!request_.colour_blind);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "Colours every pair of layers apart with deuteranopia and protanopia too, in place "
+          "of the paper's red and green");
+    }
     // Projector mode: text large enough for the back of a room, points and lines to match.
     ImGui::SliderFloat("text size", &ImGui::GetIO().FontGlobalScale, 0.5f, 3.0f, "%.1fx");
     ImGui::SliderFloat("picture scale", &picture_scale_, smallest_picture_scale,

@@ -8,6 +8,7 @@
 
 #include "frontend/explanations.hpp"
 #include "frontend/pseudo_code.hpp"
+#include "readable_style.hpp"
 #include "viewer.hpp"
 #include "viewer_internals.hpp"
 
@@ -21,7 +22,7 @@ void Viewer::draw_panel(int height) {
   ImGui::SetNextWindowSize(ImVec2(panel_width(), float(height) - top), ImGuiCond_Always);
   ImGui::Begin("Sculpt", nullptr,
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-  if (last_job_failed_) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.40f, 1.0f));
+  if (last_job_failed_) ImGui::PushStyleColor(ImGuiCol_Text, imgui_colour(panel_colours::failure));
   ImGui::TextWrapped("%s", message_.c_str());
   if (last_job_failed_) ImGui::PopStyleColor();
   if (job_->running()) {  // not while the view merely moves to a tour panel
@@ -105,8 +106,8 @@ void Viewer::draw_failure_notice(int width, int height) {
   const float y = reconstruction_ ? top : std::max(top, 0.4f * float(height));
   ImGui::SetNextWindowPos(ImVec2(left + 0.5f * (picture_width - box_width), y), ImGuiCond_Always);
   ImGui::SetNextWindowSize(ImVec2(box_width, 0), ImGuiCond_Always);
-  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.70f, 0.08f, 0.06f, 0.95f));
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 1, 1, 1));
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, imgui_colour(panel_colours::failure_notice));
+  ImGui::PushStyleColor(ImGuiCol_Text, imgui_colour(panel_colours::text));
   ImGui::Begin("##failure", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
@@ -180,11 +181,11 @@ void Viewer::draw_pseudo_code() {
                     ImVec2(0, std::min(all_lines, 0.45f * ImGui::GetWindowHeight())));
   for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
     if (i == current) {
-      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "> %s", lines[i]);
+      ImGui::TextColored(imgui_colour(panel_colours::current_line), "> %s", lines[i]);
       if (current != shown_code_line_ && !ImGui::IsItemVisible()) ImGui::SetScrollHereY(0.5f);
       shown_code_line_ = current;
     } else if (std::binary_search(lit.begin(), lit.end(), i)) {
-      ImGui::TextColored(ImVec4(0.95f, 0.85f, 0.6f, 1.0f), "  %s", lines[i]);
+      ImGui::TextColored(imgui_colour(panel_colours::lit_line), "  %s", lines[i]);
     } else {
       ImGui::TextDisabled("  %s", lines[i]);
     }
@@ -261,7 +262,7 @@ void Viewer::draw_verdict() {
   const Statistics& s = statistics_of(*reconstruction_);
   const Verdict v = verdict(s);
   ImGui::PushStyleColor(ImGuiCol_Text,
-                        v.manifold ? ImVec4(0.5f, 0.9f, 0.5f, 1) : ImVec4(1, 0.45f, 0.4f, 1));
+                        imgui_colour(v.manifold ? panel_colours::success : panel_colours::failure));
   ImGui::TextWrapped("%s: %s", to_string(s.method), v.line.c_str());
   ImGui::PopStyleColor();
 }

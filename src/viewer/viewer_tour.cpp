@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "frontend/shots.hpp"
+#include "readable_style.hpp"
 #include "viewer.hpp"
 #include "viewer_internals.hpp"
 
@@ -276,7 +277,7 @@ void Viewer::draw_caption(int width, int height) {
   const figures::Figure_image& image = tour_.image();
 
   const std::size_t count = figure.images.size();
-  ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "%s", tour_.panel_name().c_str());
+  ImGui::TextColored(imgui_colour(panel_colours::current_line), "%s", tour_.panel_name().c_str());
   ImGui::SameLine();
   ImGui::TextDisabled("panel %zu of %zu", tour_.panel() + 1, count);
   ImGui::SameLine();
@@ -293,7 +294,7 @@ void Viewer::draw_caption(int width, int height) {
   if (ImGui::SmallButton("close")) close_tour();
 
   ImGui::TextUnformatted(figure.caption.c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.7f, 0.75f, 0.85f, 1.0f));
+  ImGui::PushStyleColor(ImGuiCol_Text, imgui_colour(panel_colours::caption));
   ImGui::TextWrapped("Paper: \"%s\"", figure.sentence.c_str());
   ImGui::PopStyleColor();
   if (tour_.exploring()) {
