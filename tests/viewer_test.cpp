@@ -22,6 +22,7 @@
 #include "frontend/input.hpp"
 #include "render/image.hpp"
 #include "scene/palette.hpp"
+#include "viewer/panel_colours.hpp"
 #include "scene/scene.hpp"
 #include "shapes/shapes.hpp"
 #include "viewer_support.hpp"
@@ -458,11 +459,14 @@ TEST(Viewer, PresentationModeGivesThePictureTheWholeWindow) {
   };
   // The share of the window's left 70% (below the menu bar) in the panel's grey.
   const auto panel_share = [](const render::Image& image) {
+    const auto level = [](float c) { return int(std::lround(255 * c)); };
+    const auto& panel = viewer::panel_colours::window;
     std::size_t grey = 0, all = 0;
     for (int y = 40; y < image.height; ++y) {
       for (int x = 0; x < image.width * 7 / 10; ++x, ++all) {
         const auto* p = image.pixel(x, y);
-        grey += std::abs(p[0] - 29) < 6 && std::abs(p[1] - 29) < 6 && std::abs(p[2] - 29) < 6;
+        grey += std::abs(p[0] - level(panel.r)) < 6 && std::abs(p[1] - level(panel.g)) < 6 &&
+                std::abs(p[2] - level(panel.b)) < 6;
       }
     }
     return double(grey) / double(all);

@@ -284,6 +284,18 @@ def test_pictures_are_the_command_lines(star, sculpt_cli, tmp_path):
     assert np.count_nonzero(np.any(cut != whole, axis=2)) > 1000
     with pytest.raises(sculpt.InputError, match="the clip must be"):
         sculpt.render(bumpy, stage="delaunay", clip=(1.5, 0, 0))
+    # a true section, the colour-blind palette, the polar balls limited
+    section = sculpt.render(bumpy, stage="delaunay", size=120, section=(0.5, 0, 90))
+    assert np.count_nonzero(np.any(section != cut, axis=2)) > 1000
+    with pytest.raises(sculpt.InputError, match="section is"):
+        sculpt.render(bumpy, stage="delaunay", section=(0.5, 0))
+    safe = sculpt.render(star, stage="poles", size=(320, 240), palette="colour-blind")
+    assert np.count_nonzero(np.any(safe != image, axis=2)) > 1000
+    with pytest.raises(sculpt.InputError, match="no palette"):
+        sculpt.render(star, stage="poles", palette="pink")
+    balls = sculpt.render(bumpy, stage="poles", size=120, polar_balls=True, ball_limit=10)
+    assert np.count_nonzero(np.any(balls != sculpt.render(bumpy, stage="poles", size=120),
+                                   axis=2)) > 100
     other = sculpt.render(star, stage="surface", size=(320, 240))
     assert np.count_nonzero(np.any(other != image, axis=2)) > 1000
     # from another thread too (the GL context follows the caller)
