@@ -22,9 +22,9 @@
 #include "frontend/input.hpp"
 #include "render/image.hpp"
 #include "scene/palette.hpp"
-#include "viewer/panel_colours.hpp"
 #include "scene/scene.hpp"
 #include "shapes/shapes.hpp"
+#include "viewer/panel_colours.hpp"
 #include "viewer_support.hpp"
 
 namespace sculpt {
@@ -329,18 +329,23 @@ TEST(Viewer, ASectionShowsTheCellsKeptAndSculptedAway) {
 // The colour-blind palette redraws the picture: the paper's red poles become vermillion.
 TEST(Viewer, TheColourBlindPaletteRedrawsThePicture) {
   const std::string paper = testing::output_path("viewer-palette-paper.png"),
-                    safe = testing::output_path("viewer-palette-safe.png");
-  ASSERT_EQ(
-      run_viewer_script("palette", "example star\nwait\nstage poles\nframes 2\nscreenshot " +
-                                       paper + "\npalette colour-blind\nframes 2\nscreenshot " +
-                                       safe + "\npalette pink\nquit\n"),
-      1);  // the last command is refused: no such palette
+                    safe = testing::output_path("viewer-palette-safe.png"),
+                    kept = testing::output_path("viewer-palette-kept.png");
+  ASSERT_EQ(run_viewer_script("palette",
+                              "example star\nwait\nstage poles\nframes 2\nscreenshot " + paper +
+                                  "\npalette colour-blind\nframes 2\nscreenshot " + safe +
+                                  "\nmethod paper\nwait\nstage poles\nframes 2\n"
+                                  "screenshot " +
+                                  kept + "\nlink\npalette pink\nquit\n"),
+            1);  // the last command is refused: no such palette
   const scene::Color vermillion{0.835f, 0.369f, 0.0f};
-  const double before = share_of_colour(render::read_png(paper), vermillion);
-  const double after = share_of_colour(render::read_png(safe), vermillion);
-  EXPECT_EQ(before, 0.0);
-  EXPECT_GT(after, 0.0005);
+  EXPECT_EQ(share_of_colour(render::read_png(paper), vermillion), 0.0);
   EXPECT_GT(share_of_colour(render::read_png(paper), scene::palette::pole), 0.0005);
+  EXPECT_GT(share_of_colour(render::read_png(safe), vermillion), 0.0005);
+  // A preference of the viewer: kept for the next reconstruction, and in the link to the view.
+  EXPECT_GT(share_of_colour(render::read_png(kept), vermillion), 0.0005);
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/palette.log");
+  EXPECT_NE(log.find("--palette colour-blind"), std::string::npos) << log;
 }
 
 // A picture exported from the viewer is the view on screen: the cut-away and the neighbourhood

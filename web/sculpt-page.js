@@ -18,7 +18,7 @@ function show(message, isError = false) {
 const options = {
   example: '--example', method: '--method', stage: '--stage', step: '--step',
   sample: '--pick-sample', figure: '--figure', panel: '--panel', lesson: '--lesson',
-  text: '--font-scale', scale: '--picture-scale',
+  text: '--font-scale', scale: '--picture-scale', palette: '--palette',
 };
 // A refusal of the command line in the address's words: `stage` for `--stage`, and no pointer
 // to a --help the page cannot show.

@@ -27,6 +27,22 @@ Vec3 vec(const Point<3>& p) {
   return {float(p[0]), float(p[1]), float(p[2])};
 }
 
+float distance(const Vec3& p, const Vec3& q) {
+  return std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
+}
+
+// The area of the triangles [begin, end), three corners each.
+float area(std::vector<Vec3>::const_iterator begin, std::vector<Vec3>::const_iterator end) {
+  float total = 0;
+  for (auto t = begin; end - t >= 3; t += 3) {
+    const Vec3 &a = t[0], &b = t[1], &c = t[2];
+    const Vec3 u{b[0] - a[0], b[1] - a[1], b[2] - a[2]}, v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    total += 0.5f * std::hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                               u[0] * v[1] - u[1] * v[0]);
+  }
+  return total;
+}
+
 }  // namespace
 
 void cut_tetrahedron(const std::array<Vec3, 4>& corners, const Clip_plane& plane,
@@ -217,10 +233,17 @@ class Section_builder {
   template <class Kind>
   void cells_by_kind(const std::vector<Cell<3>>& cells, Kind kind) {
     std::vector<Vec3> fill[3], outline;
+    float sides_in_hull = 0, area_in_hull = 0;  // of the cells of the hull: kinds 0 and 1
     for (const auto& cell : cells) {
       std::array<Vec3, 4> corners;
       for (int i = 0; i < 4; ++i) corners[i] = vec(position_(cell[i]));
-      cut_tetrahedron(corners, plane_, fill[kind(cell)], outline);
+      const int k = kind(cell);
+      const std::size_t filled = fill[k].size(), drawn = outline.size();
+      cut_tetrahedron(corners, plane_, fill[k], outline);
+      if (k == 2) continue;
+      area_in_hull += area(fill[k].begin() + long(filled), fill[k].end());
+      for (std::size_t p = drawn; p + 1 < outline.size(); p += 2)
+        sides_in_hull += distance(outline[p], outline[p + 1]);
     }
     const bool sculpting =
         request_.stage == Stage::solid || request_.stage == Stage::sculpted_delaunay;
@@ -232,6 +255,12 @@ class Section_builder {
       if (fill[k].empty()) continue;
       add(ids[k], labels[k], Primitive::triangles, colours[k], 1.0f).positions = std::move(fill[k]);
     }
+    // The cells' sides tell the cells apart, unless a plane along a thin part cuts a crowd of
+    // slivers whose sides, a pixel wide, would cover the hull's fill in grey (in a picture of
+    // about 800 pixels across the box): then they are drawn only when asked for.
+    const float pixel = plane_.extent / 800;
+    const bool crowded = sides_in_hull * pixel > 0.4f * area_in_hull;
+    if (crowded && !asked("section-edges")) return;
     Layer& edges = add("section-edges", "the cells' sides on the plane", Primitive::lines,
                        palette::section_edge, 1.0f);
     for (const auto& p : outline) edges.positions.push_back(lifted(p));

@@ -249,8 +249,10 @@ void Viewer::rebuild_scene() {
   if (!scene_dirty_ || !reconstruction_) return;
   scene_dirty_ = false;
   try {
-    scene::Scene scene = std::visit([&](const auto& r) { return scene::build_scene(r, request_); },
-                                    *reconstruction_);
+    scene::Request request = request_;
+    request.colour_blind = colour_blind_;
+    scene::Scene scene =
+        std::visit([&](const auto& r) { return scene::build_scene(r, request); }, *reconstruction_);
     add_true_curve(scene);
     renderer_->set_scene(scene);
     const float aspect = frame_height_ > 0

@@ -81,12 +81,13 @@ class Viewer {
   // look along its normal; or back to the stage whole.
   void set_section(const scene::Clip& plane);
   void look_along_the_section();  // the camera turned to look along the plane's normal
-  // The colour-blind-safe colours (scene/colours.hpp), or the paper's.
+  // The colour-blind-safe colours (scene/colours.hpp), or the paper's: a preference of the
+  // viewer, kept across reconstructions and tour panels.
   void set_colour_blind(bool on) {
-    request_.colour_blind = on;
+    colour_blind_ = on;
     scene_dirty_ = true;
   }
-  bool colour_blind() const { return request_.colour_blind; }
+  bool colour_blind() const { return colour_blind_; }
   void clear_section() {
     request_.sectioned = false;
     scene_dirty_ = true;
@@ -291,6 +292,7 @@ class Viewer {
   scene::Request request_;
   bool scene_dirty_ = true;
   render::Camera camera_;
+  bool colour_blind_ = false;  // the colour-blind palette (set_colour_blind)
   bool camera_fitted_ = false;
   std::vector<std::string> hidden_layers_;
   std::string message_;

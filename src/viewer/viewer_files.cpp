@@ -53,7 +53,7 @@ bool Viewer::export_shot(const std::string& path, int width, int height, const s
   shot.smooth = request_.smooth;
   shot.ball_every = request_.ball_every;
   shot.ball_limit = request_.ball_limit;
-  shot.palette = request_.colour_blind ? "colour-blind" : "paper";
+  shot.palette = colour_blind_ ? "colour-blind" : "paper";
   shot.ball_opacity = request_.ball_opacity;
   shot.polar_balls = request_.polar_balls;
   shot.neighbourhood = request_.neighbourhood && request_.focus_sample >= 0;

@@ -83,7 +83,7 @@ std::string Viewer::link_to_view(std::string& why_not) const {
   if (text_scale != 1.0f) options.push_back({"text", scale_text(text_scale)});
   // So does a presentation: a link a teacher opens in front of the class.
   if (presenting_) options.push_back({"present", "on"});
-  if (request_.colour_blind) options.push_back({"palette", "colour-blind"});
+  if (colour_blind_) options.push_back({"palette", "colour-blind"});
   if (picture_scale_ != 1.0f) options.push_back({"scale", scale_text(picture_scale_)});
   std::ostringstream text;
   if (platform::in_browser) {

@@ -56,8 +56,8 @@ void Viewer::draw_menu() {
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("The panel hides, the picture takes the window with its legend in it");
     }
-    if (ImGui::MenuItem("Colour-blind palette", nullptr, request_.colour_blind))
-      set_colour_blind(!request_.colour_blind);
+    if (ImGui::MenuItem("Colour-blind palette", nullptr, colour_blind_))
+      set_colour_blind(!colour_blind_);
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip(
           "Colours every pair of layers apart with deuteranopia and protanopia too, in place "

@@ -257,16 +257,17 @@ test('a link copied from a view opens that view', async () => {
 });
 
 test('a class opens a presentation from a link: no panel, the picture the whole width', async () => {
-  const viewer = await openViewer(browser, site.url, '?example=star&present=on&scale=2', { width: 1024, height: 768 });
+  const address = '?example=star&present=on&palette=colour-blind&scale=2';
+  const viewer = await openViewer(browser, site.url, address, { width: 1024, height: 768 });
   const { lines } = await runScript(viewer, 'wait\nframes 2\nlink\n');
   const link = lines.find((line) => line.startsWith('link: ')).slice(6);
-  assert.equal(new URL(link).search, '?example=star&present=on&scale=2');
+  assert.equal(new URL(link).search, address);
   // Where the panel would be (its left 360 pixels, below the menu bar), the picture: mostly
-  // white, nothing of the panel's dark grey.
+  // white, nothing of the panel's dark grey (src/viewer/panel_colours.hpp: 0.06, 0.06, 0.07).
   const left = await screenshot(viewer, { x: 0, y: 30, width: 360, height: 700 });
   let grey = 0;
   for (let i = 0; i < left.data.length; i += 4) {
-    if (Math.abs(left.data[i] - 29) < 6 && Math.abs(left.data[i + 1] - 29) < 6 && Math.abs(left.data[i + 2] - 29) < 6) ++grey;
+    if (Math.abs(left.data[i] - 15) < 6 && Math.abs(left.data[i + 1] - 15) < 6 && Math.abs(left.data[i + 2] - 18) < 6) ++grey;
   }
   assert.ok(grey / (left.width * left.height) < 0.02, `panel grey ${grey}`);
   await close(viewer);
