@@ -499,6 +499,18 @@ TEST(Cli, WhatDoesNotApplyIsRefused) {
   }
 }
 
+// A mistyped option is named, with the nearest one, even when its value would otherwise be
+// taken for an input (CLI11 then blamed the input: "input excludes --example").
+TEST(Cli, AMistypedOptionIsNamedWithTheNearestOne) {
+  const Command_result typo =
+      run_sculpt("render --example torus --secton 0.5,0,0 -o " + output_path("typo.png"));
+  EXPECT_EQ(typo.exit_code, 2);
+  EXPECT_NE(typo.err.find("no option '--secton' (did you mean '--section'?)"), std::string::npos)
+      << typo.err;
+  EXPECT_EQ(std::count(typo.err.begin(), typo.err.end(), '\n'), 1) << typo.err;
+  EXPECT_FALSE(std::filesystem::exists(output_path("typo.png")));
+}
+
 TEST(Cli, AMistypedCommandIsNamedWithTheNearestOne) {
   const Command_result typo = run_sculpt("reconstrut --example torus");
   EXPECT_EQ(typo.exit_code, 2);

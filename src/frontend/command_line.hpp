@@ -141,6 +141,26 @@ inline std::optional<int> parse_command_line(CLI::App& app, int argc, char** arg
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // An unknown option first: its value, taken for an input, would make CLI11 blame another.
+    CLI::App* command = &app;
+    for (CLI::App* sub : all) {
+      if (argc > 1 && sub->check_name(argv[1])) command = sub;
+    }
+    for (int i = 1; i < argc; ++i) {
+      const std::string word = argv[i];
+      if (word == "--") break;
+      if (word.size() < 3 || word.compare(0, 2, "--") != 0) continue;
+      const std::string name = word.substr(0, word.find('='));
+      if (name == "--help" || command->get_option_no_throw(name) != nullptr) continue;
+      std::vector<std::string> names;
+      for (const CLI::Option* option : command->get_options()) {
+        for (const std::string& long_name : option->get_lnames()) names.push_back("--" + long_name);
+      }
+      std::cerr << program << ": usage error: no option '" << one_line(name) << "'"
+                << did_you_mean(name, names) << " (see " << program << " "
+                << (command == &app ? "" : command->get_name() + " ") << "--help)\n";
+      return exit_bad_usage;
+    }
     std::cerr << program << ": usage error: " << one_line(e.what()) << " (see " << program
               << " --help)\n";
     return exit_bad_usage;
