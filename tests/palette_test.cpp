@@ -158,6 +158,9 @@ TEST_P(Palette, EveryLayerOfAStageHasAColourOfItsOwn) {
                        colour_blind);
   check_every_stage<3>(shapes::bumpy_sphere(800), Surface_kind::closed, clashes, pictures,
                        colour_blind);
+  // A bordered surface: its border edges beside the polar balls and poles.
+  check_every_stage<3>(shapes::hemisphere(600), Surface_kind::bordered, clashes, pictures,
+                       colour_blind);
   // A result that leaves samples off marks them, beside everything else the surface shows.
   Options tiny_alpha;
   tiny_alpha.method = Method::alpha_shape;

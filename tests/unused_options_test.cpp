@@ -82,6 +82,11 @@ TEST(Unused_options, AreRefusedInOneLineThatSaysWhereTheyApply) {
        "draws none"},
       {{"render", "sphere.xyz", "--stage", "voronoi", "--ball-limit", "5", "-o", "x.png"},
        "draws none"},
+      {{"render", "sphere.xyz", "--stage", "poles", "--polar-balls", "--ball-opacity", "0.4",
+        "--section", "0.5,0,0", "-o", "x.png"},
+       "does not apply to a section"},
+      {{"render", "sphere.xyz", "--focus-sample", "3", "--section", "0.5,0,0", "-o", "x.png"},
+       "does not apply to a section"},
       {{"render", "circle.xy", "--frames", "10", "-o", "x.png"}, "this is one picture"},
       {{"render", "circle.xy", "--animate", "stages", "--stage", "poles", "-o", "x.webp"},
        "draws every stage in order"},
@@ -139,7 +144,9 @@ TEST(Unused_options, WhereTheyApplyTheyAreTaken) {
       {"render", "sphere.xyz", "--stage", "poles", "--polar-balls", "--ball-every", "5", "-o",
        "g.png"},
       {"render", "sphere.xyz", "--stage", "solid", "--polar-balls", "--ball-limit", "20",
-       "--ball-opacity", "0.4", "--section", "0.5,30,60", "-o", "g2.png"},
+       "--section", "0.5,30,60", "-o", "g2.png"},
+      {"render", "sphere.xyz", "--stage", "poles", "--polar-balls", "--ball-limit", "0",
+       "--ball-opacity", "0.4", "-o", "g3.png"},
       {"render", "circle.xy", "--animate", "stages", "--frame-ms", "500", "-o", "h.webp"},
       // The box of DT(S ∪ BBV) drawn, whatever the method; the edges alone; the paper's rule
       // where robust inserts poles as the paper does.

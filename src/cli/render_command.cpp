@@ -44,9 +44,10 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   render->add_flag("--polar-balls", shot.polar_balls,
                    "3D: also draw the polar balls (every --ball-every-th), at any stage");
   render
-      ->add_option("--ball-limit", shot.ball_limit,
-                   "3D: at most this many inner and this many outer polar balls, evenly picked")
-      ->check(CLI::PositiveNumber);
+      ->add_option(
+          "--ball-limit", shot.ball_limit,
+          "3D: at most this many inner and this many outer polar balls, evenly picked (0: all)")
+      ->check(CLI::NonNegativeNumber);
   render
       ->add_option("--ball-opacity", shot.ball_opacity,
                    "3D: the polar balls' opacity, above 0 and at most 1")

@@ -119,6 +119,23 @@ std::string unused_drawing_option(const Shot& shot, const scene::Scene& scene, S
     return std::any_of(scene.layers.begin(), scene.layers.end(),
                        [&](const scene::Layer& layer) { return layer.id == id; });
   };
+  // A section draws what the plane cuts, flat: what picks, thins or shades does not apply.
+  if (!shot.section.empty()) {
+    const std::pair<bool, std::pair<const char*, const char*>> flat[] = {
+        {shot.focus_sample != defaults.focus_sample, {"--focus-sample", "focus_sample"}},
+        {shot.focus_pole != defaults.focus_pole, {"--focus-pole", "focus_pole"}},
+        {shot.neighbourhood, {"--neighbourhood", "neighbourhood"}},
+        {shot.wireframe, {"--wireframe", "wireframe"}},
+        {shot.smooth, {"--smooth", "smooth"}},
+        {shot.ball_opacity != defaults.ball_opacity, {"--ball-opacity", "ball_opacity"}},
+    };
+    for (const auto& [given, names] : flat) {
+      if (given)
+        return named(names.first, names.second, spelling) +
+               " does not apply to a section, which draws the cut in the plane (" +
+               named("--clip", "clip", spelling) + " cuts away instead)";
+    }
+  }
   if (shot.step != defaults.step && shot.stage != "propagation") {
     return named("--step", "step", spelling) +
            " replays the labelling at the stage propagation; this is the stage " + shot.stage;

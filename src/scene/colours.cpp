@@ -49,7 +49,10 @@ const std::vector<Counterpart>& counterparts() {
       {p::source_ball, {0.700f, 0.400f, 0.300f}},
       {p::current_pole, {0.800f, 0.700f, 0.700f}},
       {p::non_manifold, {0.700f, 0.600f, 1.000f}},
-      {p::border, {1.000f, 0.700f, 0.000f}},
+      {p::border, {0.100f, 0.800f, 1.000f}},
+      {p::opening, {1.000f, 0.700f, 0.000f}},
+      {p::contradicted_pole, {0.000f, 0.300f, 0.500f}},
+      {p::undersampled, {0.700f, 0.700f, 0.700f}},
   };
   return table;
 }

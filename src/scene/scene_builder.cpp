@@ -281,11 +281,13 @@ class Scene_builder {
       };
       balls_layer("polar-balls", labels.empty() ? "polar balls" : "polar balls not yet labelled",
                   translucent(palette::polar_ball_3d), of_kind[int(Label::unlabelled)]);
-      balls_layer("inner-balls", "inner polar balls", translucent(palette::inner_ball),
+      // Before the labelling the sides come from its end, and the legend says so.
+      const std::string later = request_.stage < Stage::propagation ? " (as labelled later)" : "";
+      balls_layer("inner-balls", "inner polar balls" + later, translucent(palette::inner_ball),
                   of_kind[int(Label::inner)]);
       // Fainter: the outer balls are the larger, and would hide the medial axis inside.
-      balls_layer("outer-balls", "outer polar balls", translucent(palette::outer_ball, 0.35f),
-                  of_kind[int(Label::outer)]);
+      balls_layer("outer-balls", "outer polar balls" + later,
+                  translucent(palette::outer_ball, 0.35f), of_kind[int(Label::outer)]);
     }
   }
 

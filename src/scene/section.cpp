@@ -142,7 +142,10 @@ class Section_builder {
         [[fallthrough]];
       case Stage::solid: {
         require(r_.delaunay);
-        scene_.title = "Section of the solid and what was sculpted away";
+        scene_.title =
+            sculpts(method) || method == Method::boissonnat || method == Method::tight_cocone
+                ? "Section of the solid and what was sculpted away"
+                : "Section of the solid and the hull's other cells";
         std::vector<Cell<3>> kept = r_.solid;
         for (auto& cell : kept) std::sort(cell.begin(), cell.end());
         std::sort(kept.begin(), kept.end());
@@ -247,8 +250,15 @@ class Section_builder {
     }
     const bool sculpting =
         request_.stage == Stage::solid || request_.stage == Stage::sculpted_delaunay;
-    const char* labels[3] = {sculpting ? "cells kept (cut)" : "cells of the hull (cut)",
-                             "cells sculpted away (cut)", "cells with a box corner (cut)"};
+    // The alpha shape keeps cells without carving the hull: the others are not sculpted away.
+    const Method m = r_.options.method;
+    const bool carves = sculpts(m) || m == Method::boissonnat || m == Method::tight_cocone;
+    const bool crust = request_.stage == Stage::crust_delaunay;
+    const char* labels[3] = {sculpting ? "cells kept (cut)"
+                             : crust   ? "cells of samples only (cut)"
+                                       : "cells of the hull (cut)",
+                             carves ? "cells sculpted away (cut)" : "cells not in the solid (cut)",
+                             crust ? "cells with a pole (cut)" : "cells with a box corner (cut)"};
     const char* ids[3] = {"section-inside", "section-away", "section-outside"};
     const Color colours[3] = {palette::solid, palette::sculpted_away, palette::section_outside};
     for (int k = 0; k < 3; ++k) {
@@ -323,18 +333,36 @@ class Section_builder {
     if (poles.empty() || request_.stage == Stage::samples || request_.stage == Stage::delaunay ||
         request_.stage == Stage::hull || request_.stage == Stage::surface)
       return;
-    const auto& labels = r_.propagation.labels;
-    const bool labelled =
-        !labels.empty() && request_.stage != Stage::voronoi && request_.stage != Stage::poles;
-    Layer& inner = add(labelled ? "inner-poles" : "poles", labelled ? "inner poles" : "poles",
-                       Primitive::points, palette::pole, 6);
+    // Before the labelling, a pole is a pole: the stage knows no side yet.
+    const std::vector<Label> labels =
+        request_.stage < Stage::propagation ? std::vector<Label>{} : labels_at_this_stage();
+    Layer& inner =
+        add(labels.empty() ? "poles" : "inner-poles", labels.empty() ? "poles" : "inner poles",
+            Primitive::points, palette::pole, 6);
     Layer& outer = add("outer-poles", "outer poles", Primitive::points, palette::outer_pole_3d, 6);
+    Layer& unlabelled =
+        add("unlabelled-poles", "unlabelled poles", Primitive::points, palette::unlabelled_pole, 6);
     for (std::size_t p = 0; p < poles.size(); ++p) {
       const Vec3 c = vec(poles[p].center);
       if (std::abs(plane_.side(c)) > band_) continue;
-      const bool is_outer = labelled && labels[p] == Label::outer;
-      (is_outer ? outer : inner).positions.push_back(on_plane(c));
+      const Label label = labels.empty() ? Label::inner : labels[p];
+      Layer& layer = label == Label::outer ? outer : label == Label::inner ? inner : unlabelled;
+      layer.positions.push_back(on_plane(c));
     }
+  }
+
+  // The labels the poles have at the stage shown, as the scene builder gives them: during the
+  // labelling replay, those given so far; else the final ones. Empty for a method that labels
+  // none.
+  std::vector<Label> labels_at_this_stage() const {
+    std::vector<Label> labels = r_.propagation.labels;
+    if (request_.stage == Stage::propagation && request_.step >= 0 && !labels.empty()) {
+      labels.assign(r_.poles.poles.size(), Label::unlabelled);
+      const auto& events = r_.propagation.events;
+      const std::size_t shown = std::min<std::size_t>(request_.step, events.size());
+      for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
+    }
+    return labels;
   }
 
   // The polar balls the plane cuts, as the circles of the cut (the paper's polar circles, in
@@ -342,17 +370,13 @@ class Section_builder {
   // at most ball_limit of each kind.
   void polar_circles() {
     const auto& poles = r_.poles.poles;
-    std::vector<Label> labels = r_.propagation.labels;
-    if (request_.stage == Stage::propagation && request_.step >= 0 && !labels.empty()) {
-      labels.assign(poles.size(), Label::unlabelled);
-      const auto& events = r_.propagation.events;
-      const std::size_t shown = std::min<std::size_t>(request_.step, events.size());
-      for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
-    }
+    const std::vector<Label> labels = labels_at_this_stage();
     std::vector<int> of_kind[3];
     const int every = std::max(1, request_.ball_every);
+    // As in the scene builder: no ball larger than half the box's diagonal (outer poles far out).
+    const float largest = 0.5f * distance(scene_.lower, scene_.upper);
     for (std::size_t p = 0; p < poles.size(); ++p) {
-      if (poles[p].convex || p % every != 0) continue;
+      if (poles[p].convex || p % every != 0 || float(poles[p].radius) > largest) continue;
       if (std::abs(plane_.side(vec(poles[p].center))) >= float(poles[p].radius)) continue;
       of_kind[labels.empty() ? 0 : int(labels[p])].push_back(int(p));
     }
@@ -365,7 +389,10 @@ class Section_builder {
     const char* ids[3] = {"polar-balls", "inner-balls", "outer-balls"};
     const char* names[3] = {
         labels.empty() ? "polar balls, cut" : "polar balls not yet labelled, cut",
-        "inner polar balls, cut", "outer polar balls, cut"};
+        request_.stage < Stage::propagation ? "inner polar balls (as labelled later), cut"
+                                            : "inner polar balls, cut",
+        request_.stage < Stage::propagation ? "outer polar balls (as labelled later), cut"
+                                            : "outer polar balls, cut"};
     const Color colours[3] = {palette::polar_ball_3d, palette::inner_ball, palette::outer_ball};
     for (int k = 0; k < 3; ++k) {
       const std::vector<int>& kind = of_kind[k];

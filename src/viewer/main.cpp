@@ -112,7 +112,12 @@ int main(int argc, char** argv) {
                   "Colours: paper or colour-blind (every pair of layers apart with "
                   "deuteranopia and protanopia too; also in the View menu)")
       ->capture_default_str()
-      ->check(CLI::IsMember(sculpt::scene::colours_names()));
+      ->check([](const std::string& name) {
+        sculpt::scene::Colours colours;
+        return sculpt::scene::parse_colours(name, colours)
+                   ? std::string()
+                   : "no palette '" + name + "' (palettes: paper, colour-blind)";
+      });
   command_line.add_flag("--present", present,
                         "Presentation mode: no panel, the legend in the picture (F5 toggles it)");
   command_line
@@ -201,7 +206,9 @@ int main(int argc, char** argv) {
   sculpt::viewer::Viewer& viewer = app->viewer();
   viewer.set_presenting(present);
   viewer.set_picture_scale(picture_scale);
-  viewer.set_colour_blind(palette == "colour-blind");
+  sculpt::scene::Colours colours = sculpt::scene::Colours::paper;
+  sculpt::scene::parse_colours(palette, colours);
+  viewer.set_colour_blind(colours == sculpt::scene::Colours::colour_blind);
   try {
     // The first view, before anything a script or --frames does with it.
     std::string first_view;
