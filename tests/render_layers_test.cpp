@@ -118,5 +118,44 @@ TEST(Render_layers, ReportsLlvmpipe) {
   EXPECT_NE(std::string(testing::headless().gl_renderer()).find("llvmpipe"), std::string::npos);
 }
 
+// The legend takes the corner clearest of the data: off a shape that fills the top left, into
+// the empty top right; and stays top left when that is clear.
+TEST(Render_layers, TheLegendMovesOffTheData) {
+  const auto legend_pixels = [](const render::Image& image, int x0, int y0, int x1, int y1) {
+    std::size_t count = 0;  // the legend's box is 0.98 grey, which nothing else is
+    for (int y = y0; y < y1; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        const auto* p = image.pixel(x, y);
+        count += p[0] == 250 && p[1] == 250 && p[2] == 250;
+      }
+    }
+    return count;
+  };
+  scene::Scene scene;
+  scene.dimension = 2;
+  scene.lower = {-1, -1, 0};
+  scene.upper = {1, 1, 0};
+  scene::Layer points;
+  points.id = "points";
+  points.label = "shape";
+  points.color = {0.1f, 0.3f, 0.8f};
+  points.size = 6;
+  // Past the bounds the camera frames, so that the shape reaches the picture's corner.
+  for (float x = -1.5f; x <= 0; x += 0.02f) {
+    for (float y = 0; y <= 1.5f; y += 0.02f) points.positions.push_back({x, y, 0});
+  }
+  points.positions.push_back({1, -1, 0});  // the bottom right corner of the bounds
+  scene.layers = {points};
+  const render::Image moved = testing::render_scene(scene, 300, /*legend=*/true);
+  EXPECT_EQ(legend_pixels(moved, 0, 0, 60, 40), 0u);
+  EXPECT_GT(legend_pixels(moved, 150, 0, 300, 40), 200u);
+  // Mirrored to the bottom right: the top left is clear, and the legend stays there.
+  for (auto& p : scene.layers[0].positions) p = {-p[0], -p[1], 0};
+  scene.layers[0].positions.back() = {1, -1, 0};  // no point left in the top left
+  const render::Image kept = testing::render_scene(scene, 300, /*legend=*/true);
+  EXPECT_GT(legend_pixels(kept, 0, 0, 150, 40), 200u);
+  EXPECT_EQ(legend_pixels(kept, 150, 0, 300, 40), 0u);
+}
+
 }  // namespace
 }  // namespace sculpt

@@ -4,8 +4,10 @@
 #include <stb/stb_easy_font.h>
 
 #include <algorithm>
+#include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
+#include <utility>
 
 #include "render/gl.hpp"
 #include "render/shader_sources.hpp"
@@ -95,7 +97,31 @@ void Renderer::set_scene(const scene::Scene& scene) {
     glDeleteVertexArrays(1, &layer.array);
   }
   layers_.clear();
+  landmarks_.clear();
   scene_ = scene::Scene{scene.dimension, scene.title, {}, scene.lower, scene.upper};
+  // Where each layer lies, thinned to about 100,000 points in all, kept for placing the legend
+  // off the data (the positions themselves live on the GPU only): vertices, the middles of
+  // segments and triangles, balls' centres with their radii.
+  std::size_t total = 0;
+  for (const auto& layer : scene.layers) total += layer.positions.size();
+  const std::size_t stride = std::max<std::size_t>(1, total / 100000);
+  for (const auto& layer : scene.layers) {
+    const std::size_t corners = layer.primitive == scene::Primitive::lines       ? 2
+                                : layer.primitive == scene::Primitive::triangles ? 3
+                                                                                 : 1;
+    std::vector<glm::vec4> marks;
+    for (std::size_t i = 0; i + corners <= layer.positions.size(); i += corners * stride) {
+      glm::vec3 middle(0.0f);
+      for (std::size_t j = 0; j < corners; ++j) {
+        const auto& p = layer.positions[i + j];
+        marks.emplace_back(p[0], p[1], p[2], 0.0f);
+        middle += glm::vec3(p[0], p[1], p[2]) / float(corners);
+      }
+      const float radius = i < layer.radii.size() ? layer.radii[i] : 0.0f;
+      if (corners > 1 || radius > 0) marks.emplace_back(middle, radius);
+    }
+    landmarks_.push_back(std::move(marks));
+  }
   for (const auto& layer : scene.layers) {
     Gpu_layer gpu;
     gpu.count = static_cast<GLsizei>(layer.positions.size());
@@ -181,7 +207,7 @@ void Renderer::draw(const Camera& camera, int width, int height, const Draw_opti
         draw_layer(layers_[i], scene_.layers[i], camera, width, height, options.picture_scale);
     }
   }
-  draw_overlay(width, height, options);
+  draw_overlay(camera, width, height, options);
 }
 
 bool Renderer::hidden(const scene::Layer& layer, const Draw_options& options) {
@@ -273,7 +299,55 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
 }
 
 // The legend and title: coloured swatches and text (stb_easy_font quads) in pixel coordinates.
-void Renderer::draw_overlay(int width, int height, const Draw_options& options) {
+// The corner for a box of w by h pixels, `inset` from the edges, that the fewest of the drawn
+// layers' points fall in (their vertices, and the middles of segments and triangles, projected
+// by the camera): the top left when none does, so that a legend moves only off the data; else
+// the top right or the bottom right (the title is at the bottom left, `title_width` long and
+// `title_height` high), whichever covers fewest.
+std::pair<float, float> Renderer::emptiest_corner(const Camera& camera, int width, int height,
+                                                  float w, float h, float inset, float title_width,
+                                                  float title_height,
+                                                  const Draw_options& options) const {
+  std::vector<std::pair<float, float>> corners = {{inset, inset}};
+  if (width - inset - w > inset + w) corners.push_back({width - inset - w, inset});
+  if (width - inset - w > title_width && height - inset - h - title_height > inset + h)
+    corners.push_back({width - inset - w, height - inset - h - title_height});
+  if (corners.size() == 1) return corners.front();
+  const glm::mat4 view = camera.view();
+  const glm::mat4 view_projection = camera.projection(float(width) / float(height)) * view;
+  // A ball is seen as a disc: its outline, across the view (the camera's right and up).
+  const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
+  std::vector<std::size_t> inside(corners.size(), 0);
+  const auto count = [&](const glm::vec3& p) {
+    const glm::vec4 clip = view_projection * glm::vec4(p, 1.0f);
+    if (!(clip.w > 0)) return;
+    const float x = (clip.x / clip.w + 1) * 0.5f * float(width);
+    const float y = (1 - clip.y / clip.w) * 0.5f * float(height);
+    for (std::size_t k = 0; k < corners.size(); ++k) {
+      const auto [cx, cy] = corners[k];
+      if (x >= cx && x <= cx + w && y >= cy && y <= cy + h) ++inside[k];
+    }
+  };
+  for (std::size_t l = 0; l < scene_.layers.size() && l < landmarks_.size(); ++l) {
+    if (hidden(scene_.layers[l], options)) continue;
+    for (const glm::vec4& mark : landmarks_[l]) {
+      const glm::vec3 p(mark);
+      count(p);
+      if (mark.w > 0) {
+        for (int a = 0; a < 16; ++a) {
+          const float angle = float(a) * 0.3927f;  // a sixteenth of the turn
+          count(p + mark.w * (std::cos(angle) * right + std::sin(angle) * up));
+        }
+      }
+    }
+  }
+  if (inside[0] == 0) return corners[0];
+  const auto fewest = std::min_element(inside.begin(), inside.end()) - inside.begin();
+  return corners[std::size_t(fewest)];
+}
+
+void Renderer::draw_overlay(const Camera& camera, int width, int height,
+                            const Draw_options& options) {
   struct Piece {
     scene::Color color;
     std::vector<float> triangles;  // x, y, z per vertex
@@ -309,21 +383,32 @@ void Renderer::draw_overlay(int width, int height, const Draw_options& options) 
       listed.push_back(&layer);
       widest = std::max(widest, float(stb_easy_font_width(const_cast<char*>(layer.label.c_str()))));
     }
+    float left = margin, top = margin;  // where the legend's first swatch goes
     if (!listed.empty()) {
-      // On a box of its own, so that the legend reads over the data in a small picture.
+      // On a box of its own, so that the legend reads over the data in a small picture, in the
+      // corner where it covers the least of the data (the top left when that is clear).
       const float pad = 3 * scale;
       const float w = 12 * scale + scale * widest + 2 * pad, h = line * listed.size() + 2 * pad;
-      box(margin - pad - 1, margin - pad - 1, w + 2, h + 2, {0.55f, 0.55f, 0.55f, 1});
-      box(margin - pad, margin - pad, w, h, {0.98f, 0.98f, 0.98f, 1});
+      const float title_width =
+          options.title
+              ? scale * float(stb_easy_font_width(const_cast<char*>(scene_.title.c_str()))) +
+                    2 * margin
+              : 0.0f;
+      const auto [x, y] = emptiest_corner(camera, width, height, w + 2, h + 2, margin - pad - 1,
+                                          title_width, 12 * scale + margin, options);
+      left = x + pad + 1;
+      top = y + pad + 1;
+      box(x, y, w + 2, h + 2, {0.55f, 0.55f, 0.55f, 1});
+      box(x + 1, y + 1, w, h, {0.98f, 0.98f, 0.98f, 1});
     }
-    float y = margin;
+    float y = top;
     for (const scene::Layer* layer : listed) {
       scene::Color swatch = layer->color;
       swatch.a = 1;
       // An outline, so a light swatch shows on the light box.
-      box(margin - 1, y + 1 * scale - 1, 8 * scale + 2, 8 * scale + 2, {0.3f, 0.3f, 0.3f, 1});
-      box(margin, y + 1 * scale, 8 * scale, 8 * scale, swatch);
-      text(margin + 12 * scale, y + 1 * scale, layer->label, {0.1f, 0.1f, 0.1f, 1});
+      box(left - 1, y + 1 * scale - 1, 8 * scale + 2, 8 * scale + 2, {0.3f, 0.3f, 0.3f, 1});
+      box(left, y + 1 * scale, 8 * scale, 8 * scale, swatch);
+      text(left + 12 * scale, y + 1 * scale, layer->label, {0.1f, 0.1f, 0.1f, 1});
       y += line;
     }
   }

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "render/camera.hpp"
@@ -16,7 +17,7 @@
 namespace sculpt::render {
 
 struct Draw_options {
-  bool legend = true;  // colour swatches with the layers' labels, top left
+  bool legend = true;  // colour swatches with the layers' labels, in the corner clearest of data
   bool title = true;   // the stage's title, bottom left
   scene::Color background{1, 1, 1, 1};
   std::vector<std::string> hidden_layers;  // layer ids not to draw (nor list in the legend)
@@ -49,13 +50,17 @@ class Renderer {
   struct Gpu_layer;
   std::unique_ptr<Programs> programs_;
   std::vector<Gpu_layer> layers_;
+  std::vector<std::vector<glm::vec4>> landmarks_;  // per layer: where it lies (set_scene)
   scene::Scene scene_;  // the scene without its geometry: kinds, colours, labels
   std::uint64_t generation_ = 0;
   unsigned overlay_array_ = 0, overlay_buffer_ = 0;
 
   void draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera, int width,
                   int height, float picture_scale);
-  void draw_overlay(int width, int height, const Draw_options& options);
+  void draw_overlay(const Camera& camera, int width, int height, const Draw_options& options);
+  std::pair<float, float> emptiest_corner(const Camera& camera, int width, int height, float w,
+                                          float h, float inset, float title_width,
+                                          float title_height, const Draw_options& options) const;
   static bool hidden(const scene::Layer& layer, const Draw_options& options);
 };
 
