@@ -11,6 +11,7 @@
 #include "colours.hpp"
 #include "core/facet_orientation.hpp"
 #include "cut_cells.hpp"
+#include "layer_helpers.hpp"
 #include "palette.hpp"
 #include "scene.hpp"
 #include "section.hpp"
@@ -154,14 +155,7 @@ class Scene_builder {
 
   Layer& add(const char* id, const std::string& label, Primitive primitive, Color color,
              float size) {
-    Layer layer;
-    layer.id = id;
-    layer.label = label;
-    layer.primitive = primitive;
-    layer.color = color;
-    layer.size = size;
-    layers_.push_back(std::move(layer));
-    return layers_.back();  // a deque: references stay valid as layers are added
+    return add_layer(layers_, id, label, primitive, color, size);
   }
 
   void fit_bounds() {
@@ -291,16 +285,7 @@ class Scene_builder {
     }
   }
 
-  // The labels the poles have at the stage shown; empty for a method that labels none.
-  std::vector<Label> labels_at_this_stage() const {
-    const auto& events = r_.propagation.events;
-    if (r_.propagation.labels.empty()) return {};
-    if (request_.stage != Stage::propagation || request_.step < 0) return r_.propagation.labels;
-    std::vector<Label> labels(r_.poles.poles.size(), Label::unlabelled);
-    const std::size_t shown = std::min<std::size_t>(request_.step, events.size());
-    for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
-    return labels;
-  }
+  std::vector<Label> labels_at_this_stage() const { return labels_at_stage(r_, request_); }
 
   // A layer of the balls of `poles`, thinned to `ball_limit` evenly (an empty one stays out of
   // the legend; the layer polar-balls names them all, as --layers takes it).

@@ -8,6 +8,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "scene/layer_helpers.hpp"
 #include "scene/palette.hpp"
 #include "scene/simplex_geometry.hpp"
 
@@ -209,14 +210,7 @@ class Section_builder {
 
   Layer& add(const char* id, const std::string& label, Primitive primitive, Color color,
              float size) {
-    Layer layer;
-    layer.id = id;
-    layer.label = label;
-    layer.primitive = primitive;
-    layer.color = color;
-    layer.size = size;
-    layers_.push_back(std::move(layer));
-    return layers_.back();
+    return add_layer(layers_, id, label, primitive, color, size);
   }
 
   Vec3 lifted(const Vec3& p, float times = 1) const {
@@ -354,16 +348,7 @@ class Section_builder {
   // The labels the poles have at the stage shown, as the scene builder gives them: during the
   // labelling replay, those given so far; else the final ones. Empty for a method that labels
   // none.
-  std::vector<Label> labels_at_this_stage() const {
-    std::vector<Label> labels = r_.propagation.labels;
-    if (request_.stage == Stage::propagation && request_.step >= 0 && !labels.empty()) {
-      labels.assign(r_.poles.poles.size(), Label::unlabelled);
-      const auto& events = r_.propagation.events;
-      const std::size_t shown = std::min<std::size_t>(request_.step, events.size());
-      for (std::size_t i = 0; i < shown; ++i) labels[events[i].pole] = events[i].label;
-    }
-    return labels;
-  }
+  std::vector<Label> labels_at_this_stage() const { return labels_at_stage(r_, request_); }
 
   // The polar balls the plane cuts, as the circles of the cut (the paper's polar circles, in
   // any plane): inner and outer apart by the labels the stage knows, every ball_every-th pole,
