@@ -426,6 +426,16 @@ TEST(Cli, RenderAnimatesTheReplayAndTheStages) {
   EXPECT_EQ(gif_bytes.substr(0, 6), "GIF89a");
   EXPECT_NE(gif_bytes.find("NETSCAPE2.0"), std::string::npos);
   EXPECT_EQ(gif_bytes.back(), ';');  // the trailer
+  // The carving replays too, in 2D and 3D.
+  for (const std::string& carving :
+       {std::string("render --example star --method paper --stage carving"),
+        std::string("render --example bumpy --method robust --stage carving")}) {
+    const std::string film = output_path("carving.webp");
+    ASSERT_EQ(
+        run_sculpt(carving + " --animate replay --frames 6 --size 200x150 -o " + film).exit_code, 0)
+        << carving;
+    EXPECT_GE(webp_frames(read_file(film)), 4u) << carving;
+  }
   const std::string refused = output_path("refused.webp");
   const Command_result no_replay =
       run_sculpt("render --example blob --method crust --animate replay -o " + refused);

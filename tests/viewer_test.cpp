@@ -326,6 +326,34 @@ TEST(Viewer, ASectionShowsTheCellsKeptAndSculptedAway) {
   std::cout << "section: " << kept << " of the view kept cells, " << away << " sculpted away\n";
 }
 
+// The carving replayed in the window: `replay carving` shows the hull whole and plays it, the
+// step's cells lit, to the solid; a stage that does not replay is refused.
+TEST(Viewer, TheCarvingReplaysFromTheHullToTheSolid) {
+  const std::string start = testing::output_path("viewer-carving-start.png"),
+                    middle = testing::output_path("viewer-carving-middle.png"),
+                    end = testing::output_path("viewer-carving-end.png");
+  ASSERT_EQ(run_viewer_script("carving",
+                              "example star\nmethod paper\nwait\nreplay carving\nstep 0\n"
+                              "frames 2\nscreenshot " +
+                                  start + "\nstep 12\nframes 2\nscreenshot " + middle +
+                                  "\nreplay carving 100\nwait-replay\nframes 2\nscreenshot " + end +
+                                  "\nlink\nreplay solid\nquit\n"),
+            1);  // the last command is refused: the solid does not replay
+  const auto share = [](const std::string& path, scene::Color colour) {
+    return share_of_colour(render::read_png(path), colour);
+  };
+  EXPECT_EQ(share(start, scene::palette::sculpted_away), 0.0);
+  EXPECT_GT(share(middle, scene::palette::sculpted_away), 0.002);
+  EXPECT_GT(share(middle, scene::palette::just_removed), 0.0);
+  // Played to its end: the last step's cells are lit, and the rest sculpted away.
+  EXPECT_GT(share(end, scene::palette::sculpted_away),
+            share(middle, scene::palette::sculpted_away));
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/carving.log");
+  EXPECT_NE(log.find("--stage carving"), std::string::npos) << log;
+  EXPECT_NE(log.find("replay propagation (the labelling) or replay carving"), std::string::npos)
+      << log;
+}
+
 // The colour-blind palette redraws the picture: the paper's red poles become vermillion.
 TEST(Viewer, TheColourBlindPaletteRedrawsThePicture) {
   const std::string paper = testing::output_path("viewer-palette-paper.png"),
@@ -382,7 +410,7 @@ TEST(Viewer, RefusesCommandsThatDoNotApplyToWhatIsShown) {
   refused("refuse-clip-2d", "example star\nwait\nclip 0.5 0 0", "this is a curve");
   refused("refuse-edit-3d", "example sphere\nwait\nedit on", "this is a surface");
   refused("refuse-neighbourhood", "example sphere\nwait\nneighbourhood on", "pick a sample first");
-  refused("refuse-step", "example star\nmethod boissonnat\nwait\nstep 30", "no replay");
+  refused("refuse-step", "example star\nmethod crust\nwait\nstep 30", "no replay");
 }
 
 // Mistakes are named with what was meant: a stage name, the stages listed; the kind a script

@@ -68,6 +68,32 @@ std::string solid(Method method, int dimension) {
   }
 }
 
+// The carving replay (scene/carving_replay.hpp): what one step is, by method.
+std::string carving(Method method, Surface_kind kind, int dimension) {
+  if (joins_neighbours(method, kind, dimension))
+    return "No cells are carved here: a bordered curve bounds no region, so the robust method "
+           "joins each sample to its nearest neighbours instead (the NN-crust's rule, keeping "
+           "the curve's ends), and there is no hull to carve.";
+  const std::string ball = dimension == 2 ? "circumcircle" : "circumball";
+  if (method == Method::boissonnat)
+    return "Boissonnat's sculpting step by step: at each step the removable " + cell(dimension) +
+           " whose circumsphere bulges farthest beyond the boundary leaves, while the boundary "
+           "stays a polyhedron, until every sample is on it. Watch the concavities open from "
+           "the outside in.";
+  if (inserts_poles(method, kind, dimension))
+    return "The sculpting as the paper does it (sec. 3.3): the poles are inserted one by one, "
+           "and a pole inserted into a Delaunay triangulation destroys every " +
+           cell(dimension) + " whose " + ball +
+           " holds it. Each step inserts one pole and shows the hull's " + cells(dimension) +
+           " it destroys, highlighted" + (dimension == 2 ? ", with their " + ball + "s" : "") +
+           ". What is left when the last pole is in is the solid. The poles go in the order "
+           "listed; any order ends at the same triangulation.";
+  return "The robust method's carving step by step: from the outside in, one " + cell(dimension) +
+         " at a time, each cell judged outer (an outer pole in its " + ball +
+         ", or its centre in an outer ball's power cell) leaves when its removal keeps the "
+         "boundary a manifold; some leave later to expose a sample buried in the solid.";
+}
+
 std::string surface(Method method, Surface_kind kind, int dimension) {
   std::string what = "The reconstruction: " + facets(dimension) +
                      (interpolates(method) ? " through the samples" : " near the samples");
@@ -159,6 +185,8 @@ std::string explanation(Method method, Surface_kind kind, int dimension, scene::
                  : "The outer concave poles (OUP): outer, but not convex, so they sit in the "
                    "concavities. The cells whose circumball holds one are outside the shape; "
                    "inserting them breaks those cells (sec. 3.2).";
+    case Stage::carving:
+      return carving(method, kind, dimension);
     case Stage::sculpted_delaunay:
       if (kind == Surface_kind::bordered && inserts_poles(method, kind, dimension)) {
         return "DT(S + UP): the samples triangulated with every labelled pole that is not "

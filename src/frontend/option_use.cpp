@@ -136,9 +136,12 @@ std::string unused_drawing_option(const Shot& shot, const scene::Scene& scene, S
                named("--clip", "clip", spelling) + " cuts away instead)";
     }
   }
-  if (shot.step != defaults.step && shot.stage != "propagation") {
+  if (scene::Stage stage; shot.step != defaults.step &&
+                          !(scene::parse_stage(shot.stage, stage) && scene::replays(stage))) {
     return named("--step", "step", spelling) +
-           " replays the labelling at the stage propagation; this is the stage " + shot.stage;
+           " chooses a moment of a replay, at the stages propagation, carving and candidates; "
+           "this is the stage " +
+           shot.stage;
   }
   if ((shot.smooth && !has_layer("surface")) ||
       (shot.wireframe && !has_layer("surface") && !has_layer("wireframe"))) {
@@ -180,12 +183,18 @@ std::string unused_animation_option(const Shot& shot, Spelling spelling) {
     }
     return "";
   }
-  if (shot.stage != defaults.stage || shot.step != defaults.step) {
-    return named(shot.stage != defaults.stage ? "--stage" : "--step",
-                 shot.stage != defaults.stage ? "stage" : "step", spelling) +
+  // A replay's stage says which replay: the labelling's (propagation) or the carving's.
+  scene::Stage stage;
+  const bool replay_stage =
+      shot.animate == "replay" && scene::parse_stage(shot.stage, stage) && scene::replays(stage);
+  if ((shot.stage != defaults.stage && !replay_stage) || shot.step != defaults.step) {
+    return named(shot.stage != defaults.stage && !replay_stage ? "--stage" : "--step",
+                 shot.stage != defaults.stage && !replay_stage ? "stage" : "step", spelling) +
            " chooses one picture; an animation " +
-           (shot.animate == "replay" ? "replays the labelling step by step"
-                                     : "draws every stage in order");
+           (shot.animate == "replay"
+                ? "replays the labelling (or, with the stage carving or candidates, that stage) "
+                  "step by step"
+                : "draws every stage in order");
   }
   if (shot.animate == "stages" && shot.frames != defaults.frames) {
     return named("--frames", "frames", spelling) +

@@ -66,6 +66,7 @@ inline Pseudo_code paper_pseudo_code() {
   code.lines_of_stage = common_stage_lines({2, 3});
   code.lines_of_stage.insert({{Stage::seeds, {4, 5}},
                               {Stage::outer_concave, {14}},
+                              {Stage::carving, {15}},
                               {Stage::sculpted_delaunay, {15}},
                               {Stage::solid, {16}},
                               {Stage::surface, {17}}});
@@ -117,6 +118,7 @@ inline Pseudo_code bordered_surface_pseudo_code(Pseudo_code code, int first_seed
                                           "surface <- facets of S with an outer apex",
                                       });
   code.lines_of_stage[Stage::outer_concave] = {up};
+  code.lines_of_stage[Stage::carving] = {up + 1};
   code.lines_of_stage[Stage::sculpted_delaunay] = {up + 1};
   code.lines_of_stage[Stage::solid] = {up + 2};
   code.lines_of_stage[Stage::surface] = {up + 3};
@@ -159,6 +161,7 @@ inline Pseudo_code robust_pseudo_code() {
                         "surface <- facets solid | outside",
                     });
   code.lines_of_stage.insert({{Stage::outer_concave, {carving}},
+                              {Stage::carving, {carving + 1, carving + 2}},
                               {Stage::sculpted_delaunay, {carving + 1, carving + 2}},
                               {Stage::solid, {carving + 3}},
                               {Stage::surface, {carving + 4}}});
@@ -180,7 +183,8 @@ inline Pseudo_code open_curves_pseudo_code() {
   code.lines_of_stage = common_stage_lines({2});
   code.lines_of_stage.insert({{Stage::seeds, {3}},
                               {Stage::outer_concave, {4}},
-                              {Stage::sculpted_delaunay, {8, 6, 7}},  // the offers, no carving
+                              {Stage::carving, {8, 6, 7}},  // the offers, no carving
+                              {Stage::sculpted_delaunay, {8, 6, 7}},
                               {Stage::solid, {9}},
                               {Stage::surface, {9}}});
   code.lines_of_reason = {{Label_reason::convex_seed, {4}},
@@ -372,11 +376,8 @@ inline Pseudo_code boissonnat_pseudo_code() {
       "    solid <- solid - c",
       "surface <- facets solid | rest",
   };
-  code.lines_of_stage = {{Stage::samples, {0}},
-                         {Stage::delaunay, {0}},
-                         {Stage::hull, {1}},
-                         {Stage::solid, {7, 3}},
-                         {Stage::surface, {8}}};
+  code.lines_of_stage = {{Stage::samples, {0}},    {Stage::delaunay, {0}}, {Stage::hull, {1}},
+                         {Stage::carving, {7, 3}}, {Stage::solid, {7, 3}}, {Stage::surface, {8}}};
   return code;
 }
 

@@ -23,6 +23,7 @@
 #include "io/point_reader.hpp"
 #include "render/animation.hpp"
 #include "render/camera.hpp"
+#include "scene/carving_replay.hpp"
 #include "scene/clipping.hpp"
 #include "scene/colours.hpp"
 #include "shapes/shapes.hpp"
@@ -394,15 +395,25 @@ std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& r
           }
           return;
         }
-        if (!scene::has_stage(r.options.method, D, scene::Stage::propagation))
+        // The replay of the stage asked for, when it is one (carving, candidates); else the
+        // labelling's.
+        scene::Stage stage = scene::Stage::propagation;
+        if (scene::Stage asked; scene::parse_stage(shot.stage, asked) && scene::replays(asked))
+          stage = asked;
+        const bool labelling = stage == scene::Stage::propagation;
+        if (!scene::has_stage(r.options.method, D, stage))
           throw io::Error(std::string("the method ") + to_string(r.options.method) +
-                          " labels no poles: it has no replay (animate stages instead)");
-        const long events = long(r.propagation.events.size());
-        if (events == 0) throw io::Error("no pole was labelled: there is no replay to animate");
+                          (labelling ? " labels no poles: it has no replay (animate stages "
+                                       "instead)"
+                                     : " has no stage " + shot.stage + " to replay"));
+        const long events = scene::replay_length(r, stage);
+        if (events == 0)
+          throw io::Error(labelling ? "no pole was labelled: there is no replay to animate"
+                                    : "the stage " + shot.stage + " has no step to animate");
         const long count = std::clamp<long>(shot.frames, 2, events + 1);
         for (long k = 0; k < count; ++k) {
           frames.push_back(shot);
-          frames.back().stage = scene::stage_id(scene::Stage::propagation);
+          frames.back().stage = scene::stage_id(stage);
           frames.back().step = (k * events + (count - 1) / 2) / (count - 1);
         }
       },
@@ -461,7 +472,7 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
     bool framed_far = false;               // the camera frames a far pole with the shape
     for (const Shot& frame : animation_frames(shot, shown)) {
       nlohmann::json followed;
-      if (camera && shot.animate == "replay" && frame.step > 0) {
+      if (camera && frame.stage == "propagation" && frame.step > 0) {
         const glm::vec3 pole = std::visit(
             [&](const auto& r) {
               return render::to_glm(

@@ -736,7 +736,7 @@ uint8 RGBA array (matplotlib's imshow shows it).
 stage         a name of sculpt.stages(result.method, result.dimension): 'samples', 'delaunay',
               'voronoi', 'poles', 'propagation', 'surface', ...
 size          (width, height) in pixels, or one number for a square
-step          propagation: the first `step` labelling events; -1: all
+step          a replay (propagation, carving): its first `step` events or steps; -1: all
 focus_sample  a sample whose Voronoi cell, poles, polar balls and inscribed cubes are drawn
 focus_pole    a pole whose polar ball, and the pole that labelled it, are drawn
 layers        only these layers (their names are in the error message of a wrong one)

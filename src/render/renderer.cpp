@@ -7,7 +7,9 @@
 #include <cmath>
 #include <glm/gtc/type_ptr.hpp>
 #include <stdexcept>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "render/gl.hpp"
 #include "render/shader_sources.hpp"
@@ -53,6 +55,34 @@ GLint uniform(GLuint program, const char* name) {
 
 void set_color(GLuint program, const scene::Color& c) {
   glUniform4f(uniform(program, "color"), c.r, c.g, c.b, c.a);
+}
+
+// The width of a line of text in stb_easy_font's units (pixels at scale 1).
+float text_width(const std::string& text) {
+  return float(stb_easy_font_width(const_cast<char*>(text.c_str())));
+}
+
+// The text in lines at most `width` wide, broken at spaces (a word wider than that stands alone).
+std::vector<std::string> wrapped(const std::string& text, float width) {
+  std::vector<std::string> lines;
+  if (text.empty()) return lines;
+  std::string current;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    const std::string longer = current.empty() ? word : current + " " + word;
+    if (!current.empty() && text_width(longer) > width) {
+      lines.push_back(current);
+      current = word;
+    } else {
+      current = longer;
+    }
+    start = end + 1;
+  }
+  lines.push_back(current);
+  return lines;
 }
 
 }  // namespace
@@ -375,6 +405,10 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
         {color, {x, y, 0, x + w, y, 0, x + w, y + h, 0, x, y, 0, x + w, y + h, 0, x, y + h, 0}});
   };
   const float line = 12 * scale, margin = 8 * scale;
+  // A title wider than the picture is wrapped at spaces, never clipped.
+  const std::vector<std::string> title_lines =
+      options.title ? wrapped(scene_.title, (float(width) - 2 * margin) / scale)
+                    : std::vector<std::string>{};
   if (options.legend) {
     std::vector<const scene::Layer*> listed;
     float widest = 0;
@@ -389,13 +423,12 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
       // corner where it covers the least of the data (the top left when that is clear).
       const float pad = 3 * scale;
       const float w = 12 * scale + scale * widest + 2 * pad, h = line * listed.size() + 2 * pad;
-      const float title_width =
-          options.title
-              ? scale * float(stb_easy_font_width(const_cast<char*>(scene_.title.c_str()))) +
-                    2 * margin
-              : 0.0f;
-      const auto [x, y] = emptiest_corner(camera, width, height, w + 2, h + 2, margin - pad - 1,
-                                          title_width, 12 * scale + margin, options);
+      float title_width = 0;
+      for (const auto& part : title_lines)
+        title_width = std::max(title_width, scale * text_width(part) + 2 * margin);
+      const auto [x, y] = emptiest_corner(
+          camera, width, height, w + 2, h + 2, margin - pad - 1, title_width,
+          line * float(std::max<std::size_t>(title_lines.size(), 1)) + margin, options);
       left = x + pad + 1;
       top = y + pad + 1;
       box(x, y, w + 2, h + 2, {0.55f, 0.55f, 0.55f, 1});
@@ -412,8 +445,9 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
       y += line;
     }
   }
-  if (options.title && !scene_.title.empty()) {
-    text(margin, height - margin - 8 * scale, scene_.title, {0.1f, 0.1f, 0.1f, 1});
+  for (std::size_t i = 0; i < title_lines.size(); ++i) {
+    const float from_bottom = float(title_lines.size() - 1 - i) * line;
+    text(margin, height - margin - 8 * scale - from_bottom, title_lines[i], {0.1f, 0.1f, 0.1f, 1});
   }
 
   glDisable(GL_DEPTH_TEST);

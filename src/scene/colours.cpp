@@ -29,6 +29,8 @@ const std::vector<Counterpart>& counterparts() {
       {p::voronoi_edge, {0.000f, 0.620f, 0.451f}},
       {p::solid, {0.940f, 0.890f, 0.550f}},
       {p::sculpted_away, {0.500f, 0.600f, 0.500f}},
+      {p::just_removed, {0.835f, 0.369f, 0.000f}},
+      {p::carving_circle, {0.950f, 0.800f, 0.000f}},
       {p::surface, {0.800f, 0.800f, 0.800f}},
       {p::section_outside, {0.930f, 0.930f, 0.930f}},
       {p::section_edge, {0.400f, 0.400f, 0.550f}},

@@ -50,6 +50,9 @@ inline constexpr Color section_edge{0.45f, 0.45f, 0.50f};
 inline constexpr Color cut_cell_edge{0.15f, 0.15f, 0.20f};  // the cells' edges on a section
 // What sculpting removed from the hull, beside what it kept (Kuo & Yau, Figs. 1 and 2).
 inline constexpr Color sculpted_away{0.95f, 0.60f, 0.55f};
+// The cells the step shown of the carving replay takes away: strong, where the eye must go.
+inline constexpr Color just_removed{0.95f, 0.00f, 0.80f};
+inline constexpr Color carving_circle{0.65f, 0.50f, 0.00f};  // and their circumcircles (2D)
 inline constexpr Color surface{0.78f, 0.80f, 0.86f};
 inline constexpr Color wireframe{0.15f, 0.15f, 0.20f};
 inline constexpr Color curve{0.05f, 0.05f, 0.05f};

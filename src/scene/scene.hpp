@@ -49,6 +49,7 @@ enum class Stage {
   seeds,              // convex poles (outer seeds) and their partners (inner seeds)
   propagation,        // the labelling after `step` events
   outer_concave,      // inner poles and the outer concave poles OUP (UP when bordered)
+  carving,            // the hull's cells leaving it, after `step` steps (carving_replay.hpp)
   sculpted_delaunay,  // DT(S ∪ OUP)
   crust_delaunay,     // the crust's DT(S ∪ V), V the Voronoi vertices (2D) or the poles (3D)
   candidates,         // crust and co-cone (3D): the triangles chosen, and those pruned
@@ -64,6 +65,9 @@ const std::vector<Stage>& all_stages();  // of every method, in order
 // delaunay, surface; the alpha shape samples, delaunay, solid, surface.
 const std::vector<Stage>& stages_of(Method method, int dimension);
 bool has_stage(Method method, int dimension, Stage stage);
+// Whether a stage is replayed step by step (Request::step): propagation (the labelling's
+// events), carving (the hull's cells leaving it), candidates (the pruning, triangle by triangle).
+bool replays(Stage stage);
 // Throws std::invalid_argument naming the method's stages when it has no such stage.
 void require_stage(Method method, int dimension, Stage stage);
 const char* stage_id(Stage stage);     // "delaunay", "outer-concave", ...
@@ -81,7 +85,8 @@ struct Clip {
 
 struct Request {
   Stage stage = Stage::surface;
-  long step = -1;          // propagation: how many labelling events have happened; -1 = all
+  // A replay (propagation, carving, candidates): how many events or steps have happened; -1: all.
+  long step = -1;
   int focus_sample = -1;   // show this sample's Voronoi cell, poles, polar balls, inscribed cubes
   int focus_pole = -1;     // show this pole's ball and the pole that labelled it
   bool wireframe = false;  // surface: draw its edges too

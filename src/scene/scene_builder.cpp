@@ -7,6 +7,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "carving_replay.hpp"
 #include "clipping.hpp"
 #include "colours.hpp"
 #include "core/facet_orientation.hpp"
@@ -62,6 +63,9 @@ class Scene_builder {
         labelled_poles(r_.propagation.labels, /*only_inserted=*/r_.options.method == Method::paper);
         contradicted_poles(r_.propagation.labels);
         break;
+      case Stage::carving:
+        carving();
+        break;
       case Stage::sculpted_delaunay:
         if (joins_neighbours(r_.options.method, r_.options.kind, D)) {
           scene_.title = "No cells carved: open curves join each sample to its nearest neighbours";
@@ -103,8 +107,9 @@ class Scene_builder {
     if (request_.focus_sample >= 0) focus(request_.focus_sample);
     if (request_.focus_pole >= 0) focus_pole(request_.focus_pole);
     // Dense samples would cover a shaded surface or solid: there they are shown when asked for.
-    const bool shaded = D == 3 && (request_.stage == Stage::surface ||
-                                   request_.stage == Stage::solid || request_.stage == Stage::hull);
+    const bool shaded =
+        D == 3 && (request_.stage == Stage::surface || request_.stage == Stage::solid ||
+                   request_.stage == Stage::hull || request_.stage == Stage::carving);
     if (!shaded || requested("samples")) samples();
     scene_.layers.assign(std::make_move_iterator(layers_.begin()),
                          std::make_move_iterator(layers_.end()));
@@ -554,65 +559,124 @@ class Scene_builder {
       scene_.title = "Boissonnat: the cells left when every sample is on the boundary";
     if (alpha) scene_.title = "Alpha solid: the cells of circumradius below alpha";
     if (tight) scene_.title = "Tight co-cone: the cells left after peeling";
+    const std::string label = alpha   ? "alpha solid (tetrahedra)"
+                              : tight ? "cells not peeled (tetrahedra)"
+                                      : "sculpted solid (all-sample tetrahedra)";
+    cut_through_whole_cells(
+        {"solid", label, palette::solid, &r_.solid},
+        {"sculpted-away", "sculpted away (" + std::to_string(removed.size()) + " tetrahedra)",
+         palette::sculpted_away, &removed});
+  }
+
+  // The user's clip, or else the middle of the box across z; the title says which.
+  void cut_through_whole_cells(const Whole_cells& solid, const Whole_cells& removed) {
     Clip middle;
     middle.elevation = 90;  // the normal +z: the upper half goes
     const Clip& clip = request_.clipped ? request_.clip : middle;
     scene_.title += request_.clipped ? "; whole cells, cut at the clip plane"
                                      : "; whole cells, those above mid z cut away";
-    const Clip_plane plane = plane_of(scene_, clip);
-    const auto before_the_plane = [&](const std::vector<Cell<D>>& cells) {
-      std::vector<bool> kept(cells.size());
-      for (std::size_t c = 0; c < cells.size(); ++c) {
-        Vec3 centroid{0, 0, 0};
-        for (int v : cells[c]) {
-          const Vec3 p = vec(r_.sites[v]);
-          for (int k = 0; k < 3; ++k) centroid[k] += p[k] / 4;
-        }
-        const float side = plane.side(centroid);
-        kept[c] = side <= 0 && (clip.slab <= 0 || side >= -clip.slab * plane.extent);
-      }
-      return kept;
-    };
-    const Shown_faces solid = shown_faces(r_.solid, before_the_plane(r_.solid));
-    faces_layer(solid.faces, "solid",
-                alpha   ? "alpha solid (tetrahedra)"
-                : tight ? "cells not peeled (tetrahedra)"
-                        : "sculpted solid (all-sample tetrahedra)",
-                palette::solid);
-    std::vector<Face> on_cut = solid.on_cut;
-    if (!removed.empty()) {
-      // The faces between the solid and what was sculpted away are the solid's to draw.
-      const Shown_faces away =
-          shown_faces(removed, before_the_plane(removed), sorted_faces(solid.faces));
-      faces_layer(away.faces, "sculpted-away",
-                  "sculpted away (" + std::to_string(removed.size()) + " tetrahedra)",
-                  palette::sculpted_away);
-      on_cut.insert(on_cut.end(), away.on_cut.begin(), away.on_cut.end());
-    }
-    // A few thousand cut cells' edges tell the tetrahedra apart; more are a dark fog.
-    if (on_cut.size() > 2000 && !requested("cut-cells")) return;
-    Layer& edges =
-        add("cut-cells", "edges of the cells cut", Primitive::lines, palette::cut_cell_edge, 1.0f);
-    edges.cut = true;
-    std::vector<std::pair<int, int>> pairs;
-    for (const auto& f : on_cut) {
-      for (int i = 0; i < 3; ++i) pairs.push_back(std::minmax(f[i], f[(i + 1) % 3]));
-    }
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-    for (const auto& [a, b] : pairs) {
-      edges.positions.push_back(vec(r_.sites[a]));
-      edges.positions.push_back(vec(r_.sites[b]));
-    }
+    whole_cells_cut(layers_, r_.sites, plane_of(scene_, clip), clip.slab, solid, removed,
+                    requested("cut-cells"));
   }
 
-  void faces_layer(const std::vector<Face>& faces, const char* id, const std::string& label,
-                   Color color) {
-    Layer& layer = add(id, label, Primitive::triangles, color, 1.0f);
-    layer.lit = true;
-    layer.cut = true;
-    for (const auto& face : faces) {
-      for (int v : face) layer.positions.push_back(vec(r_.sites[v]));
+  // The sculpting replayed (carving_replay.hpp): the hull's cells still there, those taken away
+  // so far, and those the step shown takes away, with the pole that destroyed them (paper).
+  void carving() {
+    if (!carves_cells(r_.options.method, r_.options.kind, D)) {
+      scene_.title = "No cells carved: open curves join each sample to its nearest neighbours";
+      return;
+    }
+    const Carving_replay replay = carving_replay(r_);
+    const std::size_t shown = request_.step < 0
+                                  ? replay.steps.size()
+                                  : std::min<std::size_t>(request_.step, replay.steps.size());
+    std::vector<Cell<D>> kept, away, just;
+    {
+      std::vector<std::uint8_t> state(r_.delaunay.cells.size(), 0);  // 1 away, 2 just now
+      for (std::size_t i = 0; i < shown; ++i) {
+        for (int c : replay.steps[i].cells) state[c] = i + 1 == shown ? 2 : 1;
+      }
+      for (int c : replay.hull) {
+        const auto& cell = r_.delaunay.cells[c];
+        (state[c] == 0 ? kept : state[c] == 1 ? away : just).push_back(cell);
+      }
+    }
+    const char* method = r_.options.method == Method::boissonnat ? "Boissonnat"
+                         : replay.by_poles                       ? "Sculpting"
+                                                                 : "Carving";
+    scene_.title = std::string(method) + ", " +
+                   (shown == 0 ? "before any cell leaves: the hull's " +
+                                     std::to_string(replay.hull.size()) + " cells"
+                               : describe_step(replay, shown - 1, D));
+    const auto cells = [](std::size_t count) {
+      return "(" + std::to_string(count) +
+             (count == 1 ? (D == 2 ? " triangle)" : " tetrahedron)")
+                         : (D == 2 ? " triangles)" : " tetrahedra)"));
+    };
+    const std::string kept_label = "the hull's cells still there " + cells(kept.size()),
+                      away_label = "taken away before " + cells(away.size()),
+                      just_label = "taken away at this step " + cells(just.size());
+    if constexpr (D == 2) {
+      const auto fill = [&](const std::vector<Cell<D>>& set, const char* id,
+                            const std::string& label, Color colour) {
+        if (set.empty()) return;
+        Layer& layer = add(id, label, Primitive::triangles, colour, 1.0f);
+        for (const auto& cell : set) {
+          for (int v : cell) layer.positions.push_back(vec(r_.sites[v]));
+        }
+      };
+      fill(kept, "solid", kept_label, palette::solid);
+      fill(away, "sculpted-away", away_label, palette::sculpted_away);
+      fill(just, "just-removed", just_label, palette::just_removed);
+      // Their circumcircles: each holds the pole inserted (paper), or an outer pole (robust).
+      if (!just.empty() && just.size() <= 50) {
+        Layer& circles = add("just-removed-circles",
+                             just.size() == 1 ? "its circumcircle" : "their circumcircles",
+                             Primitive::balls, palette::carving_circle, 2.0f);
+        for (const auto& cell : just) {
+          std::array<Point<D>, D + 1> corners;
+          for (int i = 0; i <= D; ++i) corners[i] = r_.sites[cell[i]];
+          const Point<D> centre = circumcenter<D>(corners);
+          circles.positions.push_back(vec(centre));
+          circles.radii.push_back(
+              float(std::hypot(centre[0] - corners[0][0], centre[1] - corners[0][1])));
+        }
+      }
+    } else {
+      if (request_.clipped) {
+        // Cut at the user's plane: what was taken away shows beside what is left.
+        std::vector<Cell<D>> before = away;
+        before.insert(before.end(), just.begin(), just.end());
+        cut_through_whole_cells({"solid", kept_label, palette::solid, &kept},
+                                {"sculpted-away", away_label, palette::sculpted_away, &before});
+      } else {
+        // Seen whole, the hull shrinks towards the solid; what left would only hide it.
+        scene_.title += "; the cells left, seen whole";
+        Clip everything;
+        everything.position = 1;
+        const std::vector<Cell<D>> none;
+        whole_cells_cut(layers_, r_.sites, plane_of(scene_, everything), 0,
+                        {"solid", kept_label, palette::solid, &kept},
+                        {"sculpted-away", away_label, palette::sculpted_away, &none}, false);
+      }
+      // What leaves at this step, whole wherever it lies: the eye finds the step there.
+      if (!just.empty()) {
+        Layer& layer =
+            add("just-removed", just_label, Primitive::triangles, palette::just_removed, 1.0f);
+        layer.lit = true;
+        layer.cut = true;
+        for (const auto& cell : just) {
+          for (const auto& f : Facet_orientation<3>::vertex) {
+            for (int i : f) layer.positions.push_back(vec(r_.sites[cell[i]]));
+          }
+        }
+      }
+    }
+    // An outer pole, in its colour: the step's story is the cells, so no other pole is drawn.
+    if (shown > 0 && replay.steps[shown - 1].pole >= 0) {
+      Layer& pole = add("current-pole", "pole just inserted", Primitive::points,
+                        palette::outer_pole(D), D == 2 ? 12 : 9);
+      pole.positions.push_back(vec(r_.poles.poles[replay.steps[shown - 1].pole].center));
     }
   }
 
@@ -669,14 +733,22 @@ class Scene_builder {
 
   // The triangles a filtering method chose (shaded) and those the pruning removed (red edges):
   // the surface is the outer boundary of the shaded ones.
+  // The candidates, and those pruned: all of them, or (a replay) the first `step` in the order
+  // the pruning took them, the last of those lit.
   void candidates() {
     const auto& candidates = r_.candidates;
+    const std::size_t shown = request_.step < 0
+                                  ? candidates.pruned.size()
+                                  : std::min<std::size_t>(request_.step, candidates.pruned.size());
+    if (shown < candidates.pruned.size())
+      scene_.title +=
+          ", pruned " + std::to_string(shown) + " of " + std::to_string(candidates.pruned.size());
     Layer& kept = add("candidates",
-                      "candidates kept (" +
-                          std::to_string(candidates.chosen.size() - candidates.pruned.size()) + ")",
+                      "candidates kept (" + std::to_string(candidates.chosen.size() - shown) + ")",
                       Primitive::triangles, palette::solid, 1.0f);
     kept.lit = true;
-    std::vector<Facet<D>> pruned = candidates.pruned;
+    std::vector<Facet<D>> pruned(candidates.pruned.begin(),
+                                 candidates.pruned.begin() + long(shown));
     for (auto& f : pruned) std::sort(f.begin(), f.end());
     std::sort(pruned.begin(), pruned.end());
     for (const auto& facet : candidates.chosen) {
@@ -685,18 +757,25 @@ class Scene_builder {
       if (std::binary_search(pruned.begin(), pruned.end(), sorted)) continue;
       for (int v : facet) kept.positions.push_back(vec(r_.sites[v]));
     }
-    if (!candidates.pruned.empty()) {
+    if (shown > 0) {
       Layer& removed =
           add("pruned",
               std::string(candidates.rims_kept ? "pruned, rims of holes kept (" : "pruned (") +
-                  std::to_string(candidates.pruned.size()) + ")",
+                  std::to_string(shown) + ")",
               Primitive::lines, palette::non_manifold, 2.0f);
-      for (const auto& facet : candidates.pruned) {
+      for (std::size_t i = 0; i < shown; ++i) {
+        const auto& facet = candidates.pruned[i];
         for (int j = 0; j < D; ++j) {
           removed.positions.push_back(vec(r_.sites[facet[j]]));
           removed.positions.push_back(vec(r_.sites[facet[(j + 1) % D]]));
         }
       }
+    }
+    // During the replay, the triangle the step prunes, filled where the eye must go.
+    if (request_.step > 0 && shown > 0) {
+      Layer& now = add("just-removed", "pruned at this step", Primitive::triangles,
+                       palette::just_removed, 1.0f);
+      for (int v : candidates.pruned[shown - 1]) now.positions.push_back(vec(r_.sites[v]));
     }
     // The samples the co-cone does not trust, and those the tight co-cone found no umbrella at.
     const auto marked = [&](const char* id, const std::string& title,

@@ -3,11 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <map>
 #include <stdexcept>
 
+#include "scene/carving_replay.hpp"
 #include "scene/layer_helpers.hpp"
 #include "scene/palette.hpp"
 #include "scene/simplex_geometry.hpp"
@@ -158,6 +160,9 @@ class Section_builder {
         });
         break;
       }
+      case Stage::carving:
+        carving();
+        break;
       case Stage::crust_delaunay: {
         require(r_.crust.delaunay);
         scene_.title = "Section of DT(S + P): the samples and their poles";
@@ -179,7 +184,8 @@ class Section_builder {
     if (request_.polar_balls || asked("polar-balls") || asked("inner-balls") ||
         asked("outer-balls"))
       polar_circles();
-    poles_near_the_plane();
+    // The carving's story is the cells and the pole inserted: no other pole is drawn.
+    if (request_.stage != Stage::carving) poles_near_the_plane();
     samples_near_the_plane();
     for (auto& layer : layers_) {
       layer.cut = true;  // already at the plane: no cut-away after
@@ -225,11 +231,40 @@ class Section_builder {
                   2);
   }
 
+  // The carving replay at its step (carving_replay.hpp): the hull's cells still there, those
+  // taken away before, those the step takes away.
+  void carving() {
+    require(r_.delaunay);
+    if (!carves_cells(r_.options.method, r_.options.kind, 3)) {
+      scene_.title = "No cells carved";
+      return;
+    }
+    const Carving_replay replay = carving_replay(r_);
+    const std::size_t shown = request_.step < 0
+                                  ? replay.steps.size()
+                                  : std::min<std::size_t>(request_.step, replay.steps.size());
+    std::vector<std::uint8_t> kind(r_.delaunay.cells.size(), 2);  // outside the hull
+    for (int c : replay.hull) kind[c] = 0;
+    for (std::size_t i = 0; i < shown; ++i) {
+      for (int c : replay.steps[i].cells) kind[c] = i + 1 == shown ? 3 : 1;
+    }
+    scene_.title = "Section of the carving, " + (shown == 0 ? std::string("before any cell leaves")
+                                                            : describe_step(replay, shown - 1, 3));
+    const Cell<3>* first = r_.delaunay.cells.data();
+    cells_by_kind(r_.delaunay.cells, [&](const Cell<3>& cell) { return int(kind[&cell - first]); });
+    if (shown > 0 && replay.steps[shown - 1].pole >= 0) {
+      Layer& pole =
+          add("current-pole", "pole just inserted", Primitive::points, palette::outer_pole_3d, 9);
+      pole.positions.push_back(on_plane(vec(r_.poles.poles[replay.steps[shown - 1].pole].center)));
+    }
+  }
+
   // The cut of every cell, filled by its kind: 0 inside (the hull's or the solid's), 1 sculpted
-  // away, 2 outside (a box corner or an inserted pole among its corners).
+  // away, 2 outside (a box corner or an inserted pole among its corners), 3 taken away at the
+  // carving replay's step.
   template <class Kind>
   void cells_by_kind(const std::vector<Cell<3>>& cells, Kind kind) {
-    std::vector<Vec3> fill[3], outline;
+    std::vector<Vec3> fill[4], outline;
     float sides_in_hull = 0, area_in_hull = 0;  // of the cells of the hull: kinds 0 and 1
     for (const auto& cell : cells) {
       std::array<Vec3, 4> corners;
@@ -242,20 +277,24 @@ class Section_builder {
       for (std::size_t p = drawn; p + 1 < outline.size(); p += 2)
         sides_in_hull += distance(outline[p], outline[p + 1]);
     }
-    const bool sculpting =
-        request_.stage == Stage::solid || request_.stage == Stage::sculpted_delaunay;
+    const bool sculpting = request_.stage == Stage::solid ||
+                           request_.stage == Stage::sculpted_delaunay ||
+                           request_.stage == Stage::carving;
     // The alpha shape keeps cells without carving the hull: the others are not sculpted away.
     const Method m = r_.options.method;
     const bool carves = sculpts(m) || m == Method::boissonnat || m == Method::tight_cocone;
     const bool crust = request_.stage == Stage::crust_delaunay;
-    const char* labels[3] = {sculpting ? "cells kept (cut)"
+    const char* labels[4] = {sculpting ? "cells kept (cut)"
                              : crust   ? "cells of samples only (cut)"
                                        : "cells of the hull (cut)",
                              carves ? "cells sculpted away (cut)" : "cells not in the solid (cut)",
-                             crust ? "cells with a pole (cut)" : "cells with a box corner (cut)"};
-    const char* ids[3] = {"section-inside", "section-away", "section-outside"};
-    const Color colours[3] = {palette::solid, palette::sculpted_away, palette::section_outside};
-    for (int k = 0; k < 3; ++k) {
+                             crust ? "cells with a pole (cut)" : "cells with a box corner (cut)",
+                             "cells taken away at this step (cut)"};
+    const char* ids[4] = {"section-inside", "section-away", "section-outside",
+                          "section-just-removed"};
+    const Color colours[4] = {palette::solid, palette::sculpted_away, palette::section_outside,
+                              palette::just_removed};
+    for (int k = 0; k < 4; ++k) {
       if (fill[k].empty()) continue;
       add(ids[k], labels[k], Primitive::triangles, colours[k], 1.0f).positions = std::move(fill[k]);
     }

@@ -8,21 +8,22 @@
 namespace sculpt::scene {
 
 const std::vector<Stage>& all_stages() {
-  static const std::vector<Stage> stages = {
-      Stage::samples,        Stage::delaunay,      Stage::hull,
-      Stage::voronoi,        Stage::poles,         Stage::seeds,
-      Stage::propagation,    Stage::outer_concave, Stage::sculpted_delaunay,
-      Stage::crust_delaunay, Stage::candidates,    Stage::solid,
-      Stage::surface};
+  static const std::vector<Stage> stages = {Stage::samples,        Stage::delaunay,
+                                            Stage::hull,           Stage::voronoi,
+                                            Stage::poles,          Stage::seeds,
+                                            Stage::propagation,    Stage::outer_concave,
+                                            Stage::carving,        Stage::sculpted_delaunay,
+                                            Stage::crust_delaunay, Stage::candidates,
+                                            Stage::solid,          Stage::surface};
   return stages;
 }
 
 const std::vector<Stage>& stages_of(Method method, int dimension) {
   static const std::vector<Stage> sculpting = {
-      Stage::samples,     Stage::delaunay,      Stage::hull,
-      Stage::voronoi,     Stage::poles,         Stage::seeds,
-      Stage::propagation, Stage::outer_concave, Stage::sculpted_delaunay,
-      Stage::solid,       Stage::surface};
+      Stage::samples,           Stage::delaunay,      Stage::hull,
+      Stage::voronoi,           Stage::poles,         Stage::seeds,
+      Stage::propagation,       Stage::outer_concave, Stage::carving,
+      Stage::sculpted_delaunay, Stage::solid,         Stage::surface};
   static const std::vector<Stage> curve_crust = {Stage::samples, Stage::delaunay, Stage::voronoi,
                                                  Stage::crust_delaunay, Stage::surface};
   static const std::vector<Stage> surface_crust = {
@@ -41,7 +42,7 @@ const std::vector<Stage>& stages_of(Method method, int dimension) {
                                                   Stage::poles,   Stage::candidates, Stage::solid,
                                                   Stage::surface};
   static const std::vector<Stage> boissonnat = {Stage::samples, Stage::delaunay, Stage::hull,
-                                                Stage::solid, Stage::surface};
+                                                Stage::carving, Stage::solid,    Stage::surface};
   switch (method) {
     case Method::boissonnat:
       return boissonnat;
@@ -69,6 +70,10 @@ bool has_stage(Method method, int dimension, Stage stage) {
   return std::find(stages.begin(), stages.end(), stage) != stages.end();
 }
 
+bool replays(Stage stage) {
+  return stage == Stage::propagation || stage == Stage::carving || stage == Stage::candidates;
+}
+
 const char* stage_id(Stage stage) {
   switch (stage) {
     case Stage::samples:
@@ -87,6 +92,8 @@ const char* stage_id(Stage stage) {
       return "propagation";
     case Stage::outer_concave:
       return "outer-concave";
+    case Stage::carving:
+      return "carving";
     case Stage::sculpted_delaunay:
       return "sculpted-delaunay";
     case Stage::crust_delaunay:
@@ -119,6 +126,8 @@ const char* stage_title(Stage stage) {
       return "Pole separation";
     case Stage::outer_concave:
       return "Inner poles and outer concave poles";
+    case Stage::carving:
+      return "Sculpting: the hull's cells leaving it";
     case Stage::sculpted_delaunay:
       return "DT(S + OUP)";
     case Stage::crust_delaunay:

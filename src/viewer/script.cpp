@@ -185,6 +185,11 @@ std::string Script::before_frame(Viewer& viewer) {
       }
       continue;
     }
+    if (command == "wait-replay") {  // until the replay playing has reached its end
+      if (viewer.replay_playing()) return "";
+      commands_.pop_front();
+      continue;
+    }
     const std::string line = commands_.front().line;
     commands_.pop_front();
     if (mode_ == Mode::lesson) {
@@ -248,7 +253,8 @@ std::string Script::before_frame(Viewer& viewer) {
     if (command == "help") {
       std::cout
           << "commands: example NAME, open FILE, method NAME, stage ID, next, previous, "
-             "step K, pick-sample K, pick-pole K, clip POS AZ EL [SLAB] | off, "
+             "step K, replay propagation|carving, wait-replay, pick-sample K, pick-pole K, clip "
+             "POS AZ EL [SLAB] | off, "
              "section POS AZ EL | off, "
              "neighbourhood on|off, polar-balls EVERY|off, follow on|off, layer ID on|off, "
              "present on|off, palette paper|colour-blind, picture-scale S, kind "
@@ -293,9 +299,21 @@ std::string Script::before_frame(Viewer& viewer) {
       viewer.step_stage(+1);
     } else if (command == "previous") {
       viewer.step_stage(-1);
+    } else if (command == "replay") {
+      scene::Stage stage;
+      double pace = 0;  // optional: steps a second
+      const bool paced = static_cast<bool>(words >> pace);
+      if (!scene::parse_stage(argument, stage) || !scene::replays(stage) ||
+          (paced && !(pace >= 1 && pace <= 2000))) {
+        fail("'" + line +
+             "': expected replay propagation (the labelling) or replay carving, then optionally "
+             "the steps a second (1 to 2000)");
+        continue;
+      }
+      done(viewer.start_replay(stage, float(pace)));
     } else if (command == "step") {
       if (viewer.has_reconstruction() && !viewer.has_replay()) {
-        fail("'" + line + "': this method has no replay of the labelling");
+        fail("'" + line + "': this method has no replay (of the labelling or the carving)");
         continue;
       }
       if (const auto events = count("a number of events (or -1 for all)", -1, 1L << 30)) {

@@ -163,10 +163,15 @@ class Viewer {
   bool has_reconstruction() const { return reconstruction_ != nullptr; }
   // Whether the last reconstruction asked for failed (a bad file): what is shown is older.
   bool last_job_failed() const { return last_job_failed_; }
-  // The shown reconstruction's dimension (0 before any), whether its method has a replay of the
-  // labelling, and the picked sample (-1: none).
+  // The shown reconstruction's dimension (0 before any), whether its method has a replay (of
+  // the labelling or the carving), and the picked sample (-1: none).
   int shown_dimension() const;
   bool has_replay() const;
+  // Shows a stage that replays (propagation, carving) from its start and plays it, at `pace`
+  // steps a second (0: the labelling at the pace set, a carving in about ten seconds); false
+  // with a message when the method has no such stage or it does not replay.
+  bool start_replay(scene::Stage stage, float pace = 0);
+  bool replay_playing() const { return playing_; }
   int picked_sample() const { return request_.focus_sample; }
   scene::Stage stage() const { return request_.stage; }
   // The Explanation panel's paragraph for the stage on screen ("" before any reconstruction).
@@ -271,8 +276,13 @@ class Viewer {
   // A reconstruction or file that failed, said in the picture, where it cannot be missed.
   void draw_failure_notice(int width, int height);
 
+  // The steps of the replay on screen (the labelling's events, the carving's steps), counted
+  // once per reconstruction and stage.
   long event_count() const;
   const Labelling_event* latest_event() const;
+  mutable std::weak_ptr<const Any_reconstruction> counted_reconstruction_;
+  mutable scene::Stage counted_stage_ = scene::Stage::samples;
+  mutable long counted_events_ = 0;
 
   std::unique_ptr<render::Renderer> renderer_;
   render::Picture_cache picture_cache_;  // the picture, drawn again only when it changes
@@ -307,7 +317,7 @@ class Viewer {
   int cleaning_ = 0;  // auto, jet, none (cleaning_names)
   int method_ = 0;    // index in method_names()
 
-  // Propagation playback.
+  // Replay playback (the labelling, the carving).
   bool playing_ = false;
   float events_per_second_ = 20.0f;
   double playback_clock_ = 0;

@@ -26,7 +26,7 @@ using namespace internals;
 
 bool Viewer::export_animation(const std::string& path, int width, int height, int frames) {
   return export_shot(path, width, height,
-                     request_.stage == scene::Stage::propagation ? "replay" : "stages", frames);
+                     scene::replays(request_.stage) ? "replay" : "stages", frames);
 }
 
 bool Viewer::export_picture(const std::string& path, int width, int height) {

@@ -106,7 +106,7 @@ void Viewer::on_key(int key) {
       step_stage(-1);
       break;
     case GLFW_KEY_SPACE:
-      if (request_.stage == scene::Stage::propagation) explore(), playing_ = !playing_;
+      if (scene::replays(request_.stage)) explore(), playing_ = !playing_;
       break;
     case GLFW_KEY_PERIOD:
       set_step(shown + 1);

@@ -63,7 +63,7 @@ std::vector<std::pair<std::string, std::string>> Viewer::view_options(std::strin
     options.push_back({"kind", to_string(shown_request_.options.kind)});
   if (request_.stage != scene::Stage::surface)
     options.push_back({"stage", scene::stage_id(request_.stage)});
-  if (request_.stage == scene::Stage::propagation && request_.step >= 0)
+  if (scene::replays(request_.stage) && request_.step >= 0)
     options.push_back({"step", std::to_string(request_.step)});
   if (request_.focus_sample >= 0)
     options.push_back({"sample", std::to_string(request_.focus_sample)});

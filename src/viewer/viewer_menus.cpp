@@ -106,7 +106,7 @@ void Viewer::draw_download_items() {
   if (ImGui::MenuItem("Save a picture (PNG)", "P", false, shown))
     export_picture(platform::output_path(download_name(".png")), picture_size_[0],
                    picture_size_[1]);
-  const bool replay = request_.stage == scene::Stage::propagation;
+  const bool replay = scene::replays(request_.stage);
   // WebP keeps every pixel; slide software plays GIF.
   for (const char* extension : {".webp", ".gif"}) {
     const std::string what =

@@ -88,7 +88,7 @@ void Viewer::draw_panel(int height) {
     draw_stepper();
     if (dimension_of(*reconstruction_) == 3) draw_clip_controls();
     if (dimension_of(*reconstruction_) == 2) draw_editing_controls();
-    if (request_.stage == scene::Stage::propagation) draw_propagation_controls();
+    if (scene::replays(request_.stage)) draw_propagation_controls();
     draw_explanation();
     draw_pseudo_code();
     draw_layers();

@@ -13,6 +13,7 @@
 #include <glm/gtc/constants.hpp>
 #include <string>
 
+#include "scene/carving_replay.hpp"
 #include "viewer.hpp"
 #include "viewer_internals.hpp"
 
@@ -29,8 +30,20 @@ void Viewer::set_step(long events) {
 
 long Viewer::event_count() const {
   if (!reconstruction_) return 0;
-  return std::visit([](const auto& r) { return long(r.propagation.events.size()); },
-                    *reconstruction_);
+  if (counted_reconstruction_.lock() != reconstruction_ || counted_stage_ != request_.stage) {
+    const scene::Stage stage =
+        scene::replays(request_.stage) ? request_.stage : scene::Stage::propagation;
+    counted_events_ = std::visit(
+        [&](const auto& r) {
+          return scene::has_stage(r.options.method, r.dimension, stage)
+                     ? scene::replay_length(r, stage)
+                     : long(r.propagation.events.size());
+        },
+        *reconstruction_);
+    counted_reconstruction_ = reconstruction_;
+    counted_stage_ = request_.stage;
+  }
+  return counted_events_;
 }
 
 const Labelling_event* Viewer::latest_event() const {
@@ -46,11 +59,30 @@ const Labelling_event* Viewer::latest_event() const {
 bool Viewer::has_replay() const {
   if (!reconstruction_) return false;
   const Options& options = options_of(*reconstruction_);
-  return scene::has_stage(options.method, shown_dimension(), scene::Stage::propagation);
+  return scene::has_stage(options.method, shown_dimension(), scene::Stage::propagation) ||
+         scene::has_stage(options.method, shown_dimension(), scene::Stage::carving);
+}
+
+bool Viewer::start_replay(scene::Stage stage, float pace) {
+  if (!scene::replays(stage)) {
+    message_ = std::string("the stage ") + scene::stage_id(stage) +
+               " does not replay; the replays are propagation (the labelling) and carving";
+    return false;
+  }
+  if (!set_stage(stage)) return false;
+  set_step(0);
+  // A carving of thousands of cells plays in about ten seconds; the labelling at its pace.
+  if (pace > 0)
+    events_per_second_ = std::clamp(pace, 1.0f, 2000.0f);
+  else if (stage == scene::Stage::carving)
+    events_per_second_ = std::clamp(float(event_count()) / 10.0f, 5.0f, 2000.0f);
+  playing_ = true;
+  playback_clock_ = 0;
+  return true;
 }
 
 void Viewer::advance_playback(double seconds) {
-  if (!playing_ || request_.stage != scene::Stage::propagation) return;
+  if (!playing_ || !scene::replays(request_.stage)) return;
   playback_clock_ += seconds * events_per_second_;
   const long steps = long(playback_clock_);
   if (steps == 0) return;
@@ -78,7 +110,27 @@ void Viewer::draw_propagation_controls() {
   ImGui::SetNextItemWidth(150);
   ImGui::SliderFloat("events/s", &events_per_second_, 1.0f, 2000.0f, "%.0f",
                      ImGuiSliderFlags_Logarithmic);
-  if (ImGui::SliderInt("event", &shown, 0, int(total))) set_step(shown);
+  const bool carving = request_.stage == scene::Stage::carving;
+  ImGui::SetNextItemWidth(std::max(120.0f, ImGui::GetContentRegionAvail().x - 60));
+  const bool labelling = request_.stage == scene::Stage::propagation;
+  if (ImGui::SliderInt(labelling ? "event" : "step", &shown, 0, int(total))) set_step(shown);
+  if (request_.stage != scene::Stage::propagation) {
+    const std::string line = std::visit(
+        [&](const auto& r) -> std::string {
+          if (!carving)
+            return shown == 0 ? "before any candidate is pruned"
+                              : "step " + std::to_string(shown) + " of " + std::to_string(total) +
+                                    ": a candidate pruned";
+          if (shown == 0) return "before any cell leaves";
+          return scene::describe_step(scene::carving_replay(r), std::size_t(shown - 1),
+                                      r.dimension);
+        },
+        *reconstruction_);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextUnformatted(line.c_str());
+    ImGui::PopTextWrapPos();
+    return;
+  }
   if (ImGui::Checkbox("follow the action", &follow_) && follow_) follow_latest_event();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("Pan to the pole just labelled whenever it leaves the view");

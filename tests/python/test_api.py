@@ -173,7 +173,7 @@ def test_bad_input_raises_the_command_lines_message(sculpt_cli, tmp_path):
             star.samples, method="crust", rule="skin"),
         "only robust chooses the kind": lambda: sculpt.reconstruct(
             star.samples, method="paper", kind="automatic"),
-        "step= replays the labelling": lambda: sculpt.render(star, stage="poles", step=3),
+        "step= chooses a moment of a replay": lambda: sculpt.render(star, stage="poles", step=3),
         "wireframe= draws a reconstructed surface": lambda: sculpt.render(star, wireframe=True),
         "turns a 3D camera": lambda: sculpt.render(star, yaw=1.0),
         "ascii= writes .stl and .ply as text": lambda: sculpt.write(star, "/tmp/never.svg",

@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "carving_replay.hpp"
+
+#include <algorithm>
+#include <climits>
+#include <stdexcept>
+
+#include "core/point_tree.hpp"
+#include "scene.hpp"
+#include "simplex_geometry.hpp"
+
+namespace sculpt::scene {
+namespace {
+
+template <int D>
+Cell<D> sorted(Cell<D> cell) {
+  std::sort(cell.begin(), cell.end());
+  return cell;
+}
+
+template <int D>
+std::vector<Cell<D>> sorted_cells(const std::vector<Cell<D>>& cells) {
+  std::vector<Cell<D>> result;
+  result.reserve(cells.size());
+  for (const auto& cell : cells) result.push_back(sorted<D>(cell));
+  std::sort(result.begin(), result.end());
+  return result;
+}
+
+// Paper, sec. 3.3: inserting a pole destroys the cells whose circumballs hold it. A hull cell
+// leaves at the first pole of the list inside its circumball.
+template <int D>
+void steps_by_poles(const Reconstruction<D>& r, const std::vector<int>& leaving,
+                    Carving_replay& replay) {
+  const auto& inserted = r.insertion.inserted_poles;
+  replay.inserted_poles = inserted.size();
+  std::vector<Point<D>> centres;
+  centres.reserve(inserted.size());
+  for (int pole : inserted) centres.push_back(r.poles.poles[pole].center);
+  const Point_tree<D> tree(centres.data(), centres.data() + centres.size());
+  std::vector<std::vector<int>> destroyed(inserted.size() + 1);  // the last: no pole found
+  for (int c : leaving) {
+    std::array<Point<D>, D + 1> corners;
+    for (int i = 0; i <= D; ++i) corners[i] = r.sites[r.delaunay.cells[c][i]];
+    const Point<D> centre = circumcenter<D>(corners);
+    double radius2 = 0;
+    for (int k = 0; k < D; ++k)
+      radius2 += (centre[k] - corners[0][k]) * (centre[k] - corners[0][k]);
+    int first = INT_MAX;
+    tree.any_within_indexed(centre, radius2, [&](const Point<D>&, int i) {
+      first = std::min(first, i);
+      return false;  // look at every pole inside: the first in the list is wanted
+    });
+    destroyed[first == INT_MAX ? inserted.size() : std::size_t(first)].push_back(c);
+  }
+  for (std::size_t i = 0; i < destroyed.size(); ++i) {
+    if (destroyed[i].empty()) continue;
+    Carving_step step;
+    step.cells = std::move(destroyed[i]);
+    step.pole = i < inserted.size() ? inserted[i] : -1;
+    replay.steps.push_back(std::move(step));
+  }
+}
+
+// The robust method's carving and Boissonnat's removal: their own order, one cell a step.
+void steps_by_carving(const Carving_stage& carving, std::vector<int> leaving,
+                      Carving_replay& replay) {
+  std::sort(leaving.begin(), leaving.end());
+  std::vector<bool> taken(leaving.size(), false);
+  for (const Carve_event& event : carving.events) {
+    const auto at = std::lower_bound(leaving.begin(), leaving.end(), event.cell);
+    if (at == leaving.end() || *at != event.cell || taken[at - leaving.begin()]) continue;
+    taken[at - leaving.begin()] = true;
+    Carving_step step;
+    step.cells = {event.cell};
+    step.reason = event.reason;
+    replay.steps.push_back(std::move(step));
+  }
+  Carving_step rest;  // not in the record (none is expected): they leave last, together
+  for (std::size_t i = 0; i < leaving.size(); ++i) {
+    if (!taken[i]) rest.cells.push_back(leaving[i]);
+  }
+  if (!rest.cells.empty()) replay.steps.push_back(std::move(rest));
+}
+
+}  // namespace
+
+bool carves_cells(Method method, Surface_kind kind, int dimension) {
+  if (method == Method::boissonnat || method == Method::paper) return true;
+  return method == Method::robust && !joins_neighbours(method, kind, dimension);
+}
+
+template <int D>
+Carving_replay carving_replay(const Reconstruction<D>& r) {
+  Carving_replay replay;
+  const Method method = r.options.method;
+  if (!carves_cells(method, r.options.kind, D)) return replay;
+  if (r.delaunay.cells.size() != r.delaunay.cell_count)
+    throw std::invalid_argument(
+        "the carving replay needs the triangulations, which the reconstruction did not keep "
+        "(keep_triangulations)");
+  const int n = static_cast<int>(r.sample_count());
+  const auto kept = sorted_cells<D>(r.solid);
+  std::vector<int> leaving;
+  for (std::size_t c = 0; c < r.delaunay.cells.size(); ++c) {
+    const auto& cell = r.delaunay.cells[c];
+    if (!std::all_of(cell.begin(), cell.end(), [&](int v) { return v < n; })) continue;
+    replay.hull.push_back(int(c));
+    if (!std::binary_search(kept.begin(), kept.end(), sorted<D>(cell))) leaving.push_back(int(c));
+  }
+  replay.by_poles = inserts_poles(method, r.options.kind, D);
+  if (replay.by_poles)
+    steps_by_poles(r, leaving, replay);
+  else
+    steps_by_carving(r.carving, std::move(leaving), replay);
+  return replay;
+}
+
+template Carving_replay carving_replay(const Reconstruction<2>&);
+template Carving_replay carving_replay(const Reconstruction<3>&);
+
+namespace {
+template <int D>
+long length_of(const Reconstruction<D>& r, Stage stage) {
+  if (!has_stage(r.options.method, D, stage)) return 0;
+  if (stage == Stage::propagation) return long(r.propagation.events.size());
+  if (stage == Stage::carving) return long(carving_replay(r).steps.size());
+  if (stage == Stage::candidates) return long(r.candidates.pruned.size());
+  return 0;
+}
+}  // namespace
+
+long replay_length(const Reconstruction<2>& r, Stage stage) {
+  return length_of(r, stage);
+}
+long replay_length(const Reconstruction<3>& r, Stage stage) {
+  return length_of(r, stage);
+}
+
+std::string describe_step(const Carving_replay& replay, std::size_t step, int dimension) {
+  const Carving_step& s = replay.steps.at(step);
+  const std::string cells = dimension == 2 ? "triangle" : "tetrahedron";
+  const std::string plural = dimension == 2 ? "triangles" : "tetrahedra";
+  const std::string count =
+      std::to_string(s.cells.size()) + " " + (s.cells.size() == 1 ? cells : plural);
+  const std::string of = " of " + std::to_string(replay.steps.size());
+  const std::string at = "step " + std::to_string(step + 1) + of + ": ";
+  if (replay.by_poles)
+    return at + (s.pole < 0 ? count + " on a circumsphere's edge, taken last"
+                            : "a pole destroys " + count);
+  if (s.cells.size() != 1) return at + count + " not in the record, taken last";
+  return at + to_string(s.reason);
+}
+
+}  // namespace sculpt::scene
