@@ -9,8 +9,10 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "figures/cgal_meshes.hpp"
 #include "figures/gallery.hpp"
 #include "file_support.hpp"
+#include "frontend/shot_renderer.hpp"
 #include "render/image.hpp"
 
 namespace sculpt {
@@ -34,6 +36,50 @@ TEST(Figures, TheListCoversEveryFigureOfThePaper) {
     const std::string id = (n < 10 ? "fig0" : "fig") + std::to_string(n);
     EXPECT_TRUE(ids.count(id)) << id << " is missing";
   }
+}
+
+// What each panel's text claims of its result holds on the panel's own input: the figures that
+// contradict the paper say so in numbers we can check (paper_figures.hpp, Claim).
+TEST(Figures, EveryPanelsClaimHoldsOnItsInput) {
+  figures::Cgal_meshes cgal;
+  frontend::Shot_renderer renderer;
+  int claims = 0;
+  for (const auto& figure : figures::paper_figures()) {
+    for (const auto& image : figure.images) {
+      if (!image.claim.asserted) continue;
+      ++claims;
+      const std::string panel = figure.id + image.suffix;
+      const Statistics stats = std::visit([](const auto& r) { return r.stats; },
+                                          renderer.reconstruction(cgal.resolve(image.shot)));
+      const figures::Claim& claim = image.claim;
+      const bool closed_manifold = stats.boundary_ridges == 0 && stats.non_manifold_ridges == 0 &&
+                                   stats.non_manifold_vertices == 0;
+      if (claim.closed_manifold) {
+        EXPECT_TRUE(closed_manifold) << panel;
+      }
+      EXPECT_GE(long(stats.non_manifold_ridges), claim.non_manifold_at_least) << panel;
+      if (claim.components > 0) {
+        EXPECT_EQ(long(stats.components), claim.components) << panel;
+      }
+      if (claim.samples_left_off_at_most >= 0) {
+        EXPECT_LE(long(stats.unused_samples), claim.samples_left_off_at_most) << panel;
+      }
+      EXPECT_GE(long(stats.boundary_ridges), claim.border_edges_at_least) << panel;
+      if (claim.border_edges_at_most >= 0) {
+        EXPECT_LE(long(stats.boundary_ridges), claim.border_edges_at_most) << panel;
+      }
+      if (claim.border_loops >= 0) {
+        EXPECT_EQ(long(stats.boundary_loops), claim.border_loops) << panel;
+      }
+    }
+    // A figure that contradicts the paper says so on screen, and shows a result beside it.
+    if (!figure.contradiction.empty()) {
+      EXPECT_TRUE(std::any_of(figure.images.begin(), figure.images.end(),
+                              [](const auto& image) { return image.claim.asserted; }))
+          << figure.id << ": its contradiction is checked";
+    }
+  }
+  EXPECT_GE(claims, 6);
 }
 
 TEST(Figures, GeneratesEveryImageWithItsLayers) {

@@ -12,11 +12,26 @@
 
 namespace sculpt::figures {
 
+// What a panel's text says of its result, in numbers a test checks on the panel's own input
+// (tests/figure_claims_test.cpp): a panel that says "closed as one manifold" or "non-manifold
+// edges" must show that, or its text is wrong.
+struct Claim {
+  bool asserted = false;
+  bool closed_manifold = false;        // true: no border edge, no non-manifold edge or vertex
+  long non_manifold_at_least = 0;      // edges on three triangles or more
+  long components = 0;                 // exactly this many pieces (0: not said)
+  long samples_left_off_at_most = -1;  // samples on no triangle (-1: not said)
+  long border_edges_at_least = 0;      // edges on one triangle only
+  long border_edges_at_most = -1;      // (-1: not said)
+  long border_loops = -1;              // exactly this many loops of border edges (-1: not said)
+};
+
 struct Figure_image {
   std::string suffix;   // "a", "b", ... ("" for a single image)
   std::string what;     // what the panel shows, in a few words
   std::string why;      // what changed from the panel before, and why it matters (our words)
   frontend::Shot shot;  // its input: an example, or "cgal:NAME.off" for a CGAL mesh
+  Claim claim = {};
 };
 
 struct Figure {
@@ -26,6 +41,9 @@ struct Figure {
   std::string data;         // what we draw it from
   std::string differences;  // what differs from the paper, and why
   std::vector<Figure_image> images;
+  // Where our input makes the paper method contradict the caption: one sentence the tour's
+  // caption strip always shows (the differences above are read on demand).
+  std::string contradiction = {};
 };
 
 const std::vector<Figure>& paper_figures();

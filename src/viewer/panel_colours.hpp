@@ -34,11 +34,12 @@ inline constexpr Rgb failure_notice{0.70f, 0.08f, 0.06f};
 inline constexpr Rgb text{1.00f, 1.00f, 1.00f};
 // The pseudo-code's lines not running, and disabled items: quieter than the text, still AA.
 inline constexpr Rgb quiet_text{0.68f, 0.68f, 0.70f};
-inline constexpr Rgb current_line{1.00f, 0.80f, 0.20f};  // the statement running; lesson titles
-inline constexpr Rgb lit_line{0.95f, 0.85f, 0.60f};      // its loops and continuation lines
-inline constexpr Rgb success{0.50f, 0.90f, 0.50f};       // a verdict of a closed manifold
-inline constexpr Rgb failure{1.00f, 0.45f, 0.40f};       // a verdict with defects, a failed run
-inline constexpr Rgb caption{0.70f, 0.75f, 0.85f};       // the tour's figure caption
+inline constexpr Rgb current_line{1.00f, 0.80f, 0.20f};   // the statement running; lesson titles
+inline constexpr Rgb lit_line{0.95f, 0.85f, 0.60f};       // its loops and continuation lines
+inline constexpr Rgb success{0.50f, 0.90f, 0.50f};        // a verdict of a closed manifold
+inline constexpr Rgb failure{1.00f, 0.45f, 0.40f};        // a verdict with defects, a failed run
+inline constexpr Rgb caption{0.70f, 0.75f, 0.85f};        // the tour's figure caption
+inline constexpr Rgb contradiction{1.00f, 0.70f, 0.35f};  // where our figure differs from it
 
 // Every text with every background it is drawn on.
 inline std::vector<std::pair<Rgb, Rgb>> text_on_background() {
@@ -46,7 +47,8 @@ inline std::vector<std::pair<Rgb, Rgb>> text_on_background() {
   for (Rgb background : {window, popup, menu_bar, title, frame, frame_hovered, frame_active, button,
                          button_hovered, button_active, header, header_hovered, header_active})
     pairs.push_back({text, background});
-  for (Rgb coloured : {quiet_text, current_line, lit_line, success, failure, caption}) {
+  for (Rgb coloured :
+       {quiet_text, current_line, lit_line, success, failure, caption, contradiction}) {
     pairs.push_back({coloured, window});
     pairs.push_back({coloured, popup});
   }

@@ -272,7 +272,9 @@ void Viewer::draw_caption(int width, int height) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoSavedSettings);
-  ImGui::PushTextWrapPos(caption_width - ImGui::GetStyle().WindowPadding.x);
+  // Wrapped short of the scroll bar, which a long caption at a large font brings.
+  ImGui::PushTextWrapPos(caption_width - ImGui::GetStyle().WindowPadding.x -
+                         ImGui::GetStyle().ScrollbarSize);
   const figures::Figure& figure = tour_.figure();
   const figures::Figure_image& image = tour_.image();
 
@@ -293,10 +295,15 @@ void Viewer::draw_caption(int width, int height) {
   ImGui::SameLine();
   if (ImGui::SmallButton("close")) close_tour();
 
-  ImGui::TextUnformatted(figure.caption.c_str());
-  ImGui::PushStyleColor(ImGuiCol_Text, imgui_colour(panel_colours::caption));
-  ImGui::TextWrapped("Paper: \"%s\"", figure.sentence.c_str());
-  ImGui::PopStyleColor();
+  // Where our input contradicts the caption, the class reads it first, never below the
+  // strip's fold and never on hover only.
+  if (!figure.contradiction.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, imgui_colour(panel_colours::contradiction));
+    ImGui::TextWrapped("Differs from the paper: %s", figure.contradiction.c_str());
+    ImGui::PopStyleColor();
+  }
+  // What is on screen before the paper's caption and sentence, which a long figure pushes
+  // below the strip's fold.
   if (tour_.exploring()) {
     ImGui::TextWrapped(
         "Exploring from %s: every tool of the viewer works on this "
@@ -306,8 +313,13 @@ void Viewer::draw_caption(int width, int height) {
     ImGui::TextWrapped("%s%s. %s", image.suffix.empty() ? "" : ("(" + image.suffix + ") ").c_str(),
                        image.what.c_str(), image.why.c_str());
   }
+  ImGui::TextUnformatted(figure.caption.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, imgui_colour(panel_colours::caption));
+  ImGui::TextWrapped("Paper: \"%s\"", figure.sentence.c_str());
+  ImGui::PopStyleColor();
   if (!figure.differences.empty()) {
-    ImGui::TextDisabled("Differs from the paper (hover)");
+    ImGui::TextDisabled(figure.contradiction.empty() ? "Differs from the paper (hover)"
+                                                     : "Why, and the data (hover)");
     if (ImGui::IsItemHovered()) {
       ImGui::BeginTooltip();
       ImGui::PushTextWrapPos(420);
