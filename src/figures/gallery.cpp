@@ -243,6 +243,9 @@ int generate(const Options& options) {
                 << image.suffix << ".png) ";
       }
       gallery << "\n\n> " << figure.sentence << "\n\n";
+      // Where our input contradicts the caption, said before the panels, as the tour does.
+      if (!figure.contradiction.empty())
+        gallery << "**Differs from the paper:** " << figure.contradiction << "\n\n";
       for (const auto& image : figure.images) {
         gallery << "- ";
         if (!image.suffix.empty()) gallery << "(" << image.suffix << ") ";
