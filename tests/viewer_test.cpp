@@ -354,6 +354,39 @@ TEST(Viewer, TheCarvingReplaysFromTheHullToTheSolid) {
       << log;
 }
 
+// Side by side: `compare a,b` draws each method in a view of its own, one camera for both,
+// with its verdict; compare off returns to one view; one method, or a misspelt one, is refused.
+TEST(Viewer, ComparesMethodsSideBySide) {
+  const std::string two = testing::output_path("viewer-compare-two.png"),
+                    one = testing::output_path("viewer-compare-off.png");
+  ASSERT_EQ(run_viewer_script("compare",
+                              "example star\nwait\ncompare paper,boissonnat\nwait\nframes 3\n"
+                              "screenshot " +
+                                  two + "\ncompare off\nframes 3\nscreenshot " + one +
+                                  "\ncompare paper,robsut\ncompare paper\nquit\n"),
+            1);  // the last two commands are refused
+  const render::Image both = render::read_png(two), single = render::read_png(one);
+  // The curve's samples in both halves of the picture right of the panel (1280 x 720, the
+  // panel about 360 wide): each view draws the whole star.
+  const auto samples_in = [](const render::Image& image, int from, int to) {
+    long count = 0;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = from; x < to; ++x) {
+        const std::uint8_t* p = image.pixel(x, y);
+        if (p[1] > 100 && p[0] < 60 && p[2] < 60) ++count;  // the samples' green
+      }
+    }
+    return count;
+  };
+  const int middle = (400 + both.width) / 2;
+  EXPECT_GT(samples_in(both, 400, middle - 20), 200);
+  EXPECT_GT(samples_in(both, middle + 20, both.width), 200);
+  // One view again: one star's samples, where two views drew two stars' (dots of a fixed size).
+  EXPECT_GT(samples_in(both, 400, both.width), 1.5 * samples_in(single, 400, single.width));
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/compare.log");
+  EXPECT_NE(log.find("no method 'robsut' (did you mean 'robust'?)"), std::string::npos) << log;
+}
+
 // The colour-blind palette redraws the picture: the paper's red poles become vermillion.
 TEST(Viewer, TheColourBlindPaletteRedrawsThePicture) {
   const std::string paper = testing::output_path("viewer-palette-paper.png"),

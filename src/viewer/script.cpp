@@ -253,7 +253,8 @@ std::string Script::before_frame(Viewer& viewer) {
     if (command == "help") {
       std::cout
           << "commands: example NAME, open FILE, method NAME, stage ID, next, previous, "
-             "step K, replay propagation|carving, wait-replay, pick-sample K, pick-pole K, clip "
+             "compare A,B[,C,D] | off, step K, replay propagation|carving, wait-replay, "
+             "pick-sample K, pick-pole K, clip "
              "POS AZ EL [SLAB] | off, "
              "section POS AZ EL | off, "
              "neighbourhood on|off, polar-balls EVERY|off, follow on|off, layer ID on|off, "
@@ -311,6 +312,35 @@ std::string Script::before_frame(Viewer& viewer) {
         continue;
       }
       done(viewer.start_replay(stage, float(pace)));
+    } else if (command == "compare") {
+      // compare a,b[,c,d]: methods side by side; compare off
+      if (argument == "off") {
+        viewer.stop_compare();
+        continue;
+      }
+      std::vector<Method> methods;
+      std::string name, unknown;
+      std::istringstream names(argument);
+      while (std::getline(names, name, ',')) {
+        Method method;
+        if (parse_method(name, method)) {
+          methods.push_back(method);
+        } else if (unknown.empty()) {
+          unknown = name;
+        }
+      }
+      if (!unknown.empty()) {
+        std::vector<std::string> known;
+        for (const char* n : method_names()) known.emplace_back(n);
+        fail("'" + line + "': no method '" + unknown + "'" +
+             frontend::did_you_mean(unknown, known));
+        continue;
+      }
+      if (methods.size() < 2 || methods.size() > 4) {
+        fail("'" + line + "': expected compare A,B[,C,D] (two to four methods) or compare off");
+        continue;
+      }
+      done(viewer.start_compare(methods));
     } else if (command == "step") {
       if (viewer.has_reconstruction() && !viewer.has_replay()) {
         fail("'" + line + "': this method has no replay (of the labelling or the carving)");

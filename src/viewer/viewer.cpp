@@ -132,6 +132,8 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
   const bool same_input = reconstruction_ && (last_request_.edited_points ||
                                               (shown_request_.path == last_request_.path &&
                                                shown_request_.example == last_request_.example));
+  // Other points: the methods compared were of the points before.
+  if (!same_input) stop_compare();
   reconstruction_ = std::move(reconstruction);
   last_job_failed_ = false;
   description_ = std::move(description);
@@ -289,13 +291,15 @@ void Viewer::frame(int width, int height, double seconds) {
     reconstruct_edits();
   advance_playback(seconds);
   advance_move_to_panel(seconds);
+  advance_compare();
   handle_input(width, height);
   draw_menu();
   if (!presenting_) draw_panel(height);
   draw_caption(width, height);
   if (show_help_) draw_help();
+  if (scene_dirty_) compare_scenes_stale();
   rebuild_scene();
-  if (reconstruction_) draw_off_screen_markers(width, height);
+  if (reconstruction_ && !comparing()) draw_off_screen_markers(width, height);
   if (last_job_failed_) draw_failure_notice(width, height);
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -312,7 +316,11 @@ void Viewer::frame(int width, int height, double seconds) {
     // The picture takes the window right of the panel, above the figure's caption.
     options.viewport_x = int(panel_width());
     options.viewport_y = caption_height_ + reserved_height_;
-    picture_cache_.draw(*renderer_, camera_, view_width(width), view_height(height), options);
+    if (comparing()) {
+      draw_compare(width, height);
+    } else {
+      picture_cache_.draw(*renderer_, camera_, view_width(width), view_height(height), options);
+    }
   }
 }
 

@@ -155,7 +155,8 @@ class Viewer {
   // A reconstruction runs, has ended and its result is not shown yet, or the view is still
   // moving to a tour panel.
   bool busy() const {
-    return job_->running() || job_->outcome_waiting() || moving_to_panel() || edits_pending_;
+    return job_->running() || job_->outcome_waiting() || moving_to_panel() || edits_pending_ ||
+           compare_busy();
   }
   void cancel() { job_->request_cancel(); }
   bool reconstructing() const { return job_->running(); }
@@ -202,9 +203,31 @@ class Viewer {
   void copy_link_to_view();  // to the clipboard, and shown in the message
 
   bool wants_to_quit() const { return quit_; }
-  bool animating() const { return playing_ || job_->running(); }
+  bool animating() const { return playing_ || job_->running() || compare_busy(); }
+
+  // Side by side (viewer_compare.cpp): two to four methods on the points shown, each in a view
+  // with its verdict, one camera for all; false, with a message, for fewer or more or nothing
+  // shown. Opening other points ends it, as stop_compare does.
+  bool start_compare(const std::vector<Method>& methods);
+  void stop_compare();
+  bool comparing() const;
 
  private:
+  struct Compared;
+  struct Compare_state {
+    Compare_state();
+    ~Compare_state();
+    std::vector<std::unique_ptr<Compared>> views;
+    std::size_t next = 0;  // the first view whose reconstruction has not come
+    std::unique_ptr<Reconstruction_job> job;
+  };
+  Compare_state compare_;
+  bool compare_busy() const;
+  void advance_compare();
+  void draw_compare(int width, int height);
+  void compare_scenes_stale();
+  void refit_for_views();
+
   bool pick(int index, bool sample);
   // A picture, or an animation ("replay" or "stages", in `frames` pictures), of the view: the
   // shown reconstruction drawn into a framebuffer of the window's context.

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <string>
+#include <vector>
 
 #include "platform/platform.hpp"
 #include "shapes/shapes.hpp"
@@ -55,6 +56,24 @@ void Viewer::draw_menu() {
     if (ImGui::MenuItem("Presentation mode", "F5", presenting_)) presenting_ = !presenting_;
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("The panel hides, the picture takes the window with its legend in it");
+    }
+    // Side by side: the same points by several methods, one camera (viewer_compare.cpp).
+    if (ImGui::BeginMenu("Side by side", reconstruction_ != nullptr)) {
+      const bool curve = shown_dimension() == 2;
+      const std::vector<std::vector<Method>> sets = {
+          {Method::paper, Method::robust},
+          curve
+              ? std::vector<Method>{Method::paper, Method::robust, Method::crust, Method::nn_crust}
+              : std::vector<Method>{Method::paper, Method::robust, Method::cocone,
+                                    Method::advancing_front},
+          {Method::paper, Method::robust, Method::boissonnat}};
+      for (const auto& set : sets) {
+        std::string name;
+        for (Method m : set) name += (name.empty() ? "" : " | ") + std::string(to_string(m));
+        if (ImGui::MenuItem(name.c_str())) start_compare(set);
+      }
+      if (ImGui::MenuItem("One view", nullptr, false, comparing())) stop_compare();
+      ImGui::EndMenu();
     }
     if (ImGui::MenuItem("Colour-blind palette", nullptr, colour_blind_))
       set_colour_blind(!colour_blind_);
