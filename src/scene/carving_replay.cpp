@@ -3,7 +3,9 @@
 
 #include <algorithm>
 #include <climits>
+#include <mutex>
 #include <stdexcept>
+#include <tuple>
 
 #include "core/point_tree.hpp"
 #include "scene.hpp"
@@ -120,11 +122,59 @@ template Carving_replay carving_replay(const Reconstruction<2>&);
 template Carving_replay carving_replay(const Reconstruction<3>&);
 
 namespace {
+// What tells one reconstruction's replay from another's: where it lives, and counts that change
+// with its input, method and kind (a reconstruction freed and another made at its address with
+// the same counts is the same input by the same method: the same replay).
+struct Replay_key {
+  const void* address = nullptr;
+  std::size_t cells = 0, solid = 0, carved = 0, inserted = 0, samples = 0;
+  Method method = Method::robust;
+  Surface_kind kind = Surface_kind::closed;
+  auto tied() const {
+    return std::tie(address, cells, solid, carved, inserted, samples, method, kind);
+  }
+  bool operator==(const Replay_key& other) const { return tied() == other.tied(); }
+};
+
+template <int D>
+Replay_key key_of(const Reconstruction<D>& r) {
+  return {&r,
+          r.delaunay.cells.size(),
+          r.solid.size(),
+          r.carving.events.size(),
+          r.insertion.inserted_poles.size(),
+          r.sample_count(),
+          r.options.method,
+          r.options.kind};
+}
+}  // namespace
+
+template <int D>
+std::shared_ptr<const Carving_replay> shared_carving_replay(const Reconstruction<D>& r) {
+  static std::mutex mutex;
+  static Replay_key kept_key;
+  static std::shared_ptr<const Carving_replay> kept;
+  const Replay_key key = key_of(r);
+  {
+    const std::lock_guard<std::mutex> lock(mutex);
+    if (kept && kept_key == key) return kept;
+  }
+  auto replay = std::make_shared<const Carving_replay>(carving_replay(r));
+  const std::lock_guard<std::mutex> lock(mutex);
+  kept_key = key;
+  kept = replay;
+  return replay;
+}
+
+template std::shared_ptr<const Carving_replay> shared_carving_replay(const Reconstruction<2>&);
+template std::shared_ptr<const Carving_replay> shared_carving_replay(const Reconstruction<3>&);
+
+namespace {
 template <int D>
 long length_of(const Reconstruction<D>& r, Stage stage) {
   if (!has_stage(r.options.method, D, stage)) return 0;
   if (stage == Stage::propagation) return long(r.propagation.events.size());
-  if (stage == Stage::carving) return long(carving_replay(r).steps.size());
+  if (stage == Stage::carving) return long(shared_carving_replay(r)->steps.size());
   if (stage == Stage::candidates) return long(r.candidates.pruned.size());
   return 0;
 }

@@ -12,6 +12,7 @@
 // a circumsphere, in doubles) leaves at a last step of its own, and a solid cell never leaves.
 #pragma once
 
+#include <memory>
 #include <sculpt/sculpt.hpp>
 #include <string>
 #include <vector>
@@ -40,6 +41,12 @@ bool carves_cells(Method method, Surface_kind kind, int dimension);
 // without them.
 template <int D>
 Carving_replay carving_replay(const Reconstruction<D>& reconstruction);
+
+// The same, computed once for a reconstruction and kept while it is the last one asked about:
+// a replay played in the viewer builds a scene at every step.
+template <int D>
+std::shared_ptr<const Carving_replay> shared_carving_replay(
+    const Reconstruction<D>& reconstruction);
 
 // The steps of a stage that replays (the labelling's events, the carving's steps, the pruning's
 // triangles); 0 for a stage that does not.

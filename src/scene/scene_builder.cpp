@@ -586,7 +586,8 @@ class Scene_builder {
       scene_.title = "No cells carved: open curves join each sample to its nearest neighbours";
       return;
     }
-    const Carving_replay replay = carving_replay(r_);
+    const auto held = shared_carving_replay(r_);
+    const Carving_replay& replay = *held;
     const std::size_t shown = request_.step < 0
                                   ? replay.steps.size()
                                   : std::min<std::size_t>(request_.step, replay.steps.size());

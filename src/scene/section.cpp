@@ -239,7 +239,8 @@ class Section_builder {
       scene_.title = "No cells carved";
       return;
     }
-    const Carving_replay replay = carving_replay(r_);
+    const auto held = shared_carving_replay(r_);
+    const Carving_replay& replay = *held;
     const std::size_t shown = request_.step < 0
                                   ? replay.steps.size()
                                   : std::min<std::size_t>(request_.step, replay.steps.size());

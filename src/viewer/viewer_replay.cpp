@@ -122,7 +122,7 @@ void Viewer::draw_propagation_controls() {
                               : "step " + std::to_string(shown) + " of " + std::to_string(total) +
                                     ": a candidate pruned";
           if (shown == 0) return "before any cell leaves";
-          return scene::describe_step(scene::carving_replay(r), std::size_t(shown - 1),
+          return scene::describe_step(*scene::shared_carving_replay(r), std::size_t(shown - 1),
                                       r.dimension);
         },
         *reconstruction_);
