@@ -350,8 +350,27 @@ TEST(Viewer, TheCarvingReplaysFromTheHullToTheSolid) {
             share(middle, scene::palette::sculpted_away));
   const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/carving.log");
   EXPECT_NE(log.find("--stage carving"), std::string::npos) << log;
-  EXPECT_NE(log.find("replay propagation (the labelling) or replay carving"), std::string::npos)
+  EXPECT_NE(log.find("replay propagation (the labelling), replay carving or replay candidates"),
+            std::string::npos)
       << log;
+}
+
+// A replay's step belongs to its stage: the labelling's 500th event does not carry over to the
+// carving (which has fewer steps), and a link to a carving step opens it.
+TEST(Viewer, AStepStaysWithItsReplay) {
+  EXPECT_EQ(run_viewer_script("step-carry",
+                              "stage propagation\nstep 500\nframes 2\nstage carving\n"
+                              "frames 3\nlink\nquit\n",
+                              "--example star --method paper"),
+            0);
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/step-carry.log");
+  EXPECT_NE(log.find("--stage carving"), std::string::npos) << log;
+  EXPECT_EQ(log.find("--stage carving --step"), std::string::npos) << log;
+  EXPECT_EQ(run_viewer_script("step-link", "wait\nframes 3\nlink\nquit\n",
+                              "--example star --method paper --stage carving --step 12"),
+            0);
+  const std::string linked = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/step-link.log");
+  EXPECT_NE(linked.find("--stage carving --step 12"), std::string::npos) << linked;
 }
 
 // Side by side: `compare a,b` draws each method in a view of its own, one camera for both,

@@ -13,17 +13,21 @@
 namespace sculpt::figures {
 
 // What a panel's text says of its result, in numbers a test checks on the panel's own input
-// (tests/figure_claims_test.cpp): a panel that says "closed as one manifold" or "non-manifold
+// (tests/figures_test.cpp): a panel that says "closed as one manifold" or "non-manifold
 // edges" must show that, or its text is wrong.
+struct Count_range {
+  long at_least = 0;
+  long at_most = -1;  // -1: no bound
+};
+
 struct Claim {
   bool asserted = false;
-  bool closed_manifold = false;        // true: no border edge, no non-manifold edge or vertex
-  long non_manifold_at_least = 0;      // edges on three triangles or more
-  long components = 0;                 // exactly this many pieces (0: not said)
-  long samples_left_off_at_most = -1;  // samples on no triangle (-1: not said)
-  long border_edges_at_least = 0;      // edges on one triangle only
-  long border_edges_at_most = -1;      // (-1: not said)
-  long border_loops = -1;              // exactly this many loops of border edges (-1: not said)
+  bool closed_manifold = false;    // true: no border edge, no non-manifold edge or vertex
+  Count_range non_manifold_edges;  // on three triangles or more
+  long components = 0;             // exactly this many pieces (0: not said)
+  Count_range samples_left_off;    // samples on no triangle
+  Count_range border_edges;        // edges on one triangle only
+  long border_loops = -1;          // exactly this many loops of border edges (-1: not said)
 };
 
 struct Figure_image {

@@ -84,9 +84,11 @@ std::string carving(Method method, Surface_kind kind, int dimension) {
     return "The sculpting as the paper does it (sec. 3.3): the poles are inserted one by one, "
            "and a pole inserted into a Delaunay triangulation destroys every " +
            cell(dimension) + " whose " + ball +
-           " holds it. Each step inserts one pole and shows the hull's " + cells(dimension) +
-           " it destroys, highlighted" + (dimension == 2 ? ", with their " + ball + "s" : "") +
-           ". What is left when the last pole is in is the solid. The poles go in the order "
+           " holds it. Each step is a pole whose insertion destroys some of the hull's " +
+           cells(dimension) + ", highlighted" +
+           (dimension == 2 ? ", with their " + ball + "s" : "") +
+           " (a pole that destroys none of them is no step). What is left when the last pole is "
+           "in is the solid. The poles go in the order "
            "listed; any order ends at the same triangulation.";
   return "The robust method's carving step by step: from the outside in, one " + cell(dimension) +
          " at a time, each cell judged outer (an outer pole in its " + ball +

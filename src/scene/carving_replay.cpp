@@ -3,9 +3,12 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstdint>
+#include <deque>
 #include <mutex>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 
 #include "core/point_tree.hpp"
 #include "scene.hpp"
@@ -122,47 +125,63 @@ template Carving_replay carving_replay(const Reconstruction<2>&);
 template Carving_replay carving_replay(const Reconstruction<3>&);
 
 namespace {
-// What tells one reconstruction's replay from another's: where it lives, and counts that change
-// with its input, method and kind (a reconstruction freed and another made at its address with
-// the same counts is the same input by the same method: the same replay).
+// What tells one reconstruction's replay from another's: where it lives, its counts, and a
+// checksum of its cells and solid (a reconstruction freed and another made at its address has
+// other cells, unless it is the same input by the same method: the same replay).
 struct Replay_key {
   const void* address = nullptr;
-  std::size_t cells = 0, solid = 0, carved = 0, inserted = 0, samples = 0;
+  std::size_t cells = 0, solid = 0, carved = 0, inserted = 0, poles = 0, sites = 0;
+  std::uint64_t checksum = 0;
   Method method = Method::robust;
   Surface_kind kind = Surface_kind::closed;
   auto tied() const {
-    return std::tie(address, cells, solid, carved, inserted, samples, method, kind);
+    return std::tie(address, cells, solid, carved, inserted, poles, sites, checksum, method, kind);
   }
   bool operator==(const Replay_key& other) const { return tied() == other.tied(); }
 };
 
 template <int D>
 Replay_key key_of(const Reconstruction<D>& r) {
+  std::uint64_t sum = 1469598103934665603ull;  // FNV-1a over the cells' and solid's indices
+  const auto add = [&](const std::vector<Cell<D>>& cells) {
+    for (const auto& cell : cells) {
+      for (int v : cell) sum = (sum ^ std::uint64_t(std::uint32_t(v))) * 1099511628211ull;
+    }
+  };
+  add(r.delaunay.cells);
+  add(r.solid);
+  for (const auto& event : r.carving.events)
+    sum = (sum ^ std::uint64_t(std::uint32_t(event.cell))) * 1099511628211ull;
   return {&r,
           r.delaunay.cells.size(),
           r.solid.size(),
           r.carving.events.size(),
           r.insertion.inserted_poles.size(),
-          r.sample_count(),
+          r.poles.poles.size(),
+          r.sites.size(),
+          sum,
           r.options.method,
           r.options.kind};
 }
 }  // namespace
 
+// The last few asked about are kept: the views of a comparison each replay their own.
 template <int D>
 std::shared_ptr<const Carving_replay> shared_carving_replay(const Reconstruction<D>& r) {
+  constexpr std::size_t kept_at_most = 4;
   static std::mutex mutex;
-  static Replay_key kept_key;
-  static std::shared_ptr<const Carving_replay> kept;
+  static std::deque<std::pair<Replay_key, std::shared_ptr<const Carving_replay>>> kept;
   const Replay_key key = key_of(r);
   {
     const std::lock_guard<std::mutex> lock(mutex);
-    if (kept && kept_key == key) return kept;
+    for (const auto& [k, replay] : kept) {
+      if (k == key) return replay;
+    }
   }
   auto replay = std::make_shared<const Carving_replay>(carving_replay(r));
   const std::lock_guard<std::mutex> lock(mutex);
-  kept_key = key;
-  kept = replay;
+  kept.emplace_front(key, replay);
+  if (kept.size() > kept_at_most) kept.pop_back();
   return replay;
 }
 

@@ -42,8 +42,8 @@ bool carves_cells(Method method, Surface_kind kind, int dimension);
 template <int D>
 Carving_replay carving_replay(const Reconstruction<D>& reconstruction);
 
-// The same, computed once for a reconstruction and kept while it is the last one asked about:
-// a replay played in the viewer builds a scene at every step.
+// The same, computed once for a reconstruction and kept while it is among the last four asked
+// about: a replay played in the viewer builds a scene at every step, in every view compared.
 template <int D>
 std::shared_ptr<const Carving_replay> shared_carving_replay(
     const Reconstruction<D>& reconstruction);

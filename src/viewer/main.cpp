@@ -140,7 +140,10 @@ int main(int argc, char** argv) {
           stages += (stages.empty() ? "" : ", ") + std::string(sculpt::scene::stage_id(known));
         return "no stage '" + id + "' (stages: " + stages + ")";
       });
-  command_line.add_option("--step", step, "With --stage propagation: the labelling events shown")
+  command_line
+      .add_option("--step", step,
+                  "With --stage propagation, carving or candidates: the replay's events "
+                  "or steps shown")
       ->check(CLI::Range(0L, 1L << 30));
   command_line.add_option("--pick-sample", picked_sample, "Select this sample once reconstructed")
       ->check(CLI::NonNegativeNumber);
@@ -177,8 +180,10 @@ int main(int argc, char** argv) {
           sculpt::frontend::parse_command_line(command_line, argc, argv, "sculpt-view")) {
     return *stop;
   }
-  if (step >= 0 && stage != "propagation") {
-    std::cerr << "sculpt-view: usage error: --step replays the labelling at --stage propagation"
+  if (sculpt::scene::Stage replayed; step >= 0 && !(sculpt::scene::parse_stage(stage, replayed) &&
+                                                    sculpt::scene::replays(replayed))) {
+    std::cerr << "sculpt-view: usage error: --step chooses a moment of a replay, at --stage "
+                 "propagation, carving or candidates"
               << (stage.empty() ? "" : "; this is the stage " + stage)
               << " (see sculpt-view --help)\n";
     return sculpt::frontend::exit_bad_usage;

@@ -80,7 +80,7 @@ std::optional<double> real(const std::string& word) {
 // Commands that take more than one argument parse their own.
 bool takes_arguments(const std::string& command) {
   for (const char* name : {"export", "export-animation", "clip", "section", "add-point",
-                           "move-point", "stroke", "layer", "camera"}) {
+                           "move-point", "stroke", "layer", "camera", "replay"}) {
     if (command == name) return true;
   }
   return false;
@@ -186,7 +186,7 @@ std::string Script::before_frame(Viewer& viewer) {
       continue;
     }
     if (command == "wait-replay") {  // until the replay playing has reached its end
-      if (viewer.replay_playing()) return "";
+      if (viewer.replay_playing() && scene::replays(viewer.stage())) return "";
       commands_.pop_front();
       continue;
     }
@@ -303,12 +303,15 @@ std::string Script::before_frame(Viewer& viewer) {
     } else if (command == "replay") {
       scene::Stage stage;
       double pace = 0;  // optional: steps a second
-      const bool paced = static_cast<bool>(words >> pace);
-      if (!scene::parse_stage(argument, stage) || !scene::replays(stage) ||
+      std::istringstream pace_word(extra);
+      const bool paced = !extra.empty();
+      if (paced && !(pace_word >> pace)) pace = -1;
+      std::string more;
+      if (words >> more || !scene::parse_stage(argument, stage) || !scene::replays(stage) ||
           (paced && !(pace >= 1 && pace <= 2000))) {
         fail("'" + line +
-             "': expected replay propagation (the labelling) or replay carving, then optionally "
-             "the steps a second (1 to 2000)");
+             "': expected replay propagation (the labelling), replay carving or replay "
+             "candidates (the pruning), then optionally the steps a second (1 to 2000)");
         continue;
       }
       done(viewer.start_replay(stage, float(pace)));
@@ -343,9 +346,12 @@ std::string Script::before_frame(Viewer& viewer) {
       done(viewer.start_compare(methods));
     } else if (command == "step") {
       if (viewer.has_reconstruction() && !viewer.has_replay()) {
-        fail("'" + line + "': this method has no replay (of the labelling or the carving)");
+        fail("'" + line +
+             "': this method has no replay (of the labelling, the carving or the "
+             "pruning)");
         continue;
       }
+      viewer.pause_replay();  // a step chosen by hand stays on screen
       if (const auto events = count("a number of events (or -1 for all)", -1, 1L << 30)) {
         viewer.set_step(*events);
       }

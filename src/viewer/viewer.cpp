@@ -132,8 +132,8 @@ void Viewer::show(std::shared_ptr<const Any_reconstruction> reconstruction,
   const bool same_input = reconstruction_ && (last_request_.edited_points ||
                                               (shown_request_.path == last_request_.path &&
                                                shown_request_.example == last_request_.example));
-  // Other points: the methods compared were of the points before.
-  if (!same_input) stop_compare();
+  // Other points, or the same edited: the methods compared were of the points before.
+  if (!same_input || last_request_.edited_points) stop_compare();
   reconstruction_ = std::move(reconstruction);
   last_job_failed_ = false;
   description_ = std::move(description);
@@ -173,6 +173,11 @@ bool Viewer::set_stage(scene::Stage stage) {
     return false;
   }
   explore();
+  // Another stage starts whole: a step of one replay means nothing in another.
+  if (request_.stage != stage) {
+    request_.step = -1;
+    playing_ = false;
+  }
   request_.stage = stage;
   scene_dirty_ = true;
   follow_latest_event();

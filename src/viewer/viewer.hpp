@@ -173,6 +173,7 @@ class Viewer {
   // with a message when the method has no such stage or it does not replay.
   bool start_replay(scene::Stage stage, float pace = 0);
   bool replay_playing() const { return playing_; }
+  void pause_replay() { playing_ = false; }
   int picked_sample() const { return request_.focus_sample; }
   scene::Stage stage() const { return request_.stage; }
   // The Explanation panel's paragraph for the stage on screen ("" before any reconstruction).

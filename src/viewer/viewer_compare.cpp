@@ -38,6 +38,11 @@ bool Viewer::start_compare(const std::vector<Method>& methods) {
     message_ = "nothing shown to compare: open an example or a file first";
     return false;
   }
+#ifdef __EMSCRIPTEN__
+  // The page runs one reconstruction worker, which a second job would take from the first.
+  message_ = "side by side runs in the desktop viewer for now; here, switch methods in turn";
+  return false;
+#endif
   stop_compare();
   for (Method method : methods) {
     auto view = std::make_unique<Compared>();
@@ -146,14 +151,16 @@ void Viewer::draw_compare(int width, int height) {
         try {
           view.renderer->set_scene(std::visit(
               [&](const auto& r) { return scene::build_scene(r, request); }, *view.reconstruction));
+          view.error.clear();
         } catch (const std::exception& e) {
           view.error = e.what();
+          view.renderer->set_scene(scene::Scene{});
         }
         view.drawn_scene = true;
       }
       const Verdict verdict_of = verdict(statistics_of(*view.reconstruction));
-      label += verdict_of.line;
-      good = verdict_of.manifold;
+      label += view.error.empty() ? verdict_of.line : view.error;
+      good = verdict_of.manifold && view.error.empty();
       render::Draw_options options;
       options.legend = false;
       options.title = false;

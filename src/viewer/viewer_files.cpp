@@ -25,8 +25,8 @@ namespace sculpt::viewer {
 using namespace internals;
 
 bool Viewer::export_animation(const std::string& path, int width, int height, int frames) {
-  return export_shot(path, width, height,
-                     scene::replays(request_.stage) ? "replay" : "stages", frames);
+  return export_shot(path, width, height, scene::replays(request_.stage) ? "replay" : "stages",
+                     frames);
 }
 
 bool Viewer::export_picture(const std::string& path, int width, int height) {

@@ -59,14 +59,17 @@ const Labelling_event* Viewer::latest_event() const {
 bool Viewer::has_replay() const {
   if (!reconstruction_) return false;
   const Options& options = options_of(*reconstruction_);
-  return scene::has_stage(options.method, shown_dimension(), scene::Stage::propagation) ||
-         scene::has_stage(options.method, shown_dimension(), scene::Stage::carving);
+  for (scene::Stage stage : scene::stages_of(options.method, shown_dimension())) {
+    if (scene::replays(stage)) return true;
+  }
+  return false;
 }
 
 bool Viewer::start_replay(scene::Stage stage, float pace) {
   if (!scene::replays(stage)) {
     message_ = std::string("the stage ") + scene::stage_id(stage) +
-               " does not replay; the replays are propagation (the labelling) and carving";
+               " does not replay; the replays are propagation (the labelling), carving and "
+               "candidates (the pruning)";
     return false;
   }
   if (!set_stage(stage)) return false;
@@ -97,7 +100,7 @@ void Viewer::advance_playback(double seconds) {
 
 void Viewer::draw_propagation_controls() {
   const long total = event_count();
-  int shown = int(request_.step < 0 ? total : request_.step);
+  int shown = int(request_.step < 0 ? total : std::min(request_.step, total));
   if (ImGui::Button(playing_ ? "Pause" : "Play")) {
     if (!playing_ && shown >= total) set_step(0);
     playing_ = !playing_;
