@@ -373,7 +373,7 @@ const std::vector<Figure>& paper_figures() {
     f.back().contradiction =
         "The paper shows clean sharp edges; on fandisk (a regularly sampled CAD part) the paper "
         "method leaves 386 non-manifold edges and 765 samples off. The robust method's result "
-        "is the next panel.";
+        "is the panel (robust).";
     claim(f.back(), "", defects_claim(386, 765, 7));
     claim(f.back(), "robust", closed_manifold_claim(1, 0));
     f.push_back(
