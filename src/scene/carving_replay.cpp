@@ -206,6 +206,18 @@ long replay_length(const Reconstruction<3>& r, Stage stage) {
   return length_of(r, stage);
 }
 
+Carving_moment moment_of(const Carving_replay& replay, std::size_t cell_count, long step) {
+  Carving_moment moment;
+  moment.shown = step < 0 ? replay.steps.size() : std::min<std::size_t>(step, replay.steps.size());
+  moment.states.assign(cell_count, Cell_state::outside_hull);
+  for (int c : replay.hull) moment.states[c] = Cell_state::kept;
+  for (std::size_t i = 0; i < moment.shown; ++i) {
+    for (int c : replay.steps[i].cells)
+      moment.states[c] = i + 1 == moment.shown ? Cell_state::taken_now : Cell_state::taken_before;
+  }
+  return moment;
+}
+
 std::string describe_step(const Carving_replay& replay, std::size_t step, int dimension) {
   const Carving_step& s = replay.steps.at(step);
   const std::string cells = dimension == 2 ? "triangle" : "tetrahedron";

@@ -12,6 +12,7 @@
 // a circumsphere, in doubles) leaves at a last step of its own, and a solid cell never leaves.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <sculpt/sculpt.hpp>
 #include <string>
@@ -52,6 +53,15 @@ std::shared_ptr<const Carving_replay> shared_carving_replay(
 // triangles); 0 for a stage that does not.
 long replay_length(const Reconstruction<2>& reconstruction, Stage stage);
 long replay_length(const Reconstruction<3>& reconstruction, Stage stage);
+
+// What each of stage 1's cells is after the first `step` steps (-1: all of them), for the
+// pictures of that moment; `shown` is the steps done.
+enum class Cell_state : std::uint8_t { outside_hull, kept, taken_before, taken_now };
+struct Carving_moment {
+  std::size_t shown = 0;
+  std::vector<Cell_state> states;  // by stage 1's cell index
+};
+Carving_moment moment_of(const Carving_replay& replay, std::size_t cell_count, long step);
 
 // A short line on a carving step, for titles and the viewer: "step 12 of 65: a pole destroys 2
 // triangles", "step 5 of 812: outer pole in its circumball".

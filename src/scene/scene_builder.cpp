@@ -588,19 +588,15 @@ class Scene_builder {
     }
     const auto held = shared_carving_replay(r_);
     const Carving_replay& replay = *held;
-    const std::size_t shown = request_.step < 0
-                                  ? replay.steps.size()
-                                  : std::min<std::size_t>(request_.step, replay.steps.size());
+    const Carving_moment moment = moment_of(replay, r_.delaunay.cells.size(), request_.step);
+    const std::size_t shown = moment.shown;
     std::vector<Cell<D>> kept, away, just;
-    {
-      std::vector<std::uint8_t> state(r_.delaunay.cells.size(), 0);  // 1 away, 2 just now
-      for (std::size_t i = 0; i < shown; ++i) {
-        for (int c : replay.steps[i].cells) state[c] = i + 1 == shown ? 2 : 1;
-      }
-      for (int c : replay.hull) {
-        const auto& cell = r_.delaunay.cells[c];
-        (state[c] == 0 ? kept : state[c] == 1 ? away : just).push_back(cell);
-      }
+    for (int c : replay.hull) {
+      const Cell_state state = moment.states[c];
+      (state == Cell_state::kept           ? kept
+       : state == Cell_state::taken_before ? away
+                                           : just)
+          .push_back(r_.delaunay.cells[c]);
     }
     const char* method = r_.options.method == Method::boissonnat ? "Boissonnat"
                          : replay.by_poles                       ? "Sculpting"

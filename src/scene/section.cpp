@@ -241,18 +241,26 @@ class Section_builder {
     }
     const auto held = shared_carving_replay(r_);
     const Carving_replay& replay = *held;
-    const std::size_t shown = request_.step < 0
-                                  ? replay.steps.size()
-                                  : std::min<std::size_t>(request_.step, replay.steps.size());
-    std::vector<std::uint8_t> kind(r_.delaunay.cells.size(), 2);  // outside the hull
-    for (int c : replay.hull) kind[c] = 0;
-    for (std::size_t i = 0; i < shown; ++i) {
-      for (int c : replay.steps[i].cells) kind[c] = i + 1 == shown ? 3 : 1;
-    }
+    const Carving_moment moment = moment_of(replay, r_.delaunay.cells.size(), request_.step);
+    const std::size_t shown = moment.shown;
+    // The kinds cells_by_kind fills: 0 kept, 1 taken before, 2 outside the hull, 3 taken now.
+    const auto kind_of = [](Cell_state state) {
+      switch (state) {
+        case Cell_state::kept:
+          return 0;
+        case Cell_state::taken_before:
+          return 1;
+        case Cell_state::taken_now:
+          return 3;
+        default:
+          return 2;
+      }
+    };
     scene_.title = "Section of the carving, " + (shown == 0 ? std::string("before any cell leaves")
                                                             : describe_step(replay, shown - 1, 3));
     const Cell<3>* first = r_.delaunay.cells.data();
-    cells_by_kind(r_.delaunay.cells, [&](const Cell<3>& cell) { return int(kind[&cell - first]); });
+    cells_by_kind(r_.delaunay.cells,
+                  [&](const Cell<3>& cell) { return kind_of(moment.states[&cell - first]); });
     if (shown > 0 && replay.steps[shown - 1].pole >= 0) {
       Layer& pole =
           add("current-pole", "pole just inserted", Primitive::points, palette::outer_pole_3d, 9);
