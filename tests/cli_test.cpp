@@ -426,10 +426,12 @@ TEST(Cli, RenderAnimatesTheReplayAndTheStages) {
   EXPECT_EQ(gif_bytes.substr(0, 6), "GIF89a");
   EXPECT_NE(gif_bytes.find("NETSCAPE2.0"), std::string::npos);
   EXPECT_EQ(gif_bytes.back(), ';');  // the trailer
-  // The carving replays too, in 2D and 3D.
+  // The carving replays too, in 2D and 3D, and so do the peers that grow.
   for (const std::string& carving :
        {std::string("render --example star --method paper --stage carving"),
-        std::string("render --example bumpy --method robust --stage carving")}) {
+        std::string("render --example bumpy --method robust --stage carving"),
+        std::string("render --example bumpy --method advancing-front --stage front"),
+        std::string("render --example bumpy --method alpha-shape --stage alpha")}) {
     const std::string film = output_path("carving.webp");
     ASSERT_EQ(
         run_sculpt(carving + " --animate replay --frames 6 --size 200x150 -o " + film).exit_code, 0)

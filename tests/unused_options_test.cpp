@@ -74,7 +74,7 @@ TEST(Unused_options, AreRefusedInOneLineThatSaysWhereTheyApply) {
       {{"reconstruct", "--example", "torus", "--merge-duplicates", "-o", "s.ply"}, "has none"},
       // The drawing options, by what the picture draws.
       {{"render", "sphere.xyz", "--stage", "poles", "--step", "5", "-o", "x.png"},
-       "at the stages propagation, carving and candidates"},
+       "at the stages propagation, carving, candidates, front and alpha"},
       {{"render", "circle.xy", "--wireframe", "-o", "x.png"}, "this picture has none"},
       {{"render", "sphere.xyz", "--stage", "delaunay", "--smooth", "-o", "x.png"},
        "this picture has none"},

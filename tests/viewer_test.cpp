@@ -309,6 +309,25 @@ double share_of_colour(const render::Image& image, const scene::Color& colour) {
   return double(matching) / double(total);
 }
 
+// Share of the window right of the panel in this colour lit at any strength: the pixel's
+// chromaticity (its channels over their sum) within 0.015 of the colour's, white and black apart.
+double share_of_shade(const render::Image& image, const scene::Color& colour) {
+  const float sum = colour.r + colour.g + colour.b;
+  const float r = colour.r / sum, g = colour.g / sum;
+  std::size_t total = 0, matching = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = panel_width + 1; x < image.width; ++x) {
+      const auto* p = image.pixel(x, y);
+      ++total;
+      const int level = p[0] + p[1] + p[2];
+      if (level < 90 || level > 735) continue;
+      matching += std::abs(float(p[0]) / float(level) - r) <= 0.015f &&
+                  std::abs(float(p[1]) / float(level) - g) <= 0.015f;
+    }
+  }
+  return double(matching) / double(total);
+}
+
 // In section, the paper method's DT(S + OUP) of a torus reads as its Fig. 1: the tube's two
 // discs kept, the cells with an inserted pole sculpted away around them, seen along the plane.
 TEST(Viewer, ASectionShowsTheCellsKeptAndSculptedAway) {
@@ -350,9 +369,54 @@ TEST(Viewer, TheCarvingReplaysFromTheHullToTheSolid) {
             share(middle, scene::palette::sculpted_away));
   const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/carving.log");
   EXPECT_NE(log.find("--stage carving"), std::string::npos) << log;
-  EXPECT_NE(log.find("replay propagation (the labelling), replay carving or replay candidates"),
-            std::string::npos)
+  EXPECT_NE(
+      log.find("replay propagation (the labelling), carving, candidates (the pruning), front"),
+      std::string::npos)
       << log;
+}
+
+// The peers that grow replay too: the Advancing Front's surface spreads over the torus triangle
+// by triangle, and the alpha shape's solid grows from the samples alone, through the method's
+// own alpha (where the stage opens), to the hull.
+TEST(Viewer, ThePeersGrowStepByStep) {
+  std::map<std::string, std::string> paths;  // output_path clears the file: called once a name
+  const auto shot = [&](const std::string& name) -> const std::string& {
+    auto found = paths.find(name);
+    if (found == paths.end())
+      found = paths.emplace(name, testing::output_path(name + ".png")).first;
+    return found->second;
+  };
+  ASSERT_EQ(
+      run_viewer_script(
+          "growth",
+          "example torus\nmethod advancing-front\nwait\nreplay front\nstep 0\nframes 2\n"
+          "screenshot " +
+              shot("front-start") + "\nstep 3000\nframes 2\nscreenshot " + shot("front-middle") +
+              "\nreplay front 2000\nwait-replay\nframes 2\n"
+              "screenshot " +
+              shot("front-end") +
+              "\nmethod alpha-shape\nwait\n"
+              "stage alpha\nframes 2\nscreenshot " +
+              shot("alpha-own") + "\nstep 0\nframes 2\nscreenshot " + shot("alpha-start") +
+              "\nlink\nquit\n"),
+      0);
+  const auto share = [&](const std::string& name, scene::Color colour) {
+    return share_of_colour(render::read_png(shot(name)), colour);
+  };
+  const auto grown = [&](const std::string& name) {
+    return share_of_shade(render::read_png(shot(name)), scene::palette::surface);
+  };
+  // Differences between frames: the panel's greys are the same in each.
+  EXPECT_GT(grown("front-middle"), grown("front-start") + 0.01);
+  EXPECT_GT(grown("front-end"), grown("front-middle"));
+  EXPECT_GT(share("front-middle", scene::palette::border), 0.0005);  // the front's edges
+  EXPECT_EQ(share("front-end", scene::palette::border), 0.0);        // closed: no front left
+  const auto solid = [&](const std::string& name) {
+    return share_of_shade(render::read_png(shot(name)), scene::palette::solid);
+  };
+  EXPECT_GT(solid("alpha-own"), solid("alpha-start") + 0.05);
+  const std::string log = testing::read_file(std::string(SCULPT_TEST_OUTPUT) + "/growth.log");
+  EXPECT_NE(log.find("--stage alpha --step 0"), std::string::npos) << log;
 }
 
 // A replay's step belongs to its stage: the labelling's 500th event does not carry over to the

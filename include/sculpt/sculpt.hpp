@@ -319,6 +319,23 @@ struct Candidates_stage {
   std::vector<int> without_umbrella;
 };
 
+/// CGAL's Advancing Front grows its surface one triangle at a time from a seed, at each step the
+/// most plausible triangle on the front's border: the order it added them in (indices into
+/// Reconstruction::surface, which is kept in canonical order).
+struct Front_stage {
+  std::vector<int> order;
+};
+
+/// Alpha shapes: every finite cell of the samples' own Delaunay triangulation with the radius of
+/// its circumball, smallest first. The solid at a radius alpha is the cells up to it, so the list
+/// is the alpha shape at every alpha (the filtration); `chosen` cells make the method's solid.
+/// Kept with the triangulations (Options::keep_triangulations).
+struct Alpha_stage {
+  std::vector<Cell<3>> cells;
+  std::vector<double> radii;  ///< in the input's units, ascending
+  std::size_t chosen = 0;
+};
+
 struct Stage_measure {
   std::string name;
   double seconds = 0;
@@ -423,6 +440,8 @@ struct Reconstruction {
   Carving_stage carving;                ///< 6b (robust)
   Crust_stage<D> crust;                 ///< 6c (crust)
   Candidates_stage<D> candidates;       ///< 6d (crust and co-cone in 3D)
+  Front_stage front;                    ///< the Advancing Front (3D)
+  Alpha_stage alpha;                    ///< alpha shapes (3D)
   std::vector<Cell<D>> solid;           ///< 7: cells of stage 6 whose vertices are all samples
   std::vector<Facet<D>> surface;        ///< 8: oriented facets; closed: normals point outward
   /// 3D, a closed surface of genus > 0: its thin handles, the evidence for Statistics::thin_handles

@@ -34,9 +34,10 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   auto* example = render->add_option("--example", shot.example, "A built-in example instead");
   input->excludes(example);
   render->add_option("--stage", shot.stage, stages_help())->capture_default_str();
-  render->add_option(
-      "--step", shot.step,
-      "A replay (the stages propagation, carving, candidates): show it after K events or steps");
+  render->add_option("--step", shot.step,
+                     "A replay (the stages propagation, carving, candidates, front, alpha): show "
+                     "it after K events "
+                     "or steps");
   render->add_option("--focus-sample", shot.focus_sample,
                      "Show this sample's Voronoi cell, poles, polar balls and inscribed cubes");
   render
@@ -108,10 +109,11 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
   render->add_flag("--smooth", shot.smooth, "Surface: smooth shading");
   render->add_flag("--no-legend", shot.no_legend, "No legend and title");
   render
-      ->add_option("--animate", shot.animate,
-                   "An animated WebP instead of a PNG: 'replay' (the labelling, event by event; "
-                   "with --stage carving or candidates, that stage step by step) or 'stages' "
-                   "(the method's stages in order)")
+      ->add_option(
+          "--animate", shot.animate,
+          "An animated WebP instead of a PNG: 'replay' (the labelling, event by event; "
+          "with --stage carving, candidates, front or alpha, that stage step by step) or 'stages' "
+          "(the method's stages in order)")
       ->check(CLI::IsMember({"replay", "stages"}));
   render->add_option("--frames", shot.frames, "Pictures in a replay animation")
       ->check(CLI::Range(2, 2000))

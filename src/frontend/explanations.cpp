@@ -217,6 +217,18 @@ std::string explanation(Method method, Surface_kind kind, int dimension, scene::
                    "the co-cone (a slab about the tangent plane) of each of their well-sampled "
                    "samples. Magenta samples were judged undersampled (Dey & Giesen) and impose "
                    "nothing; teal ones have no umbrella for the tight co-cone.";
+    case Stage::front:
+      return "The Advancing Front grows its surface from one seed triangle (the smallest), "
+             "adding at each step a Delaunay triangle on an edge of the front, the border of "
+             "what it has grown: the one most plausible (small, and little bent from its "
+             "neighbour) among those that keep an oriented 2-manifold. Watch it stop where no "
+             "triangle is plausible: that is where it leaves holes.";
+    case Stage::alpha:
+      return "The alpha shape at every alpha: the Delaunay cells join the solid in the order "
+             "of their circumball's radius, smallest first. Small alphas leave the samples "
+             "apart; large ones fill the hull. The method stops at the smallest alpha whose "
+             "solid is one piece holding every sample, so one radius serves the whole shape: "
+             "step past it and see cavities fill, step before it and see holes open.";
     case Stage::solid:
       return solid(method, dimension);
     case Stage::surface:

@@ -139,7 +139,8 @@ std::string unused_drawing_option(const Shot& shot, const scene::Scene& scene, S
   if (scene::Stage stage; shot.step != defaults.step &&
                           !(scene::parse_stage(shot.stage, stage) && scene::replays(stage))) {
     return named("--step", "step", spelling) +
-           " chooses a moment of a replay, at the stages propagation, carving and candidates; "
+           " chooses a moment of a replay, at the stages propagation, carving, candidates, front "
+           "and alpha; "
            "this is the stage " +
            shot.stage;
   }
@@ -191,10 +192,10 @@ std::string unused_animation_option(const Shot& shot, Spelling spelling) {
     return named(shot.stage != defaults.stage && !replay_stage ? "--stage" : "--step",
                  shot.stage != defaults.stage && !replay_stage ? "stage" : "step", spelling) +
            " chooses one picture; an animation " +
-           (shot.animate == "replay"
-                ? "replays the labelling (or, with the stage carving or candidates, that stage) "
-                  "step by step"
-                : "draws every stage in order");
+           (shot.animate == "replay" ? "replays the labelling (or, with the stage carving, "
+                                       "candidates, front or alpha, that stage) "
+                                       "step by step"
+                                     : "draws every stage in order");
   }
   if (shot.animate == "stages" && shot.frames != defaults.frames) {
     return named("--frames", "frames", spelling) +

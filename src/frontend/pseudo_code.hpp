@@ -324,8 +324,10 @@ inline Pseudo_code advancing_front_pseudo_code() {
       "while the front (border) has an edge e:",    "    t <- DT triangle on e, smallest radius,",
       "         that keeps an oriented 2-manifold", "    add t to the surface; the front moves",
   };
-  code.lines_of_stage = {
-      {Stage::samples, {0}}, {Stage::delaunay, {0}}, {Stage::surface, {2, 1, 3, 5}}};
+  code.lines_of_stage = {{Stage::samples, {0}},
+                         {Stage::delaunay, {0}},
+                         {Stage::front, {5, 3, 4}},
+                         {Stage::surface, {2, 1, 3, 5}}};
   return code;
 }
 
@@ -341,8 +343,11 @@ inline Pseudo_code alpha_shape_pseudo_code() {
       "solid <- those cells",
       "surface <- facets between solid and rest",
   };
-  code.lines_of_stage = {
-      {Stage::samples, {0}}, {Stage::delaunay, {0}}, {Stage::solid, {4, 1}}, {Stage::surface, {5}}};
+  code.lines_of_stage = {{Stage::samples, {0}},
+                         {Stage::delaunay, {0}},
+                         {Stage::alpha, {2, 4}},
+                         {Stage::solid, {4, 1}},
+                         {Stage::surface, {5}}};
   return code;
 }
 

@@ -395,7 +395,7 @@ std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& r
           }
           return;
         }
-        // The replay of the stage asked for, when it is one (carving, candidates); else the
+        // The replay of the stage asked for, when it is one (carving, candidates, front, alpha); else the
         // labelling's.
         scene::Stage stage = scene::Stage::propagation;
         if (scene::Stage asked; scene::parse_stage(shot.stage, asked) && scene::replays(asked))

@@ -13,7 +13,7 @@ namespace {
 
 // "SCRB" and a version: bytes of another layout are refused, not misread.
 constexpr std::uint32_t magic = 0x42524353;
-constexpr std::uint32_t format_version = 1;
+constexpr std::uint32_t format_version = 2;  // 2: the front and alpha stages
 
 class Byte_writer {
  public:
@@ -91,7 +91,7 @@ constexpr bool wasm32 = sizeof(void*) == 4;
 static_assert(sizeof(Statistics) == (wasm32 ? 272 : 448),
               "a statistic to carry: statistics_fields");
 static_assert(sizeof(Options) == (wasm32 ? 72 : 80), "an option to carry: options_fields");
-static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 712 : 1264), "a stage to carry: stage_fields");
+static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 752 : 1344), "a stage to carry: stage_fields");
 
 // One list of every field, read or written by the same code: a field cannot be written and then
 // forgotten when read. `io` is a Byte_writer (fields const) or a Byte_reader.
@@ -196,6 +196,10 @@ void stage_fields(Io& io, Reconstruction_ref& r) {
   io.value(r.candidates.rims_kept);
   io.values(r.candidates.undersampled);
   io.values(r.candidates.without_umbrella);
+  io.values(r.front.order);
+  io.values(r.alpha.cells);
+  io.values(r.alpha.radii);
+  io.value(r.alpha.chosen);
   io.values(r.solid);
   io.values(r.surface);
   io.values(r.thin_handles);

@@ -363,6 +363,11 @@ crust              voronoi_vertices (v, d), cells, cell_count: DT(S + V) of the 
 candidates         chosen, pruned (k, d): the facets the crust or co-cone chose, those pruned;
                    rims_kept; spanning (k, d): robust bordered surfaces, the facets removed as
                    spanning an opening (the paper's bordered surface is chosen + spanning)
+front              order (t,) int32: the Advancing Front's surface triangles, as indices into
+                   surface, in the order it added them
+alpha              cells (c, 4), radii (c,): alpha shapes, every cell of the samples' own
+                   Delaunay triangulation with its circumradius, smallest first; chosen: how
+                   many make the method's solid (with keep_triangulations)
 handles            thin: records (loop (4,) int32, width_over_spacing) of a closed surface's
                    handles thinner than the samples' spacing, the loop of 3 samples (then -1)
                    or 4 around or through each (any method, 3D; stats['thin_handles'] counts)
@@ -736,7 +741,8 @@ uint8 RGBA array (matplotlib's imshow shows it).
 stage         a name of sculpt.stages(result.method, result.dimension): 'samples', 'delaunay',
               'voronoi', 'poles', 'propagation', 'surface', ...
 size          (width, height) in pixels, or one number for a square
-step          a replay (propagation, carving): its first `step` events or steps; -1: all
+step          a replay (propagation, carving, candidates, front, alpha): its first `step`
+              events or steps; -1: all (alpha: the method's own)
 focus_sample  a sample whose Voronoi cell, poles, polar balls and inscribed cubes are drawn
 focus_pole    a pole whose polar ball, and the pole that labelled it, are drawn
 layers        only these layers (their names are in the error message of a wrong one)

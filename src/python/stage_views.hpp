@@ -185,6 +185,16 @@ py::dict stage_objects(py::handle owner, const Reconstruction<D>& r) {
     stages["candidates"] = stage_object(candidates);
   }
   {
+    py::dict front;
+    front["order"] = values_view(owner, r.front.order);
+    stages["front"] = stage_object(front);
+    py::dict alpha;
+    alpha["cells"] = rows_view(owner, r.alpha.cells);
+    alpha["radii"] = values_view(owner, r.alpha.radii);
+    alpha["chosen"] = r.alpha.chosen;
+    stages["alpha"] = stage_object(alpha);
+  }
+  {
     py::dict handles;
     handles["thin"] =
         read_only_view(owner, r.thin_handles.data(), r.thin_handles.size(), thin_handle_type());

@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "core/point_tree.hpp"
+#include "growth_stages.hpp"
 #include "scene.hpp"
 #include "simplex_geometry.hpp"
 
@@ -195,6 +196,10 @@ long length_of(const Reconstruction<D>& r, Stage stage) {
   if (stage == Stage::propagation) return long(r.propagation.events.size());
   if (stage == Stage::carving) return long(shared_carving_replay(r)->steps.size());
   if (stage == Stage::candidates) return long(r.candidates.pruned.size());
+  if constexpr (D == 3) {
+    if (stage == Stage::front) return front_length(r);
+    if (stage == Stage::alpha) return alpha_length(r);
+  }
   return 0;
 }
 }  // namespace

@@ -53,6 +53,8 @@ enum class Stage {
   sculpted_delaunay,  // DT(S ∪ OUP)
   crust_delaunay,     // the crust's DT(S ∪ V), V the Voronoi vertices (2D) or the poles (3D)
   candidates,         // crust and co-cone (3D): the triangles chosen, and those pruned
+  front,              // the Advancing Front's surface after `step` triangles (growth_stages.hpp)
+  alpha,              // the alpha shape after `step` cells, smallest circumball first
   solid,              // the all-sample cells
   surface,            // the result: surface (3D) or curve (2D)
 };
@@ -62,11 +64,13 @@ const std::vector<Stage>& all_stages();  // of every method, in order
 // from samples to surface but crust-delaunay and candidates; the crust samples, delaunay,
 // voronoi, crust-delaunay, surface, and in 3D also poles and candidates; the co-cone samples,
 // delaunay, voronoi, poles, candidates, surface; the NN-crust and the Advancing Front samples,
-// delaunay, surface; the alpha shape samples, delaunay, solid, surface.
+// delaunay, surface (the Advancing Front with its front between); the alpha shape samples,
+// delaunay, alpha, solid, surface.
 const std::vector<Stage>& stages_of(Method method, int dimension);
 bool has_stage(Method method, int dimension, Stage stage);
 // Whether a stage is replayed step by step (Request::step): propagation (the labelling's
-// events), carving (the hull's cells leaving it), candidates (the pruning, triangle by triangle).
+// events), carving (the hull's cells leaving it), candidates (the pruning, triangle by triangle),
+// front (the Advancing Front's triangles as it adds them), alpha (the cells as alpha grows).
 bool replays(Stage stage);
 // Throws std::invalid_argument naming the method's stages when it has no such stage.
 void require_stage(Method method, int dimension, Stage stage);
@@ -85,7 +89,8 @@ struct Clip {
 
 struct Request {
   Stage stage = Stage::surface;
-  // A replay (propagation, carving, candidates): how many events or steps have happened; -1: all.
+  // A replay (propagation, carving, candidates, front, alpha): how many events or steps have
+  // happened; -1: all (at the stage alpha: the method's own alpha).
   long step = -1;
   int focus_sample = -1;   // show this sample's Voronoi cell, poles, polar balls, inscribed cubes
   int focus_pole = -1;     // show this pole's ball and the pole that labelled it

@@ -12,6 +12,7 @@
 #include "colours.hpp"
 #include "core/facet_orientation.hpp"
 #include "cut_cells.hpp"
+#include "growth_stages.hpp"
 #include "layer_helpers.hpp"
 #include "palette.hpp"
 #include "scene.hpp"
@@ -92,6 +93,15 @@ class Scene_builder {
       case Stage::candidates:
         candidates();
         break;
+      case Stage::front:
+      case Stage::alpha:
+        if constexpr (D == 3) {
+          if (request_.stage == Stage::front)
+            front_growth(layers_, scene_, r_, request_.step);
+          else
+            alpha_growth(layers_, scene_, r_, request_);
+        }
+        break;
       case Stage::solid:
         if (joins_neighbours(r_.options.method, r_.options.kind, D)) {
           scene_.title = "No solid: open curves bound no region";
@@ -109,8 +119,11 @@ class Scene_builder {
     // Dense samples would cover a shaded surface or solid: there they are shown when asked for.
     const bool shaded =
         D == 3 && (request_.stage == Stage::surface || request_.stage == Stage::solid ||
-                   request_.stage == Stage::hull || request_.stage == Stage::carving);
-    if (!shaded || requested("samples")) samples();
+                   request_.stage == Stage::hull || request_.stage == Stage::carving ||
+                   request_.stage == Stage::front || request_.stage == Stage::alpha);
+    // The growing stages draw their own samples: those not yet reached.
+    const bool grows = request_.stage == Stage::front || request_.stage == Stage::alpha;
+    if (!grows && (!shaded || requested("samples"))) samples();
     scene_.layers.assign(std::make_move_iterator(layers_.begin()),
                          std::make_move_iterator(layers_.end()));
     select_layers();

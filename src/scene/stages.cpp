@@ -14,6 +14,7 @@ const std::vector<Stage>& all_stages() {
                                             Stage::propagation,    Stage::outer_concave,
                                             Stage::carving,        Stage::sculpted_delaunay,
                                             Stage::crust_delaunay, Stage::candidates,
+                                            Stage::front,          Stage::alpha,
                                             Stage::solid,          Stage::surface};
   return stages;
 }
@@ -32,9 +33,10 @@ const std::vector<Stage>& stages_of(Method method, int dimension) {
   static const std::vector<Stage> cocone = {Stage::samples, Stage::delaunay,   Stage::voronoi,
                                             Stage::poles,   Stage::candidates, Stage::surface};
   static const std::vector<Stage> nn_crust = {Stage::samples, Stage::delaunay, Stage::surface};
-  static const std::vector<Stage> advancing_front = nn_crust;
-  static const std::vector<Stage> alpha_shape = {Stage::samples, Stage::delaunay, Stage::solid,
-                                                 Stage::surface};
+  static const std::vector<Stage> advancing_front = {Stage::samples, Stage::delaunay, Stage::front,
+                                                     Stage::surface};
+  static const std::vector<Stage> alpha_shape = {Stage::samples, Stage::delaunay, Stage::alpha,
+                                                 Stage::solid, Stage::surface};
   static const std::vector<Stage> power_crust = {
       Stage::samples, Stage::delaunay,    Stage::voronoi, Stage::poles,
       Stage::seeds,   Stage::propagation, Stage::surface};
@@ -71,7 +73,8 @@ bool has_stage(Method method, int dimension, Stage stage) {
 }
 
 bool replays(Stage stage) {
-  return stage == Stage::propagation || stage == Stage::carving || stage == Stage::candidates;
+  return stage == Stage::propagation || stage == Stage::carving || stage == Stage::candidates ||
+         stage == Stage::front || stage == Stage::alpha;
 }
 
 const char* stage_id(Stage stage) {
@@ -100,6 +103,10 @@ const char* stage_id(Stage stage) {
       return "crust-delaunay";
     case Stage::candidates:
       return "candidates";
+    case Stage::front:
+      return "front";
+    case Stage::alpha:
+      return "alpha";
     case Stage::solid:
       return "solid";
     case Stage::surface:
@@ -134,6 +141,10 @@ const char* stage_title(Stage stage) {
       return "DT(S + V): the samples and their Voronoi vertices";
     case Stage::candidates:
       return "Candidate triangles, and the pruned ones";
+    case Stage::front:
+      return "Advancing Front: the triangles in the order it adds them";
+    case Stage::alpha:
+      return "Alpha shape as alpha grows";
     case Stage::solid:
       return "Sculpted solid";
     case Stage::surface:

@@ -141,9 +141,10 @@ int main(int argc, char** argv) {
         return "no stage '" + id + "' (stages: " + stages + ")";
       });
   command_line
-      .add_option("--step", step,
-                  "With --stage propagation, carving or candidates: the replay's events "
-                  "or steps shown")
+      .add_option(
+          "--step", step,
+          "With --stage propagation, carving, candidates, front or alpha: the replay's events "
+          "or steps shown")
       ->check(CLI::Range(0L, 1L << 30));
   command_line.add_option("--pick-sample", picked_sample, "Select this sample once reconstructed")
       ->check(CLI::NonNegativeNumber);
@@ -183,7 +184,7 @@ int main(int argc, char** argv) {
   if (sculpt::scene::Stage replayed; step >= 0 && !(sculpt::scene::parse_stage(stage, replayed) &&
                                                     sculpt::scene::replays(replayed))) {
     std::cerr << "sculpt-view: usage error: --step chooses a moment of a replay, at --stage "
-                 "propagation, carving or candidates"
+                 "propagation, carving, candidates, front or alpha"
               << (stage.empty() ? "" : "; this is the stage " + stage)
               << " (see sculpt-view --help)\n";
     return sculpt::frontend::exit_bad_usage;

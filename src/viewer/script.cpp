@@ -310,8 +310,9 @@ std::string Script::before_frame(Viewer& viewer) {
       if (words >> more || !scene::parse_stage(argument, stage) || !scene::replays(stage) ||
           (paced && !(pace >= 1 && pace <= 2000))) {
         fail("'" + line +
-             "': expected replay propagation (the labelling), replay carving or replay "
-             "candidates (the pruning), then optionally the steps a second (1 to 2000)");
+             "': expected replay propagation (the labelling), carving, candidates (the "
+             "pruning), front (the Advancing Front) or alpha (alpha shapes), then optionally "
+             "the steps a second (1 to 2000)");
         continue;
       }
       done(viewer.start_replay(stage, float(pace)));

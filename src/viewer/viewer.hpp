@@ -168,7 +168,7 @@ class Viewer {
   // the labelling or the carving), and the picked sample (-1: none).
   int shown_dimension() const;
   bool has_replay() const;
-  // Shows a stage that replays (propagation, carving) from its start and plays it, at `pace`
+  // Shows a stage that replays (propagation, carving, candidates, front, alpha) from its start and plays it, at `pace`
   // steps a second (0: the labelling at the pace set, a carving in about ten seconds); false
   // with a message when the method has no such stage or it does not replay.
   bool start_replay(scene::Stage stage, float pace = 0);
@@ -303,6 +303,7 @@ class Viewer {
   // The steps of the replay on screen (the labelling's events, the carving's steps), counted
   // once per reconstruction and stage.
   long event_count() const;
+  long shown_step() const;  // the replay's step shown (-1 read as the stage's own end)
   const Labelling_event* latest_event() const;
   mutable std::weak_ptr<const Any_reconstruction> counted_reconstruction_;
   mutable scene::Stage counted_stage_ = scene::Stage::samples;

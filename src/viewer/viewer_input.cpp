@@ -90,7 +90,7 @@ void Viewer::press_key(int key) {
 }
 
 void Viewer::on_key(int key) {
-  const long shown = request_.step < 0 ? event_count() : request_.step;
+  const long shown = shown_step();
   switch (key) {
     case GLFW_KEY_R:
     case GLFW_KEY_F:

@@ -160,7 +160,7 @@ void Viewer::draw_pseudo_code() {
   const frontend::Pseudo_code& code =
       frontend::pseudo_code(options.method, options.kind, dimension_of(*reconstruction_));
   // A conflict offered right after the event on screen: its line, so the replay reaches it.
-  const long shown = request_.step < 0 ? event_count() : request_.step;
+  const long shown = shown_step();
   const bool conflict_now =
       std::visit([&](const auto& r) { return frontend::conflict_after(r.propagation, shown); },
                  *reconstruction_);

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "scene/carving_replay.hpp"
+#include "scene/growth_stages.hpp"
 #include "viewer.hpp"
 #include "viewer_internals.hpp"
 
@@ -46,6 +47,16 @@ long Viewer::event_count() const {
   return counted_events_;
 }
 
+long Viewer::shown_step() const {
+  if (request_.step >= 0) return std::min(request_.step, event_count());
+  // The alpha shape opens at the method's own alpha, not at the hull every cell makes.
+  if (reconstruction_ && request_.stage == scene::Stage::alpha) {
+    if (const auto* r = std::get_if<Reconstruction<3>>(reconstruction_.get()))
+      return long(r->alpha.chosen);
+  }
+  return event_count();
+}
+
 const Labelling_event* Viewer::latest_event() const {
   if (!reconstruction_ || request_.stage != scene::Stage::propagation) return nullptr;
   return std::visit(
@@ -68,16 +79,16 @@ bool Viewer::has_replay() const {
 bool Viewer::start_replay(scene::Stage stage, float pace) {
   if (!scene::replays(stage)) {
     message_ = std::string("the stage ") + scene::stage_id(stage) +
-               " does not replay; the replays are propagation (the labelling), carving and "
-               "candidates (the pruning)";
+               " does not replay; the replays are propagation (the labelling), carving, "
+               "candidates (the pruning), front (the Advancing Front) and alpha (alpha shapes)";
     return false;
   }
   if (!set_stage(stage)) return false;
   set_step(0);
-  // A carving of thousands of cells plays in about ten seconds; the labelling at its pace.
+  // A replay of thousands of steps plays in about ten seconds; the labelling at its pace.
   if (pace > 0)
     events_per_second_ = std::clamp(pace, 1.0f, 2000.0f);
-  else if (stage == scene::Stage::carving)
+  else if (stage != scene::Stage::propagation)
     events_per_second_ = std::clamp(float(event_count()) / 10.0f, 5.0f, 2000.0f);
   playing_ = true;
   playback_clock_ = 0;
@@ -90,7 +101,7 @@ void Viewer::advance_playback(double seconds) {
   const long steps = long(playback_clock_);
   if (steps == 0) return;
   playback_clock_ -= double(steps);
-  const long current = request_.step < 0 ? event_count() : request_.step;
+  const long current = shown_step();
   if (current >= event_count()) {
     playing_ = false;
     return;
@@ -100,7 +111,7 @@ void Viewer::advance_playback(double seconds) {
 
 void Viewer::draw_propagation_controls() {
   const long total = event_count();
-  int shown = int(request_.step < 0 ? total : std::min(request_.step, total));
+  int shown = int(shown_step());
   if (ImGui::Button(playing_ ? "Pause" : "Play")) {
     if (!playing_ && shown >= total) set_step(0);
     playing_ = !playing_;
@@ -120,6 +131,10 @@ void Viewer::draw_propagation_controls() {
   if (request_.stage != scene::Stage::propagation) {
     const std::string line = std::visit(
         [&](const auto& r) -> std::string {
+          if constexpr (std::decay_t<decltype(r)>::dimension == 3) {
+            if (request_.stage == scene::Stage::front || request_.stage == scene::Stage::alpha)
+              return scene::describe_growth(r, request_.stage, shown);
+          }
           if (!carving)
             return shown == 0 ? "before any candidate is pruned"
                               : "step " + std::to_string(shown) + " of " + std::to_string(total) +

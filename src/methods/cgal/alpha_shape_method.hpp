@@ -16,6 +16,7 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <sculpt/sculpt.hpp>
@@ -28,6 +29,27 @@
 #include "outward_orientation.hpp"
 
 namespace sculpt {
+
+// The stage `alpha`: every finite cell with its circumradius, smallest first (ties in canonical
+// order), so that the first k cells are the alpha shape's solid at the k-th radius.
+template <class Alpha_shape>
+void keep_filtration(const Alpha_shape& shape, int scale, Alpha_stage& stage) {
+  std::vector<std::pair<double, Cell<3>>> cells;
+  for (auto cell : shape.finite_cell_handles()) {
+    const Cell<3> corners{cell->vertex(0)->info(), cell->vertex(1)->info(), cell->vertex(2)->info(),
+                          cell->vertex(3)->info()};
+    cells.push_back({std::ldexp(std::sqrt(CGAL::to_double(cell->get_alpha())), -scale),
+                     canonical_reading(corners)});
+    if (!(shape.get_alpha() < cell->get_alpha())) ++stage.chosen;
+  }
+  std::sort(cells.begin(), cells.end());
+  stage.cells.reserve(cells.size());
+  stage.radii.reserve(cells.size());
+  for (const auto& [radius, corners] : cells) {
+    stage.cells.push_back(corners);
+    stage.radii.push_back(radius);
+  }
+}
 
 template <class Traits>
 void run_alpha_shape_method(Reconstruction<3>& result, Stage_clock& clock) {
@@ -86,6 +108,7 @@ void run_alpha_shape_method(Reconstruction<3>& result, Stage_clock& clock) {
     }
     result.surface.push_back(triangle);
   }
+  if (result.options.keep_triangulations) keep_filtration(shape, scale, result.alpha);
   put_in_canonical_order(result.surface);
   put_in_canonical_order(result.solid);
   if (!result.options.keep_solid) result.solid.clear();
