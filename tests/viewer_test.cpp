@@ -815,6 +815,25 @@ TEST(Viewer, TheShippedLessonRuns) {
   EXPECT_TRUE(std::filesystem::exists(folder + "/lesson.xy"));
 }
 
+// The lesson on comparing methods runs too, side by side included (what its narration claims
+// of each method is tested in lesson_claims_test.cpp).
+TEST(Viewer, TheComparingLessonRuns) {
+  std::string script =
+      testing::read_file(std::string(SCULPT_SOURCE_DIR) + "/examples/lessons/comparing.script");
+  ASSERT_FALSE(script.empty());
+  const std::string folder = std::string(SCULPT_TEST_OUTPUT) + "/comparing-lesson";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  const std::string verb = "screenshot ";
+  for (auto at = script.find(verb); at != std::string::npos; at = script.find(verb, at + 1))
+    script.insert(at + verb.size(), folder + "/");
+  ASSERT_EQ(run_viewer_script("comparing-lesson", script), 0);
+  std::size_t pictures = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    pictures += entry.path().extension() == ".png";
+  EXPECT_EQ(pictures, 7u);
+}
+
 // Another model is framed afresh; another method on the same points keeps the camera.
 TEST(Viewer, FitsTheCameraToEveryNewModel) {
   const std::string blob = testing::output_path("new-model-fitted.png"),

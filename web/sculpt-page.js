@@ -57,8 +57,10 @@ function argumentsFromAddress() {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Reconstructions in a Web Worker (src/viewer/platform/worker_job.cpp asks for them). The core's
-// module is compiled once and handed to each worker; a cancel ends the worker and starts another.
+// Reconstructions in Web Workers (src/viewer/platform/worker_job.cpp asks for them), a worker for
+// each job running: side by side runs the compared methods beside the main job. The core's
+// module is compiled once and handed to each worker; one worker done with its job waits for
+// the next, and a cancel ends the job's worker (one more stands ready).
 
 const coreUrl = new URL('sculpt/sculpt-core.wasm', import.meta.url);
 const compiledCore = WebAssembly.compileStreaming(fetch(coreUrl)).catch(async () => {
@@ -69,35 +71,42 @@ const compiledCore = WebAssembly.compileStreaming(fetch(coreUrl)).catch(async ()
 let coreFailure = '';  // why the core cannot be had, once it is known
 compiledCore.catch((error) => {
   coreFailure = `the reconstruction module cannot be loaded (${error.message})`;
-  if (jobs.current) jobs.finish(jobs.current, coreFailure, '', null);
+  for (const id of [...jobs.running.keys()]) jobs.finish(id, coreFailure, '', null);
 });
 
 const jobs = {
-  worker: null,
-  current: 0,  // the job the viewer waits for (0: none)
-  started: 0,  // how many the viewer asked for (the tests wait for a dropped file's)
+  idle: [],             // workers waiting for a job
+  running: new Map(),   // a job's id -> its worker (null while its file is read)
+  started: 0,           // how many the viewer asked for (the tests wait for a dropped file's)
 
-  // A worker of its own for what follows; the messages of the ones before are not listened to.
+  // A worker given the compiled core; its messages are heeded while it runs a job.
   spawn() {
     const worker = new Worker(new URL('reconstruction-worker.mjs', import.meta.url),
                               { type: 'module' });
-    this.worker = worker;
-    worker.onmessage = ({ data }) => {
-      if (worker === this.worker) this.receive(data);
-    };
+    worker.onmessage = ({ data }) => this.receive(worker, data);
     worker.onerror = (event) => {
-      if (worker !== this.worker) return;
       // A worker that failed is not trusted with the next job.
-      const failed = this.current;
       worker.terminate();
-      this.spawn();
+      this.idle = this.idle.filter((w) => w !== worker);
+      const failed = this.jobOf(worker);
       if (failed) this.finish(failed, `the reconstruction stopped: ${event.message}`, '', null);
     };
     compiledCore.then((module) => worker.postMessage({ type: 'init', module }), () => {});
+    return worker;
+  },
+
+  // One worker stands ready, so that a job starts without waiting for the core to start.
+  keepOneReady() {
+    if (this.idle.length === 0) this.idle.push(this.spawn());
+  },
+
+  jobOf(worker) {
+    for (const [id, w] of this.running) if (w === worker) return id;
+    return 0;
   },
 
   async start(id, request, path) {
-    this.current = id;
+    this.running.set(id, null);
     ++this.started;
     if (coreFailure) {
       this.finish(id, coreFailure, '', null);
@@ -107,27 +116,32 @@ const jobs = {
     try {
       bytes = await fileBytes(path);
     } catch (error) {
-      this.finish(id, error.message, '', null);
+      if (this.running.has(id)) this.finish(id, error.message, '', null);
       return;
     }
-    if (id !== this.current) return;  // cancelled or replaced meanwhile
-    this.worker.postMessage({ type: 'run', id, request, path, bytes },
-                            bytes ? [bytes.buffer] : []);
+    if (!this.running.has(id)) return;  // cancelled meanwhile
+    const worker = this.idle.pop() ?? this.spawn();
+    this.running.set(id, worker);
+    worker.postMessage({ type: 'run', id, request, path, bytes }, bytes ? [bytes.buffer] : []);
   },
 
   cancel(id) {
-    if (id !== this.current) return;
-    this.worker.terminate();
-    this.spawn();
+    if (!this.running.has(id)) return;
+    const worker = this.running.get(id);
+    if (worker) worker.terminate();
     this.finish(id, 'cancelled', '', null);
+    this.keepOneReady();
   },
 
-  receive(message) {
-    if (message.id !== this.current) return;
+  receive(worker, message) {
+    if (this.running.get(message.id) !== worker) return;
     if (message.type === 'progress') {
       withText(message.stage, (stage) =>
         Module._sculpt_job_progress(message.id, stage, message.fraction, message.overall));
     } else if (message.type === 'done') {
+      // One worker is kept for the next job; others go, with the memory their job grew.
+      if (this.idle.length === 0) this.idle.push(worker);
+      else worker.terminate();
       this.finish(message.id, message.error, message.description,
                   message.bytes ? new Uint8Array(message.bytes) : null);
     }
@@ -136,7 +150,7 @@ const jobs = {
   // Hands the end of a job to the viewer: its error (a bare message, the viewer says "error: "),
   // or its reconstruction's bytes.
   finish(id, error, description, bytes) {
-    if (id === this.current) this.current = 0;
+    this.running.delete(id);
     const memory = bytes ? Module._malloc(bytes.length) : 0;
     if (bytes && !memory) {
       bytes = null;
@@ -321,7 +335,7 @@ if (!document.createElement('canvas').getContext('webgl2')) {
 } else {
   canvas.addEventListener('contextmenu', (event) => event.preventDefault());
   touchAsMouse(canvas);
-  jobs.spawn();
+  jobs.keepOneReady();
   window.Module = {
     canvas,
     arguments: argumentsFromAddress(),

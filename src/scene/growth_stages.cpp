@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "scene/growth_stages.hpp"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
+#include <cstdio>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,6 +18,33 @@
 namespace sculpt::scene {
 namespace {
 
+// "{}" and "{:.4g}" filled in order (the web build has no fmt): text for titles and labels.
+std::string text_of(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.4g", value);
+  return buffer;
+}
+std::string text_of(std::size_t value) {
+  return std::to_string(value);
+}
+std::string text_of(long value) {
+  return std::to_string(value);
+}
+std::string text_of(const std::string& value) {
+  return value;
+}
+
+std::string format(const char* pattern) {
+  return pattern;
+}
+template <class First, class... Rest>
+std::string format(const char* pattern, const First& first, const Rest&... rest) {
+  const char* open = std::strchr(pattern, '{');
+  const char* close = open ? std::strchr(open, '}') : nullptr;
+  if (!close) return pattern;
+  return std::string(pattern, open) + text_of(first) + format(close + 1, rest...);
+}
+
 Vec3 vec(const Point<3>& p) {
   return {float(p[0]), float(p[1]), float(p[2])};
 }
@@ -30,8 +57,8 @@ std::size_t shown_of(long step, std::size_t all) {
 template <std::size_t K>
 void mark_corners(std::deque<Layer>& layers, const Reconstruction<3>& r,
                   const std::array<int, K>& simplex) {
-  Layer& corners =
-      add_layer(layers, "just-added-corners", "its corners", Primitive::points, palette::just_removed, 10);
+  Layer& corners = add_layer(layers, "just-added-corners", "its corners", Primitive::points,
+                             palette::just_removed, 10);
   corners.in_legend = false;
   corners.cut = true;
   for (int v : simplex) corners.positions.push_back(vec(r.sites[v]));
@@ -46,8 +73,7 @@ void samples_not_reached(std::deque<Layer>& layers, const Reconstruction<3>& r,
   for (const auto& simplex : simplices) {
     for (int v : simplex) reached[v] = true;
   }
-  Layer& layer =
-      add_layer(layers, "samples", label, Primitive::points, palette::sample, 4);
+  Layer& layer = add_layer(layers, "samples", label, Primitive::points, palette::sample, 4);
   for (std::size_t s = 0; s < n; ++s) {
     if (!reached[s]) layer.positions.push_back(vec(r.sites[s]));
   }
@@ -57,19 +83,16 @@ void samples_not_reached(std::deque<Layer>& layers, const Reconstruction<3>& r,
 
 std::string describe_growth(const Reconstruction<3>& r, Stage stage, long shown) {
   if (stage == Stage::front) {
-    return shown <= 0
-               ? "before the seed triangle"
-               : fmt::format("triangle {} of {} added on the front", shown, r.front.order.size());
+    return shown <= 0 ? "before the seed triangle"
+                      : format("triangle {} of {} added on the front", shown, r.front.order.size());
   }
   const Alpha_stage& alpha = r.alpha;
-  const std::string own = alpha.chosen == 0
-                              ? ""
-                              : fmt::format(" (the method's: {:.4g}, cell {})",
-                                            alpha.radii[alpha.chosen - 1], alpha.chosen);
+  const std::string own = alpha.chosen == 0 ? ""
+                                            : format(" (the method's: {:.4g}, cell {})",
+                                                     alpha.radii[alpha.chosen - 1], alpha.chosen);
   if (shown <= 0 || alpha.cells.empty()) return "alpha 0: the samples alone" + own;
   const std::size_t k = std::min<std::size_t>(std::size_t(shown), alpha.cells.size());
-  return fmt::format("alpha {:.4g}: cell {} of {}{}", alpha.radii[k - 1], k, alpha.cells.size(),
-                     own);
+  return format("alpha {:.4g}: cell {} of {}{}", alpha.radii[k - 1], k, alpha.cells.size(), own);
 }
 
 long front_length(const Reconstruction<3>& r) {
@@ -87,14 +110,14 @@ void front_growth(std::deque<Layer>& layers, Scene& scene, const Reconstruction<
   std::vector<Facet<3>> grown;
   grown.reserve(shown);
   for (std::size_t k = 0; k < shown; ++k) grown.push_back(r.surface[order[k]]);
-  scene.title = shown == 0 ? fmt::format("Advancing Front: before its seed triangle ({} to add)",
-                                         order.size())
-                           : fmt::format(
-                                 "Advancing Front, triangle {} of {}: the most plausible "
-                                 "triangle on the front's border",
-                                 shown, order.size());
+  scene.title = shown == 0
+                    ? format("Advancing Front: before its seed triangle ({} to add)", order.size())
+                    : format(
+                          "Advancing Front, triangle {} of {}: the most plausible "
+                          "triangle on the front's border",
+                          shown, order.size());
   if (shown > 1) {
-    Layer& before = add_layer(layers, "surface", fmt::format("grown ({} triangles)", shown - 1),
+    Layer& before = add_layer(layers, "surface", format("grown ({} triangles)", shown - 1),
                               Primitive::triangles, palette::surface, 1.0f);
     before.lit = true;
     for (std::size_t k = 0; k + 1 < shown; ++k) {
@@ -141,22 +164,21 @@ void alpha_growth(std::deque<Layer>& layers, Scene& scene, const Reconstruction<
   const std::vector<Cell<3>> in(alpha.cells.begin(), alpha.cells.begin() + long(shown));
   const std::string chosen = alpha.chosen == 0
                                  ? ""
-                                 : fmt::format("; the method's alpha {:.4g} at cell {}",
-                                               alpha.radii[alpha.chosen - 1], alpha.chosen);
-  scene.title = shown == 0
-                    ? fmt::format("Alpha shape, alpha 0: the samples alone ({} cells to join){}",
-                                  alpha.cells.size(), chosen)
+                                 : format("; the method's alpha {:.4g} at cell {}",
+                                          alpha.radii[alpha.chosen - 1], alpha.chosen);
+  scene.title = shown == 0 ? format("Alpha shape, alpha 0: the samples alone ({} cells to join){}",
+                                    alpha.cells.size(), chosen)
                 : shown == alpha.chosen
-                    ? fmt::format(
+                    ? format(
                           "Alpha shape at the method's alpha {:.4g}: the {} cells of circumradius "
                           "up to it",
                           alpha.radii[shown - 1], shown)
-                    : fmt::format(
+                    : format(
                           "Alpha shape, alpha {:.4g} (cell {} of {}): the cells of circumradius "
                           "up to it{}",
                           alpha.radii[shown - 1], shown, alpha.cells.size(), chosen);
   const std::vector<Cell<3>> none;
-  const std::string label = fmt::format("alpha solid ({} tetrahedra)", shown);
+  const std::string label = format("alpha solid ({} tetrahedra)", shown);
   if (request.clipped) {
     whole_cells_cut(layers, r.sites, plane_of(scene, request.clip), request.clip.slab,
                     {"solid", label, palette::solid, &in},

@@ -425,6 +425,10 @@ const std::vector<Example>& examples() {
        true},
       {"spiral", 2, "an open spiral of 2.5 turns, 179 samples (bordered)", true},
       {"strokes", 2, "two wavy open strokes side by side, 41 samples each (bordered)", true},
+      {"bracket", 2,
+       "a bracket with sharp corners, a slot narrower than the spacing and a noisy end, 160 "
+       "samples: the methods differ",
+       false},
       {"sphere", 3, "2000 samples on a sphere", false},
       {"torus", 3, "4000 random samples on a torus (genus 1)", false},
       {"bumpy", 3, "a sphere with dents and bumps, 6000 samples", false},
@@ -440,6 +444,10 @@ const std::vector<Example>& examples() {
       {"torus-knot", 3, "a tube around a (2,3) torus knot, 12000 samples", false},
       {"three-holes", 3, "three overlapping tori: a solid with three holes, ~10000 samples", false},
       {"bumpy-nonuniform", 3, "the bumpy sphere thinned 3:1 on its +x side", false},
+      {"drilled-block", 3,
+       "a block with a hole: sharp edges, a sparse back and a noisy end, 4000 samples: the "
+       "methods differ",
+       false},
   };
   return list;
 }
@@ -462,6 +470,7 @@ std::vector<Point<2>> example_points_2(const std::string& name) {
   if (name == "wavy-arc") return wavy_arc(340).samples;
   if (name == "spiral") return spiral().samples;
   if (name == "strokes") return two_strokes().samples;
+  if (name == "bracket") return bracket(160).samples;
   throw std::invalid_argument("no 2D example named '" + name + "'");
 }
 
@@ -476,6 +485,7 @@ Sampled_curve example_curve_2(const std::string& name) {
   if (name == "wavy-arc") return wavy_arc(340, 150 * dense);
   if (name == "spiral") return spiral(2.5, 0.2 / dense);
   if (name == "strokes") return two_strokes(0.5, 40 * dense + 1);
+  if (name == "bracket") return bracket(160 * dense, /*noisy=*/false);
   throw std::invalid_argument("no 2D example named '" + name + "'");
 }
 
@@ -528,6 +538,7 @@ std::vector<Point<3>> example_points_3(const std::string& name) {
   if (name == "torus-knot") return torus_knot_tube(12000);
   if (name == "three-holes") return three_holes(10000);
   if (name == "bumpy-nonuniform") return thinned_on_one_side(bumpy_sphere(6000), 3);
+  if (name == "drilled-block") return drilled_block(4000);
   throw std::invalid_argument("no 3D example named '" + name + "'");
 }
 

@@ -62,6 +62,10 @@ std::vector<Point<3>> torus_knot_tube(int samples,
 std::vector<Point<3>> three_holes(int samples,
                                   unsigned seed = 5);  // three overlapping tori: genus 3
 std::vector<Point<3>> torso(int samples);              // a smooth torso-like blob with shoulders
+// Made for comparing methods (hard_parts.cpp): sharp corners, a part narrower than the
+// sampling, a noisy side and (3D) a sparse side, where the methods visibly differ.
+Sampled_curve bracket(int samples, bool noisy = true);  // a bracket with a tooth and a slot
+std::vector<Point<3>> drilled_block(int samples, unsigned seed = 11);  // a block with a hole
 // Keeps every sample with x < 0 and one in `ratio` of the others: a non-uniform resampling.
 std::vector<Point<3>> thinned_on_one_side(const std::vector<Point<3>>& points, int ratio);
 

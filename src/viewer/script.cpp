@@ -252,8 +252,9 @@ std::string Script::before_frame(Viewer& viewer) {
     }
     if (command == "help") {
       std::cout
-          << "commands: example NAME, open FILE, method NAME, stage ID, next, previous, "
-             "compare A,B[,C,D] | off, step K, replay propagation|carving, wait-replay, "
+          << "commands: example NAME, open FILE, method NAME, clean auto|jet|none, stage ID, next, "
+             "previous, "
+             "compare A,B[,C,D] | off, step K, replay STAGE [PACE], wait-replay, "
              "pick-sample K, pick-pole K, clip "
              "POS AZ EL [SLAB] | off, "
              "section POS AZ EL | off, "
@@ -407,6 +408,8 @@ std::string Script::before_frame(Viewer& viewer) {
       }
     } else if (command == "method") {
       if (needs_argument("a method name")) done(viewer.switch_method(argument));
+    } else if (command == "clean") {
+      if (needs_argument("auto, jet or none")) done(viewer.switch_cleaning(argument));
     } else if (command == "figure") {
       if (needs_argument("a figure (fig01 ... fig15)")) done(viewer.open_figure(argument));
     } else if (command == "panel") {

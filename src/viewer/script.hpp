@@ -11,11 +11,12 @@
 //   expect-busy         fail unless a reconstruction is running (the UI is not blocked)
 //   stage poles         show a stage (next / previous step through them)
 //   method crust        reconstruct the loaded input again with another method
+//   clean jet           the same with the samples smoothed first (auto: when noisy; none)
 //   compare paper,robust  two to four methods side by side on the points shown, one camera
 //                       for all, each with its verdict (wait: until all have come); compare off
 //   step 25             a replay: the first 25 labelling events (propagation) or carving steps
 //   replay carving 50   show a replay from its start and play it, 50 steps a second (optional;
-//                       replay propagation: the labelling); wait-replay: until it has ended
+//                       also propagation, candidates, front, alpha); wait-replay: until it ends
 //   clip 0.5 30 60      3D: cut away beyond a plane (position 0..1, azimuth, elevation); clip off
 //   section 0.5 0 90    3D: the stage in section at that plane, seen along it; section off
 //   pick-sample 10      select a sample (pick-pole N: a pole)
@@ -36,8 +37,8 @@
 //   frames 3            draw three frames
 //   screenshot a.png    save the window, panels included
 //   export b.png 800x600  save a picture through the headless renderer
-//   export-animation c.webp 640x480 40  an animated WebP (or c.gif): the replay at the propagation
-//                       or carving stage (40 pictures), else the method's stages
+//   export-animation c.webp 640x480 40  an animated WebP (or c.gif): the replay at a stage that
+//                       replays (40 pictures), else the method's stages
 //   figure fig06        open a figure of the paper at its first panel
 //   panel next          the tour: next, previous, 3 (1-based) or c
 //   expect-panel fig06c fail unless that panel is on screen as the figure shows it

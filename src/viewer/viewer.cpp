@@ -82,6 +82,22 @@ bool Viewer::switch_method(const std::string& name) {
   return true;
 }
 
+bool Viewer::switch_cleaning(const std::string& name) {
+  const auto known = std::find_if(std::begin(cleaning_names), std::end(cleaning_names),
+                                  [&](const char* n) { return name == n; });
+  if (known == std::end(cleaning_names)) {
+    message_ = "no cleaning '" + name + "' (auto, jet or none)";
+    return false;
+  }
+  if (last_request_.path.empty() && last_request_.example.empty() && !editor_.active()) {
+    message_ = "nothing loaded to reconstruct";
+    return false;
+  }
+  cleaning_ = int(known - std::begin(cleaning_names));
+  rerun();
+  return true;
+}
+
 Job_request Viewer::with_options(Job_request request) const {
   request.options.method = method_at(method_);
   request.options.kind = kind_;

@@ -51,6 +51,8 @@ class Viewer {
   // Reconstructs the loaded input again with another method ("crust", "paper", ...), keeping
   // the camera; false, with a message, for an unknown method or nothing loaded.
   bool switch_method(const std::string& name);
+  // The same with the samples cleaned first or not: "auto", "jet" or "none" (the panel's combo).
+  bool switch_cleaning(const std::string& name);
   // The kind files are reconstructed as (--closed, --bordered; else automatic).
   void set_file_kind(Surface_kind kind) { kind_ = file_kind_ = kind; }
   Surface_kind file_kind() const { return file_kind_; }
@@ -168,9 +170,9 @@ class Viewer {
   // the labelling or the carving), and the picked sample (-1: none).
   int shown_dimension() const;
   bool has_replay() const;
-  // Shows a stage that replays (propagation, carving, candidates, front, alpha) from its start and plays it, at `pace`
-  // steps a second (0: the labelling at the pace set, a carving in about ten seconds); false
-  // with a message when the method has no such stage or it does not replay.
+  // Shows a stage that replays (propagation, carving, candidates, front, alpha) from its start and
+  // plays it, at `pace` steps a second (0: the labelling at the pace set, a carving in about ten
+  // seconds); false with a message when the method has no such stage or it does not replay.
   bool start_replay(scene::Stage stage, float pace = 0);
   bool replay_playing() const { return playing_; }
   void pause_replay() { playing_ = false; }

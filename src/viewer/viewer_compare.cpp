@@ -38,11 +38,6 @@ bool Viewer::start_compare(const std::vector<Method>& methods) {
     message_ = "nothing shown to compare: open an example or a file first";
     return false;
   }
-#ifdef __EMSCRIPTEN__
-  // The page runs one reconstruction worker, which a second job would take from the first.
-  message_ = "side by side runs in the desktop viewer for now; here, switch methods in turn";
-  return false;
-#endif
   stop_compare();
   for (Method method : methods) {
     auto view = std::make_unique<Compared>();

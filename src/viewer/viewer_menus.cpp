@@ -58,7 +58,6 @@ void Viewer::draw_menu() {
       ImGui::SetTooltip("The panel hides, the picture takes the window with its legend in it");
     }
     // Side by side: the same points by several methods, one camera (viewer_compare.cpp).
-#ifndef __EMSCRIPTEN__  // one reconstruction worker in the page (viewer_compare.cpp)
     if (ImGui::BeginMenu("Side by side", reconstruction_ != nullptr)) {
       const bool curve = shown_dimension() == 2;
       const std::vector<std::vector<Method>> sets = {
@@ -76,7 +75,6 @@ void Viewer::draw_menu() {
       if (ImGui::MenuItem("One view", nullptr, false, comparing())) stop_compare();
       ImGui::EndMenu();
     }
-#endif
     if (ImGui::MenuItem("Colour-blind palette", nullptr, colour_blind_))
       set_colour_blind(!colour_blind_);
     if (ImGui::IsItemHovered()) {

@@ -5,9 +5,10 @@
 // figure's panels are reached from its link; a dropped file reconstructs and a bad one is refused
 // in the command line's words; pictures match the native renderer's; it keeps drawing while a
 // reconstruction runs in its worker and cancels at once; downloads arrive whole; a link opens
-// the view it was copied from; the shipped lesson runs to its end from Page Down alone.
+// the view it was copied from; side by side runs its methods in workers of their own; the
+// shipped lessons run to their end from Page Down alone.
 import assert from 'node:assert/strict';
-import { mkdtempSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { after, before, describe, test } from 'node:test';
@@ -273,6 +274,26 @@ test('a class opens a presentation from a link: no panel, the picture the whole 
   await close(viewer);
 });
 
+test('side by side runs each method in a worker of its own, beside the main one', async () => {
+  const viewer = await openViewer(browser, site.url, '?example=star&method=paper');
+  await runScript(viewer, 'wait\nframes 2\n');
+  const one = await picture(viewer);
+  await runScript(viewer, 'compare paper,robust\nwait\nframes 3\n');
+  assert.match(await message(viewer), /comparing 2 methods/);
+  const two = await picture(viewer);
+  await writePng(join(scratch, 'side-by-side.png'), two);
+  assert.ok(changedShare(one, two) > 0.01, 'the picture did not change');
+  // A star in each half, each drawn (the verdicts above them are text, the rest white).
+  const half = Math.floor(two.width / 2);
+  const top = Math.floor(two.height * 0.2);
+  assert.ok(drawnShare(two, 0, top, half, two.height) > 0.01, 'the left view is empty');
+  assert.ok(drawnShare(two, half, top, two.width, two.height) > 0.01, 'the right view is empty');
+  // Editing the points ends the comparison, and the main job still answers.
+  await runScript(viewer, 'compare off\nmethod robust\nwait\nframes 2\n');
+  assert.equal((await statistics(viewer)).method, 'robust');
+  await close(viewer);
+});
+
 test('the JavaScript module works in the page too', async () => {
   const viewer = await openViewer(browser, site.url);
   const verdict = await viewer.page.evaluate(async () => {
@@ -299,15 +320,20 @@ test('an unknown option in the address is refused in one line, on the page', asy
   await stage.page.close();
 });
 
-describe('the shipped lesson', () => {
-  test('runs to its end from Page Down alone, each step another picture', async () => {
-    const viewer = await openViewer(browser, site.url, '?lesson=undersampling');
+describe('the shipped lessons', () => {
+  for (const lesson of ['undersampling', 'comparing']) {
+  test(`${lesson} runs to its end from Page Down alone, each step another picture`, async () => {
+    // A pause at each picture the lesson takes as a script.
+    const script = readFileSync(new URL(`../../examples/lessons/${lesson}.script`, import.meta.url), 'utf8');
+    const steps = script.split('\n').filter((line) => line.startsWith('screenshot ')).length;
+    assert.ok(steps >= 5, `${lesson}: ${steps} pictures`);
+    const viewer = await openViewer(browser, site.url, `?lesson=${lesson}`);
     let previous = null;
-    for (let step = 1; step <= 8; ++step) {
+    for (let step = 1; step <= steps; ++step) {
       // Paused at the step's picture.
       await viewer.page.waitForFunction(() => Module._sculpt_script_state() === 4, { timeout: 60000 });
       const shot = await picture(viewer);
-      await writePng(join(scratch, `lesson-step-${step}.png`), shot);
+      await writePng(join(scratch, `${lesson}-step-${step}.png`), shot);
       if (previous) assert.ok(changedShare(previous, shot) > 0.005, `step ${step} looks like the one before`);
       previous = shot;
       await press(viewer, 'PageDown');
@@ -318,4 +344,5 @@ describe('the shipped lesson', () => {
     await viewer.page.waitForFunction(() => Module._sculpt_script_state() === 2, { timeout: 60000 });
     await close(viewer);
   });
+  }
 });

@@ -5,9 +5,13 @@
 // .hpp). The page's own WebAssembly memory is not shared with the worker's: that would need a
 // cross-origin-isolated page, which static hosts such as GitHub Pages cannot serve. A cancel ends
 // the worker at once (the page starts another), so the UI never waits for a stage to report.
+// Several jobs may run at once (side by side runs the compared methods beside the main one):
+// each run has an id of its own across all jobs, and the page's messages go to the job that
+// owns the id; the page gives each running job a worker of its own.
 #include <emscripten/emscripten.h>
 
 #include <cstdint>
+#include <map>
 
 #include "io/reconstruction_bytes.hpp"
 #include "viewer/reconstruction_job.hpp"
@@ -25,19 +29,28 @@ EM_JS(void, stop_worker, (int id), { Module["sculptJobs"].cancel(id); });
 // clang-format on
 
 class Worker_job;
-Worker_job* current = nullptr;  // the one job the page's messages are for
+// The jobs running, by the id of their run: the page's messages name it.
+std::map<int, Worker_job*> running_jobs;
+int last_id = 0;
+
+Worker_job* job_of(int id) {
+  const auto found = running_jobs.find(id);
+  return found == running_jobs.end() ? nullptr : found->second;
+}
 
 class Worker_job : public Reconstruction_job {
  public:
-  Worker_job() { current = this; }
+  Worker_job() = default;
   ~Worker_job() override {
     if (running_) stop_worker(id_);
-    if (current == this) current = nullptr;
+    running_jobs.erase(id_);
   }
 
   void start(Job_request request) override {
     if (running_) stop_worker(id_);
-    ++id_;
+    running_jobs.erase(id_);
+    id_ = ++last_id;
+    running_jobs[id_] = this;
     running_ = true;
     abandoned_ = false;
     outcome_.reset();
@@ -86,6 +99,7 @@ class Worker_job : public Reconstruction_job {
     }
     outcome_ = std::move(outcome);
     running_ = false;
+    running_jobs.erase(id_);
   }
 
  private:
@@ -109,18 +123,18 @@ extern "C" {
 
 EMSCRIPTEN_KEEPALIVE void sculpt_job_progress(int id, const char* stage, double fraction,
                                               double overall) {
-  if (sculpt::viewer::current) sculpt::viewer::current->progress(id, stage, fraction, overall);
+  if (auto* job = sculpt::viewer::job_of(id)) job->progress(id, stage, fraction, overall);
 }
 
 // Whether a reconstruction runs (the benchmark counts the frames drawn meanwhile).
 EMSCRIPTEN_KEEPALIVE int sculpt_job_running() {
-  return sculpt::viewer::current && sculpt::viewer::current->running() ? 1 : 0;
+  return sculpt::viewer::running_jobs.empty() ? 0 : 1;
 }
 
 EMSCRIPTEN_KEEPALIVE void sculpt_job_finished(int id, const char* error, const char* description,
                                               const std::uint8_t* bytes, int size) {
-  if (sculpt::viewer::current)
-    sculpt::viewer::current->finished(id, error, description, bytes, std::size_t(size));
+  if (auto* job = sculpt::viewer::job_of(id))
+    job->finished(id, error, description, bytes, std::size_t(size));
 }
 
 }  // extern "C"
