@@ -212,27 +212,30 @@ TEST(Output_safety, AFailedGalleryLeavesNoFolder) {
 TEST(Output_safety, AGalleryIsWrittenWholeOrNotAtAll) {
   const fs::path folder = fresh_folder("gallery-set");
   const fs::path gallery = folder / "gallery";
-  fs::create_directories(gallery / "table2.md");  // in the way of an output
+  fs::create_directories(gallery / "figures.json");  // in the way of an output
   testing::write_file("output-safety/gallery-set/gallery/notes.txt", "mine");
   const std::vector<std::string> arguments = {"figures", "--only", "fig01",  "--size",
                                               "120x90",  "--out",  "gallery"};
   const Command_run refused = run_sculpt(folder, arguments);
   EXPECT_EQ(refused.exit_code, 1);
   EXPECT_EQ(lines(refused.err), 1) << refused.err;
-  EXPECT_NE(refused.err.find("table2.md': it is a folder"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("figures.json': it is a folder"), std::string::npos) << refused.err;
   EXPECT_EQ(refused.err.find("sculpt figures: fig01"), std::string::npos) << "before any work";
-  EXPECT_EQ(names_in(gallery), (std::vector<std::string>{"notes.txt", "table2.md"}));
+  EXPECT_EQ(names_in(gallery), (std::vector<std::string>{"figures.json", "notes.txt"}));
 
-  fs::remove(gallery / "table2.md");
+  fs::remove(gallery / "figures.json");
   const Command_run written = run_sculpt(folder, arguments);
   EXPECT_EQ(written.exit_code, 0) << written.err;
   const auto names = names_in(gallery);
   EXPECT_EQ(std::count_if(names.begin(), names.end(),
                           [](const std::string& name) { return name.rfind("fig01", 0) == 0; }),
             2);  // fig01a, fig01b
-  for (const char* expected : {"figures.json", "notes.txt", "table1.md", "table2.md"}) {
+  for (const char* expected : {"figures.json", "notes.txt"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), expected), names.end()) << expected;
   }
+  // One figure leaves the tables of the whole gallery alone (none here to leave).
+  for (const char* whole : {"table1.md", "table2.md", "README.md"})
+    EXPECT_EQ(std::find(names.begin(), names.end(), whole), names.end()) << whole;
   EXPECT_EQ(std::count_if(names.begin(), names.end(),
                           [](const std::string& name) { return name.front() == '.'; }),
             0);

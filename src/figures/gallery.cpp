@@ -4,9 +4,11 @@
 #include <fmt/format.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -134,6 +136,28 @@ std::string pseudo_code_with_counts(const frontend::Any_reconstruction& any) {
   return out.str();
 }
 
+// The manifest already in the folder (a full gallery's), with the entries of `chosen` put in
+// place of its own of the same figures, in figure order; just `chosen` when there is none to
+// read.
+nlohmann::json with_entries_of(const std::string& path, nlohmann::json chosen) {
+  std::ifstream in(path);
+  nlohmann::json kept = in ? nlohmann::json::parse(in, nullptr, false) : nlohmann::json();
+  if (!kept.is_array()) return chosen;
+  for (auto& entry : chosen) {
+    const auto same = std::find_if(kept.begin(), kept.end(), [&](const nlohmann::json& old) {
+      return old.is_object() && old.value("id", "") == entry.value("id", "");
+    });
+    if (same != kept.end())
+      *same = std::move(entry);
+    else
+      kept.push_back(std::move(entry));
+  }
+  std::stable_sort(kept.begin(), kept.end(), [](const nlohmann::json& a, const nlohmann::json& b) {
+    return (a.is_object() ? a.value("id", "") : "") < (b.is_object() ? b.value("id", "") : "");
+  });
+  return kept;
+}
+
 }  // namespace
 
 int generate(const Options& options) {
@@ -151,9 +175,13 @@ int generate(const Options& options) {
   const auto in_folder = [&](const std::string& name) {
     return (std::filesystem::path(options.out) / name).string();
   };
-  std::vector<std::string> destinations = {in_folder("table1.md"), in_folder("table2.md"),
-                                           in_folder("figures.json")};
-  if (options.only.empty()) destinations.push_back(in_folder("README.md"));
+  // One figure (--only) replaces its own entry in the folder's manifest and leaves the tables
+  // and the README, which describe the whole gallery, as they are.
+  std::vector<std::string> destinations = {in_folder("figures.json")};
+  if (options.only.empty()) {
+    for (const char* whole : {"table1.md", "table2.md", "README.md"})
+      destinations.push_back(in_folder(whole));
+  }
   for (const auto& figure : chosen) {
     for (const auto& image : figure.images)
       destinations.push_back(in_folder(figure.id + image.suffix + ".png"));
@@ -208,17 +236,21 @@ int generate(const Options& options) {
   };
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  write("table1.md",
-        "# Table 1: experimental data of several reconstructions (this machine)\n\n"
-        "m counts the box corners, as the paper does; times are of one run.\n\n" +
-            table_1(models));
-  write(
-      "table2.md",
-      "# Table 2: closed reconstructions and their time, next to CGAL's Delaunay triangulation\n\n"
-      "As the paper, the tight co-cone beside sculpting (both our own code, over the same "
-      "Delaunay triangulation and poles), and Sculpt's robust default; CGAL's Delaunay "
-      "triangulation of the same samples, timed in the same run, is the yardstick.\n\n" +
-          table_2(models));
+  if (options.only.empty()) {
+    write("table1.md",
+          "# Table 1: experimental data of several reconstructions (this machine)\n\n"
+          "m counts the box corners, as the paper does; times are of one run.\n\n" +
+              table_1(models));
+    write("table2.md",
+          "# Table 2: closed reconstructions and their time, next to CGAL's Delaunay "
+          "triangulation\n\n"
+          "As the paper, the tight co-cone beside sculpting (both our own code, over the same "
+          "Delaunay triangulation and poles), and Sculpt's robust default; CGAL's Delaunay "
+          "triangulation of the same samples, timed in the same run, is the yardstick.\n\n" +
+              table_2(models));
+  } else {
+    manifest = with_entries_of(in_folder("figures.json"), std::move(manifest));
+  }
   write("figures.json", manifest.dump(2) + "\n");
 
   if (options.only.empty()) {

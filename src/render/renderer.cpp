@@ -264,7 +264,8 @@ Image read_pixels(int width, int height) {
 void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera,
                           int width, int height, float picture_scale) {
   if (layer.count == 0) return;
-  const float size = info.size * picture_scale;  // a point's diameter, a line's width (pixels)
+  // A point's diameter, a line's width (pixels).
+  const float size = info.size * (info.scales ? picture_scale : 1.0f);
   const float aspect = float(width) / float(height);
   const glm::mat4 view = camera.view();
   const glm::mat4 projection = camera.projection(aspect);
@@ -386,7 +387,8 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
   // The legend's text grows half as fast as the points and lines: it is read, not found.
   const float scale =
       (height >= 600 ? 2.0f : 1.0f) * (1.0f + 0.5f * std::max(0.0f, options.picture_scale - 1.0f));
-  const auto text = [&](float x, float y, const std::string& words, scene::Color color) {
+  const auto text = [&](float x, float y, const std::string& words, scene::Color color,
+                        float size) {
     std::vector<char> quads(words.size() * 270 + 1000);
     const int count = stb_easy_font_print(0, 0, const_cast<char*>(words.c_str()), nullptr,
                                           quads.data(), static_cast<int>(quads.size()));
@@ -395,7 +397,7 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
     for (int q = 0; q < count; ++q) {
       for (int corner : {0, 1, 2, 0, 2, 3}) {
         const float* v = vertices + (4 * q + corner) * 4;
-        piece.triangles.insert(piece.triangles.end(), {x + scale * v[0], y + scale * v[1], 0.0f});
+        piece.triangles.insert(piece.triangles.end(), {x + size * v[0], y + size * v[1], 0.0f});
       }
     }
     pieces.push_back(std::move(piece));
@@ -417,12 +419,21 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
       listed.push_back(&layer);
       widest = std::max(widest, float(stb_easy_font_width(const_cast<char*>(layer.label.c_str()))));
     }
+    // At most two fifths of the picture's width and half its height, however large the text
+    // asked (a projector's picture scale): a legend that size leaves the data a corner-free
+    // middle to be fitted in.
+    const float asked_w = 18 * scale + scale * widest, asked_h = (12 * listed.size() + 6) * scale;
+    const float size =
+        std::max(1.0f, std::min({scale, scale * 0.4f * float(width) / std::max(asked_w, 1.0f),
+                                 scale * 0.5f * float(height) / std::max(asked_h, 1.0f)}));
+    const float legend_line = 12 * size;
     float left = margin, top = margin;  // where the legend's first swatch goes
     if (!listed.empty()) {
       // On a box of its own, so that the legend reads over the data in a small picture, in the
       // corner where it covers the least of the data (the top left when that is clear).
-      const float pad = 3 * scale;
-      const float w = 12 * scale + scale * widest + 2 * pad, h = line * listed.size() + 2 * pad;
+      const float pad = 3 * size;
+      const float w = 12 * size + size * widest + 2 * pad,
+                  h = legend_line * listed.size() + 2 * pad;
       float title_width = 0;
       for (const auto& part : title_lines)
         title_width = std::max(title_width, scale * text_width(part) + 2 * margin);
@@ -439,15 +450,16 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
       scene::Color swatch = layer->color;
       swatch.a = 1;
       // An outline, so a light swatch shows on the light box.
-      box(left - 1, y + 1 * scale - 1, 8 * scale + 2, 8 * scale + 2, {0.3f, 0.3f, 0.3f, 1});
-      box(left, y + 1 * scale, 8 * scale, 8 * scale, swatch);
-      text(left + 12 * scale, y + 1 * scale, layer->label, {0.1f, 0.1f, 0.1f, 1});
-      y += line;
+      box(left - 1, y + 1 * size - 1, 8 * size + 2, 8 * size + 2, {0.3f, 0.3f, 0.3f, 1});
+      box(left, y + 1 * size, 8 * size, 8 * size, swatch);
+      text(left + 12 * size, y + 1 * size, layer->label, {0.1f, 0.1f, 0.1f, 1}, size);
+      y += legend_line;
     }
   }
   for (std::size_t i = 0; i < title_lines.size(); ++i) {
     const float from_bottom = float(title_lines.size() - 1 - i) * line;
-    text(margin, height - margin - 8 * scale - from_bottom, title_lines[i], {0.1f, 0.1f, 0.1f, 1});
+    text(margin, height - margin - 8 * scale - from_bottom, title_lines[i], {0.1f, 0.1f, 0.1f, 1},
+         scale);
   }
 
   glDisable(GL_DEPTH_TEST);

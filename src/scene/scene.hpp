@@ -37,6 +37,9 @@ struct Layer {
   bool translucent = false;   // balls: filled translucent spheres instead of outlines
   bool in_legend = true;
   bool cut = false;  // already cut at the clip plane through whole cells: clip() leaves it
+  // Grows with the picture scale (a projector's): not a wireframe's many edges, which would
+  // merge into a dark fill.
+  bool scales = true;
 };
 
 // The stages a picture can show, in the order the algorithm runs.

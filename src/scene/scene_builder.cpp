@@ -714,6 +714,7 @@ class Scene_builder {
       if (request_.wireframe) {
         Layer& wire = add("wireframe", "edges", Primitive::lines, palette::wireframe, 1.0f);
         wire.in_legend = false;
+        wire.scales = false;
         for (const auto& t : r_.surface) {
           for (int j = 0; j < 3; ++j) {
             wire.positions.push_back(vec(points[t[j]]));

@@ -346,7 +346,7 @@ void Viewer::frame(int width, int height, double seconds) {
 }
 
 int Viewer::view_height(int window_height) const {
-  return std::max(1, window_height - caption_height_ - reserved_height_);
+  return std::max(1, window_height - caption_height_ - reserved_height_ - menu_bar_height_);
 }
 
 }  // namespace sculpt::viewer

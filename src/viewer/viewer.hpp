@@ -368,6 +368,7 @@ class Viewer {
   };
   std::optional<Camera_move> camera_move_;
   int caption_height_ = 0;
+  int menu_bar_height_ = 0;  // the picture starts below the main menu bar (draw_menu)
   int reserved_height_ = 0;
   std::string caption_figure_;  // the figure the caption's height was measured on
   float caption_min_height_ = 0;

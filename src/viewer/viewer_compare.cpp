@@ -63,8 +63,10 @@ void Viewer::refit_for_views() {
   if (!reconstruction_ || frame_height_ <= 0) return;
   const std::size_t count = compare_.views.size();
   const float columns = count == 0 ? 1.0f : 2.0f, rows = count > 2 ? 2.0f : 1.0f;
-  const float aspect =
-      (float(view_width(frame_width_)) / columns) / (float(view_height(frame_height_)) / rows);
+  // The verdicts' band above each picture (draw_compare) is left out: about two lines.
+  const float band = 2.5f * ImGui::GetTextLineHeightWithSpacing();
+  const float aspect = (float(view_width(frame_width_)) / columns) /
+                       std::max(1.0f, float(view_height(frame_height_)) / rows - band);
   camera_move_.reset();
   camera_ = render::fit(renderer_->scene(), aspect);
   camera_fitted_ = true;
@@ -121,8 +123,17 @@ void Viewer::draw_compare(int width, int height) {
   const int columns = 2, rows = count == 2 ? 1 : 2;
   const int view_w = std::max(1, view_width(width) / columns);
   const int view_h = std::max(1, view_height(height) / rows);
-  const float menu = ImGui::GetFrameHeight();
   ImDrawList* draw = ImGui::GetForegroundDrawList();
+  // Each view's picture starts below a band as high as the tallest verdict, so that the verdicts
+  // are read above the pictures, never over them.
+  float band = 0;
+  for (const auto& view : compare_.views) {
+    std::string label = std::string(to_string(view->method)) + ": ";
+    label += view->reconstruction ? verdict(statistics_of(*view->reconstruction)).line
+                                  : "reconstructing...";
+    band = std::max(band, ImGui::CalcTextSize(label.c_str(), nullptr, false, float(view_w) - 12).y);
+  }
+  const int picture_h = std::max(1, view_h - std::min(int(band) + 8, view_h / 3));
   for (std::size_t i = 0; i < count; ++i) {
     Compared& view = *compare_.views[i];
     const int column = int(i) % columns, row = int(i) / columns;
@@ -163,12 +174,12 @@ void Viewer::draw_compare(int width, int height) {
       options.hidden_layers = hidden_layers_;
       options.viewport_x = x;
       options.viewport_y = y;
-      view.cache.draw(*view.renderer, camera_, view_w, view_h, options);
+      view.cache.draw(*view.renderer, camera_, view_w, picture_h, options);
     } else {
       label += view.error.empty() ? "reconstructing..." : view.error;
     }
     // Its name and verdict over its top edge, on a band that reads over any picture.
-    const ImVec2 at(float(x) + 6, std::max(top, menu) + 4);
+    const ImVec2 at(float(x) + 6, top + 4);
     const ImVec2 size = ImGui::CalcTextSize(label.c_str(), nullptr, false, float(view_w) - 12);
     draw->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2),
                         IM_COL32(20, 20, 24, 220));
@@ -178,7 +189,7 @@ void Viewer::draw_compare(int width, int height) {
                   label.c_str(), nullptr, float(view_w) - 12);
     // A thin line between the views.
     if (column > 0)
-      draw->AddLine(ImVec2(float(x), std::max(top, menu)), ImVec2(float(x), top + float(view_h)),
+      draw->AddLine(ImVec2(float(x), top), ImVec2(float(x), top + float(view_h)),
                     IM_COL32(120, 120, 120, 255));
     if (row > 0)
       draw->AddLine(ImVec2(float(x), top), ImVec2(float(x + view_w), top),

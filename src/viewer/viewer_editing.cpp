@@ -168,7 +168,7 @@ bool Viewer::handle_editing_input(int width, int height) {
   const ImGuiIO& io = ImGui::GetIO();
   const int view_w = view_width(width);
   const int view_h = view_height(height);
-  const glm::vec2 mouse(io.MousePos.x - panel_width(), io.MousePos.y);
+  const glm::vec2 mouse(io.MousePos.x - panel_width(), io.MousePos.y - float(menu_bar_height_));
   const glm::mat4 view_projection = camera_.projection(float(view_w) / view_h) * camera_.view();
   const glm::vec2 viewport(view_w, view_h);
   const Point<2> at = world_at(mouse, view_w, view_h);

@@ -80,7 +80,8 @@ void Viewer::handle_input(int width, int height) {
   if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
     const ImVec2 drag = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
     if (drag.x * drag.x + drag.y * drag.y < 9.0f) {
-      click({io.MousePos.x - panel_width(), io.MousePos.y}, view_width(width), view_height(height));
+      click({io.MousePos.x - panel_width(), io.MousePos.y - float(menu_bar_height_)},
+            view_width(width), view_height(height));
     }
   }
 }

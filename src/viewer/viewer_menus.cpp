@@ -4,6 +4,7 @@
 // leave as downloads, so the File menu asks for no paths.
 #include <imgui.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,7 @@ using namespace internals;
 
 void Viewer::draw_menu() {
   if (!ImGui::BeginMainMenuBar()) return;
+  menu_bar_height_ = int(std::ceil(ImGui::GetWindowHeight()));
   if (ImGui::BeginMenu("File")) {
     if (platform::has_file_picker()) {
       if (ImGui::MenuItem("Open a point file...", nullptr, false, !busy())) platform::choose_file();

@@ -217,7 +217,7 @@ void Viewer::follow_latest_event() {
 void Viewer::draw_off_screen_markers(int width, int height) {
   const auto points = points_of_interest();
   if (points.empty()) return;
-  const float left = panel_width(), top = ImGui::GetFrameHeight();
+  const float left = panel_width(), top = float(menu_bar_height_);
   const float view_w = float(view_width(width)), view_h = float(view_height(height));
   const glm::mat4 view_projection = camera_.projection(view_w / view_h) * camera_.view();
   constexpr int sectors = 16;
