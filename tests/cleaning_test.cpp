@@ -8,6 +8,7 @@
 #include <random>
 
 #include "core/sample_noise.hpp"
+#include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
 namespace sculpt {
@@ -51,6 +52,19 @@ TEST(Sample_noise, MeasuresNoiseInUnitsOfTheSpacing) {
     circle.push_back({r * std::cos(a), r * std::sin(a)});
   }
   EXPECT_NEAR(measure_noise<2>(circle).noise, 0.3, 0.1);
+  // Noise as large as the spacing, as a scan's can be, is still read as noise, well above what
+  // asks for cleaning (the quadric follows some of it: the measure flattens there): a noisy
+  // sheet is wide both ways across its normal, never taken for a thin tube.
+  EXPECT_GT(measure_noise<3>(noisy_sphere(5000, 1.0)).noise, 2 * noise_worth_cleaning);
+  EXPECT_GT(measure_noise<3>(noisy_sphere(5000, 1.5)).noise, 2 * noise_worth_cleaning);
+  // A thin tube a few samples round is sampled too coarsely to tell noise from its curvature:
+  // not measured, so never cleaned (it measured 0.6 of the spacing, and jet smoothing, which
+  // fits a quadric across the whole tube, makes handles of it).
+  const auto thin_torus = shapes::torus(400, 1.0, 0.05);
+  EXPECT_EQ(measure_noise<3>(thin_torus).noise, -1);
+  EXPECT_FALSE(reconstruct(thin_torus, Options{}).stats.cleaned);
+  // A tube sampled well enough is measured, and quiet.
+  EXPECT_LT(measure_noise<3>(shapes::torus(3000, 1.0, 0.1)).noise, 0.1);
   // Too few samples for neighbourhoods to be local, or one that is not a number: not measured.
   EXPECT_EQ(measure_noise<3>(noisy_sphere(99, 0.3)).noise, -1);
   auto broken = noisy_sphere(500, 0);

@@ -16,7 +16,9 @@
 // of the spacing measure 0.12, 0.33 and 0.48). Smooth samples measure 0; CGAL's coarse meshes at
 // most 0.13 (bull; femur 0.07), its CAD parts 0. Measured on up to 20,000 samples spread through
 // the input (a stride); the tree holds all. Fewer than 100 samples are too few for neighbourhoods
-// of 15 to be local: not measured.
+// of 15 to be local: not measured. Neither are samples whose neighbourhood is a rod, a tube
+// only a few samples round (a sparsely sampled thin torus measured 0.6 of its spacing, and
+// cleaning it closed its hole): too coarse to tell noise from the tube's curvature.
 #pragma once
 
 #include <algorithm>
@@ -29,15 +31,15 @@
 
 namespace sculpt {
 
-// The smallest eigenvalue of a symmetric matrix (2x2: a b / b c; 3x3: by Smith's trigonometric
-// formula for the eigenvalues of a symmetric 3x3 matrix, 1961).
-inline double smallest_eigenvalue(const double m[3][3], int dimension) {
-  if (dimension == 2) {
-    const double mean = (m[0][0] + m[1][1]) / 2, half = (m[0][0] - m[1][1]) / 2;
-    return mean - std::sqrt(half * half + m[0][1] * m[0][1]);
-  }
+// The three eigenvalues of a symmetric 3x3 matrix, smallest first, by Smith's trigonometric
+// formula (1961).
+inline std::array<double, 3> eigenvalues(const double m[3][3]) {
   const double off = m[0][1] * m[0][1] + m[0][2] * m[0][2] + m[1][2] * m[1][2];
-  if (off == 0) return std::min({m[0][0], m[1][1], m[2][2]});
+  if (off == 0) {
+    std::array<double, 3> diagonal{m[0][0], m[1][1], m[2][2]};
+    std::sort(diagonal.begin(), diagonal.end());
+    return diagonal;
+  }
   const double q = (m[0][0] + m[1][1] + m[2][2]) / 3;
   const double p2 = (m[0][0] - q) * (m[0][0] - q) + (m[1][1] - q) * (m[1][1] - q) +
                     (m[2][2] - q) * (m[2][2] - q) + 2 * off;
@@ -50,7 +52,18 @@ inline double smallest_eigenvalue(const double m[3][3], int dimension) {
                      b[0][1] * (b[1][0] * b[2][2] - b[1][2] * b[2][0]) +
                      b[0][2] * (b[1][0] * b[2][1] - b[1][1] * b[2][0]);
   const double phi = std::acos(std::clamp(det / 2, -1.0, 1.0)) / 3;
-  return q + 2 * p * std::cos(phi + 2 * M_PI / 3);  // the smallest of the three
+  const double largest = q + 2 * p * std::cos(phi);
+  const double smallest = q + 2 * p * std::cos(phi + 2 * M_PI / 3);
+  return {smallest, 3 * q - largest - smallest, largest};
+}
+
+// The smallest eigenvalue of a symmetric matrix (2x2: a b / b c; 3x3: eigenvalues above).
+inline double smallest_eigenvalue(const double m[3][3], int dimension) {
+  if (dimension == 2) {
+    const double mean = (m[0][0] + m[1][1]) / 2, half = (m[0][0] - m[1][1]) / 2;
+    return mean - std::sqrt(half * half + m[0][1] * m[0][1]);
+  }
+  return eigenvalues(m)[0];
 }
 
 // Solves the n x n system a x = b (n <= 6) by Gaussian elimination with partial pivoting;
@@ -101,7 +114,8 @@ inline Point<3> eigenvector(const double m[3][3], double value) {
 }
 
 // One sample's roughness: the residual of the quadric fitted to its neighbours' heights over
-// their best plane (line); -1 when the fit is degenerate.
+// their best plane (line); -1 when the fit is degenerate or (3D) the neighbourhood is a tube
+// too thin for its sampling.
 template <int D>
 double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& near) {
   const double count = static_cast<double>(near.size());
@@ -119,6 +133,11 @@ double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& n
   // The frame: the normal (least variance) and, across it, the tangent directions.
   Point<3> normal{}, tangent_u{}, tangent_v{};
   if constexpr (D == 3) {
+    // A neighbourhood shaped like a rod (long one way, round across it) is a tube thinner than
+    // the sampling, a few samples around it: no surface patch to read noise off, whatever the
+    // quadric makes of it. (A noisy sheet is wide both ways across its normal.)
+    const auto variance = eigenvalues(covariance);
+    if (variance[1] < 0.5 * variance[2] && variance[0] > 0.25 * variance[1]) return -1;
     normal = eigenvector(covariance, smallest_eigenvalue(covariance, 3));
     const Point<3> helper = std::abs(normal[0]) < 0.9 ? Point<3>{1, 0, 0} : Point<3>{0, 1, 0};
     tangent_u = {helper[1] * normal[2] - helper[2] * normal[1],
@@ -220,7 +239,8 @@ Noise_measure measure_noise(const std::vector<Point<D>>& samples) {
       spacings.push_back(spacing);
     }
   }
-  if (ratios.empty()) return {};
+  // Mostly thin tubes (or degenerate): too little surface to tell noise from sparse sampling.
+  if (ratios.size() < std::max<std::size_t>(20, samples.size() / stride / 3)) return {};
   const auto smooth_end = ratios.begin() + static_cast<long>(ratios.size() / 10);
   std::nth_element(ratios.begin(), smooth_end, ratios.end());
   const auto middle = spacings.begin() + static_cast<long>(spacings.size() / 2);

@@ -21,6 +21,10 @@ namespace sculpt {
 // The nearest samples a jet is fitted to: CGAL's examples' choice, some four rings of neighbours
 // on a surface, enough for a quadric's six coefficients to average the noise out.
 inline constexpr unsigned jet_neighbours = 24;
+// Jet smoothing repeats until the noise measures this share of noise_worth_cleaning, at most
+// this many passes (see reconstruct_cleaned).
+inline constexpr double quiet_after_cleaning = 0.1;
+inline constexpr int jet_passes_at_most = 4;
 
 // Whether the samples are smoothed: asked for, or (automatic) the robust method on a surface
 // whose noise would crumple it. Throws Input_error where smoothing is asked and cannot be done.
@@ -67,12 +71,24 @@ Reconstruction<D> reconstruct_cleaned(const std::vector<Point<D>>& samples, cons
     result = reconstruct(samples, options);
   } else {
     start = Clock::now();
-    std::vector<Point<D>> smoothed;
-    if constexpr (D == 3) smoothed = jet_smoothed(samples, jet_neighbours);
-    if (!finite(smoothed)) {
-      throw Input_error(
-          "cleaning (jet smoothing) failed on these samples: a neighbourhood is degenerate "
-          "(collinear or repeated samples); reconstruct them without it (cleaning none)");
+    // One pass of jet smoothing leaves about a tenth of the noise, but gathered into bumps a few
+    // samples wide, which the measure reads low and a surface through the samples still
+    // crumples over: CGAL's fandisk, anchor and joint sampled 35,000 times with noise of 0.5% of
+    // the diagonal came back of genus 15, 25 and 5 after one pass, and of their own (0, 4, 2)
+    // after two or three. So the passes repeat until the measure reads a tenth of the noise
+    // that asks for cleaning, at most four.
+    std::vector<Point<D>> smoothed = samples;
+    Noise_measure after = given;
+    for (int pass = 0; pass < jet_passes_at_most &&
+                       (pass == 0 || after.noise >= quiet_after_cleaning * noise_worth_cleaning);
+         ++pass) {
+      if constexpr (D == 3) smoothed = jet_smoothed(smoothed, jet_neighbours);
+      if (!finite(smoothed)) {
+        throw Input_error(
+            "cleaning (jet smoothing) failed on these samples: a neighbourhood is degenerate "
+            "(collinear or repeated samples); reconstruct them without it (cleaning none)");
+      }
+      after = measure_noise<D>(smoothed);
     }
     double moved = 0;
     for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -81,7 +97,6 @@ Reconstruction<D> reconstruct_cleaned(const std::vector<Point<D>>& samples, cons
         d2 += (smoothed[i][k] - samples[i][k]) * (smoothed[i][k] - samples[i][k]);
       moved += std::sqrt(d2) / static_cast<double>(samples.size());
     }
-    const Noise_measure after = measure_noise<D>(smoothed);
     cleaning = Stage_measure{"cleaning", seconds_since(start), peak_memory_mib()};
     result = reconstruct(smoothed, options);
     result.stats.cleaned = true;

@@ -335,15 +335,13 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
 // by the camera): the top left when none does, so that a legend moves only off the data; else
 // the top right or the bottom right (the title is at the bottom left, `title_width` long and
 // `title_height` high), whichever covers fewest.
-std::pair<float, float> Renderer::emptiest_corner(const Camera& camera, int width, int height,
-                                                  float w, float h, float inset, float title_width,
-                                                  float title_height,
-                                                  const Draw_options& options) const {
+Renderer::Corner Renderer::emptiest_corner(const Camera& camera, int width, int height, float w,
+                                           float h, float inset, float title_width,
+                                           float title_height, const Draw_options& options) const {
   std::vector<std::pair<float, float>> corners = {{inset, inset}};
   if (width - inset - w > inset + w) corners.push_back({width - inset - w, inset});
   if (width - inset - w > title_width && height - inset - h - title_height > inset + h)
     corners.push_back({width - inset - w, height - inset - h - title_height});
-  if (corners.size() == 1) return corners.front();
   const glm::mat4 view = camera.view();
   const glm::mat4 view_projection = camera.projection(float(width) / float(height)) * view;
   // A ball is seen as a disc: its outline, across the view (the camera's right and up).
@@ -372,9 +370,60 @@ std::pair<float, float> Renderer::emptiest_corner(const Camera& camera, int widt
       }
     }
   }
-  if (inside[0] == 0) return corners[0];
-  const auto fewest = std::min_element(inside.begin(), inside.end()) - inside.begin();
-  return corners[std::size_t(fewest)];
+  const std::size_t fewest =
+      inside[0] == 0 ? 0
+                     : std::size_t(std::min_element(inside.begin(), inside.end()) - inside.begin());
+  return {corners[fewest].first, corners[fewest].second, inside[fewest]};
+}
+
+// The legend's place and size: its text at the picture's size (half as fast as the points and
+// lines grow: it is read, not found), at most two fifths of the picture's width and half its
+// height however large that asks (a projector's picture scale), in the corner clearest of data.
+Renderer::Legend_place Renderer::place_legend(const Camera& camera, int width, int height,
+                                              const Draw_options& options) const {
+  Legend_place place;
+  const float scale = text_scale(height, options);
+  const float line = 12 * scale, margin = 8 * scale;
+  float widest = 0;
+  for (const auto& layer : scene_.layers) {
+    if (!layer.in_legend || hidden(layer, options)) continue;
+    place.listed.push_back(&layer);
+    widest = std::max(widest, float(stb_easy_font_width(const_cast<char*>(layer.label.c_str()))));
+  }
+  if (place.listed.empty()) return place;
+  const float asked_w = 18 * scale + scale * widest,
+              asked_h = (12 * float(place.listed.size()) + 6) * scale;
+  place.size = std::max(1.0f, std::min({scale, scale * 0.4f * float(width) / asked_w,
+                                        scale * 0.5f * float(height) / asked_h}));
+  place.pad = 3 * place.size;
+  place.w = 12 * place.size + place.size * widest + 2 * place.pad;
+  place.h = 12 * place.size * float(place.listed.size()) + 2 * place.pad;
+  float title_width = 0;
+  const auto title = title_lines(width, height, options);
+  for (const auto& part : title)
+    title_width = std::max(title_width, scale * text_width(part) + 2 * margin);
+  place.corner = emptiest_corner(
+      camera, width, height, place.w + 2, place.h + 2, margin - place.pad - 1, title_width,
+      line * float(std::max<std::size_t>(title.size(), 1)) + margin, options);
+  return place;
+}
+
+float Renderer::text_scale(int height, const Draw_options& options) {
+  return (height >= 600 ? 2.0f : 1.0f) *
+         (1.0f + 0.5f * std::max(0.0f, options.picture_scale - 1.0f));
+}
+
+// A title wider than the picture is wrapped at spaces, never clipped.
+std::vector<std::string> Renderer::title_lines(int width, int height,
+                                               const Draw_options& options) const {
+  if (!options.title) return {};
+  const float scale = text_scale(height, options), margin = 8 * scale;
+  return wrapped(scene_.title, (float(width) - 2 * margin) / scale);
+}
+
+bool Renderer::legend_over_data(const Camera& camera, int width, int height,
+                                const Draw_options& options) const {
+  return options.legend && place_legend(camera, width, height, options).corner.covered > 0;
 }
 
 void Renderer::draw_overlay(const Camera& camera, int width, int height,
@@ -384,9 +433,7 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
     std::vector<float> triangles;  // x, y, z per vertex
   };
   std::vector<Piece> pieces;
-  // The legend's text grows half as fast as the points and lines: it is read, not found.
-  const float scale =
-      (height >= 600 ? 2.0f : 1.0f) * (1.0f + 0.5f * std::max(0.0f, options.picture_scale - 1.0f));
+  const float scale = text_scale(height, options);
   const auto text = [&](float x, float y, const std::string& words, scene::Color color,
                         float size) {
     std::vector<char> quads(words.size() * 270 + 1000);
@@ -407,43 +454,16 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
         {color, {x, y, 0, x + w, y, 0, x + w, y + h, 0, x, y, 0, x + w, y + h, 0, x, y + h, 0}});
   };
   const float line = 12 * scale, margin = 8 * scale;
-  // A title wider than the picture is wrapped at spaces, never clipped.
-  const std::vector<std::string> title_lines =
-      options.title ? wrapped(scene_.title, (float(width) - 2 * margin) / scale)
-                    : std::vector<std::string>{};
+  const std::vector<std::string> title = title_lines(width, height, options);
   if (options.legend) {
-    std::vector<const scene::Layer*> listed;
-    float widest = 0;
-    for (const auto& layer : scene_.layers) {
-      if (!layer.in_legend || hidden(layer, options)) continue;
-      listed.push_back(&layer);
-      widest = std::max(widest, float(stb_easy_font_width(const_cast<char*>(layer.label.c_str()))));
-    }
-    // At most two fifths of the picture's width and half its height, however large the text
-    // asked (a projector's picture scale): a legend that size leaves the data a corner-free
-    // middle to be fitted in.
-    const float asked_w = 18 * scale + scale * widest, asked_h = (12 * listed.size() + 6) * scale;
-    const float size =
-        std::max(1.0f, std::min({scale, scale * 0.4f * float(width) / std::max(asked_w, 1.0f),
-                                 scale * 0.5f * float(height) / std::max(asked_h, 1.0f)}));
-    const float legend_line = 12 * size;
-    float left = margin, top = margin;  // where the legend's first swatch goes
+    // On a box of its own, so that the legend reads over the data in a small picture.
+    const Legend_place place = place_legend(camera, width, height, options);
+    const std::vector<const scene::Layer*>& listed = place.listed;
+    const float size = place.size, legend_line = 12 * size;
+    const float left = place.corner.x + place.pad + 1, top = place.corner.y + place.pad + 1;
     if (!listed.empty()) {
-      // On a box of its own, so that the legend reads over the data in a small picture, in the
-      // corner where it covers the least of the data (the top left when that is clear).
-      const float pad = 3 * size;
-      const float w = 12 * size + size * widest + 2 * pad,
-                  h = legend_line * listed.size() + 2 * pad;
-      float title_width = 0;
-      for (const auto& part : title_lines)
-        title_width = std::max(title_width, scale * text_width(part) + 2 * margin);
-      const auto [x, y] = emptiest_corner(
-          camera, width, height, w + 2, h + 2, margin - pad - 1, title_width,
-          line * float(std::max<std::size_t>(title_lines.size(), 1)) + margin, options);
-      left = x + pad + 1;
-      top = y + pad + 1;
-      box(x, y, w + 2, h + 2, {0.55f, 0.55f, 0.55f, 1});
-      box(x + 1, y + 1, w, h, {0.98f, 0.98f, 0.98f, 1});
+      box(place.corner.x, place.corner.y, place.w + 2, place.h + 2, {0.55f, 0.55f, 0.55f, 1});
+      box(place.corner.x + 1, place.corner.y + 1, place.w, place.h, {0.98f, 0.98f, 0.98f, 1});
     }
     float y = top;
     for (const scene::Layer* layer : listed) {
@@ -456,10 +476,9 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
       y += legend_line;
     }
   }
-  for (std::size_t i = 0; i < title_lines.size(); ++i) {
-    const float from_bottom = float(title_lines.size() - 1 - i) * line;
-    text(margin, height - margin - 8 * scale - from_bottom, title_lines[i], {0.1f, 0.1f, 0.1f, 1},
-         scale);
+  for (std::size_t i = 0; i < title.size(); ++i) {
+    const float from_bottom = float(title.size() - 1 - i) * line;
+    text(margin, height - margin - 8 * scale - from_bottom, title[i], {0.1f, 0.1f, 0.1f, 1}, scale);
   }
 
   glDisable(GL_DEPTH_TEST);

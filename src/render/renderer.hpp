@@ -42,6 +42,10 @@ class Renderer {
   void draw(const Camera& camera, int width, int height, const Draw_options& options = {});
   // The uploaded scene without its geometry: its layers' ids, labels and colours.
   const scene::Scene& scene() const { return scene_; }
+  // Whether the legend (Draw_options::legend) would lie over drawn data in a width x height
+  // picture seen by `camera`, wherever it goes: the viewer's fit zooms out until it does not.
+  bool legend_over_data(const Camera& camera, int width, int height,
+                        const Draw_options& options) const;
   // Counts the scenes uploaded: a picture of the scene is stale when this has changed.
   std::uint64_t scene_generation() const { return generation_; }
 
@@ -58,9 +62,21 @@ class Renderer {
   void draw_layer(const Gpu_layer& layer, const scene::Layer& info, const Camera& camera, int width,
                   int height, float picture_scale);
   void draw_overlay(const Camera& camera, int width, int height, const Draw_options& options);
-  std::pair<float, float> emptiest_corner(const Camera& camera, int width, int height, float w,
-                                          float h, float inset, float title_width,
-                                          float title_height, const Draw_options& options) const;
+  struct Corner {
+    float x = 0, y = 0;       // the legend box's top left, in pixels from the top left
+    std::size_t covered = 0;  // the data's landmarks under it
+  };
+  struct Legend_place {
+    std::vector<const scene::Layer*> listed;
+    float size = 1, pad = 0, w = 0, h = 0;  // text scale; the box inside its border
+    Corner corner;
+  };
+  Corner emptiest_corner(const Camera& camera, int width, int height, float w, float h, float inset,
+                         float title_width, float title_height, const Draw_options& options) const;
+  Legend_place place_legend(const Camera& camera, int width, int height,
+                            const Draw_options& options) const;
+  std::vector<std::string> title_lines(int width, int height, const Draw_options& options) const;
+  static float text_scale(int height, const Draw_options& options);
   static bool hidden(const scene::Layer& layer, const Draw_options& options);
 };
 

@@ -296,6 +296,7 @@ void Viewer::rebuild_scene() {
     } else if (!camera_fitted_) {
       camera_ = render::fit(scene, aspect);
       camera_fitted_ = true;
+      legend_room_pending_ = true;
     }
   } catch (const std::exception& e) {
     message_ = std::string("error: ") + e.what();
@@ -318,8 +319,21 @@ void Viewer::frame(int width, int height, double seconds) {
   if (!presenting_) draw_panel(height);
   draw_caption(width, height);
   if (show_help_) draw_help();
+  if (presenting_ != was_presenting_) {
+    // The picture changed shape: framed afresh (a fit for the narrow view beside the panel is
+    // far too small in the whole window), with room for the legend; a figure's panel keeps the
+    // camera its gallery picture has.
+    if (reconstruction_ && !camera_is_panel_camera_) {
+      camera_fitted_ = false;
+      scene_dirty_ = true;
+    }
+    legend_room_pending_ = presenting_;
+    was_presenting_ = presenting_;
+  }
   if (scene_dirty_) compare_scenes_stale();
   rebuild_scene();
+  if (legend_room_pending_ && presenting_ && !comparing()) leave_room_for_legend();
+  legend_room_pending_ = false;
   if (reconstruction_ && !comparing()) draw_off_screen_markers(width, height);
   if (last_job_failed_) draw_failure_notice(width, height);
 
@@ -343,6 +357,20 @@ void Viewer::frame(int width, int height, double seconds) {
       picture_cache_.draw(*renderer_, camera_, view_width(width), view_height(height), options);
     }
   }
+}
+
+// Presenting, the legend is drawn in the picture: a camera just fitted steps back, a little at a
+// time, until a corner of the picture is clear of data for it (never below half the fit's scale;
+// a camera the user moved is left where it is).
+void Viewer::leave_room_for_legend() {
+  if (!reconstruction_ || frame_height_ <= 0) return;
+  render::Draw_options options;
+  options.title = false;
+  options.picture_scale = picture_scale_;
+  options.hidden_layers = hidden_layers_;
+  const int w = view_width(frame_width_), h = view_height(frame_height_);
+  for (int step = 0; step < 6 && renderer_->legend_over_data(camera_, w, h, options); ++step)
+    camera_.zoom(1.12f);
 }
 
 int Viewer::view_height(int window_height) const {

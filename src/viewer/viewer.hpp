@@ -368,7 +368,10 @@ class Viewer {
   };
   std::optional<Camera_move> camera_move_;
   int caption_height_ = 0;
-  int menu_bar_height_ = 0;  // the picture starts below the main menu bar (draw_menu)
+  int menu_bar_height_ = 0;           // the picture starts below the main menu bar (draw_menu)
+  bool legend_room_pending_ = false;  // a camera just fitted, or presentation just begun
+  bool was_presenting_ = false;
+  void leave_room_for_legend();
   int reserved_height_ = 0;
   std::string caption_figure_;  // the figure the caption's height was measured on
   float caption_min_height_ = 0;
