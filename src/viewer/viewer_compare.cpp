@@ -126,12 +126,22 @@ void Viewer::draw_compare(int width, int height) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   // Each view's picture starts below a band as high as the tallest verdict, so that the verdicts
   // are read above the pictures, never over them.
+  // Where a whole verdict would take more than three lines (narrow views, large text), its
+  // head alone: "paper: NOT a closed 2-manifold".
+  const float wrap = float(view_w) - 12;
+  const auto fitted = [&](const std::string& label) {
+    if (ImGui::CalcTextSize(label.c_str(), nullptr, false, wrap).y <=
+        3.5f * ImGui::GetTextLineHeight())
+      return label;
+    const auto head = label.find(':', label.find(": ") + 2);
+    return head == std::string::npos ? label : label.substr(0, head);
+  };
   float band = 0;
   for (const auto& view : compare_.views) {
     std::string label = std::string(to_string(view->method)) + ": ";
     label += view->reconstruction ? verdict(statistics_of(*view->reconstruction)).line
                                   : "reconstructing...";
-    band = std::max(band, ImGui::CalcTextSize(label.c_str(), nullptr, false, float(view_w) - 12).y);
+    band = std::max(band, ImGui::CalcTextSize(fitted(label).c_str(), nullptr, false, wrap).y);
   }
   const int picture_h = std::max(1, view_h - std::min(int(band) + 8, view_h / 3));
   for (std::size_t i = 0; i < count; ++i) {
@@ -179,6 +189,7 @@ void Viewer::draw_compare(int width, int height) {
       label += view.error.empty() ? "reconstructing..." : view.error;
     }
     // Its name and verdict over its top edge, on a band that reads over any picture.
+    label = fitted(label);
     const ImVec2 at(float(x) + 6, top + 4);
     const ImVec2 size = ImGui::CalcTextSize(label.c_str(), nullptr, false, float(view_w) - 12);
     draw->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2),
