@@ -12,6 +12,7 @@
 
 #include "frontend/shots.hpp"
 #include "scene/scene.hpp"
+#include "scene_layers.hpp"
 #include "scene/simplex_geometry.hpp"
 #include "shapes/shapes.hpp"
 
@@ -145,10 +146,7 @@ TEST(CarvingReplay, OnlyTheSculptingMethodsHaveTheStage) {
 }
 
 const scene::Layer* find(const scene::Scene& scene, const std::string& id) {
-  for (const auto& layer : scene.layers) {
-    if (layer.id == id) return &layer;
-  }
-  return nullptr;
+  return testing::find_layer(scene, id);
 }
 
 std::size_t primitives(const scene::Scene& scene, const std::string& id, std::size_t per) {

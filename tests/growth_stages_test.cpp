@@ -11,6 +11,7 @@
 
 #include "scene/carving_replay.hpp"
 #include "scene/scene.hpp"
+#include "scene_layers.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt {
@@ -38,10 +39,7 @@ std::set<std::array<int, 3>> unoriented(const std::vector<Facet<3>>& triangles) 
 }
 
 const scene::Layer* find(const scene::Scene& scene, const std::string& id) {
-  for (const auto& layer : scene.layers) {
-    if (layer.id == id) return &layer;
-  }
-  return nullptr;
+  return testing::find_layer(scene, id);
 }
 
 std::size_t count(const scene::Scene& scene, const std::string& id, std::size_t per) {

@@ -138,7 +138,7 @@ double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& n
     // quadric makes of it. (A noisy sheet is wide both ways across its normal.)
     const auto variance = eigenvalues(covariance);
     if (variance[1] < 0.5 * variance[2] && variance[0] > 0.25 * variance[1]) return -1;
-    normal = eigenvector(covariance, smallest_eigenvalue(covariance, 3));
+    normal = eigenvector(covariance, variance[0]);
     const Point<3> helper = std::abs(normal[0]) < 0.9 ? Point<3>{1, 0, 0} : Point<3>{0, 1, 0};
     tangent_u = {helper[1] * normal[2] - helper[2] * normal[1],
                  helper[2] * normal[0] - helper[0] * normal[2],
