@@ -12,8 +12,8 @@
 
 #include "frontend/shots.hpp"
 #include "scene/scene.hpp"
-#include "scene_layers.hpp"
 #include "scene/simplex_geometry.hpp"
+#include "scene_layers.hpp"
 #include "shapes/shapes.hpp"
 
 namespace sculpt {
