@@ -85,8 +85,8 @@ std::vector<std::string> colour_clashes(const scene::Scene& scene, const std::st
       const auto& p = scene.layers[i];
       const auto& q = scene.layers[j];
       if (p.positions.empty() || q.positions.empty()) continue;
-      // A part of a layer drawn apart ("just-added-corners" of "just-added") is in its colour.
-      const bool part = q.id.rfind(p.id + "-", 0) == 0 || p.id.rfind(q.id + "-", 0) == 0;
+      // A part of a layer drawn apart (Layer::part_of: the step's corners) is in its colour.
+      const bool part = q.part_of == p.id || p.part_of == q.id;
       if (part && p.color.r == q.color.r && p.color.g == q.color.g && p.color.b == q.color.b)
         continue;
       const double d = perceived_distance(as_seen(p.color, vision), as_seen(q.color, vision));

@@ -6,7 +6,9 @@
 
 #include <algorithm>
 
+#include "frontend/shots.hpp"
 #include "render/image.hpp"
+#include "render/legend_layout.hpp"
 #include "render_support.hpp"
 #include "scene/palette.hpp"
 
@@ -155,6 +157,66 @@ TEST(Render_layers, TheLegendMovesOffTheData) {
   const render::Image kept = testing::render_scene(scene, 300, /*legend=*/true);
   EXPECT_GT(legend_pixels(kept, 0, 0, 150, 40), 200u);
   EXPECT_EQ(legend_pixels(kept, 150, 0, 300, 40), 0u);
+}
+
+// A square filled with points: the fit puts data in every corner of the picture.
+scene::Scene filled_square(float far_out = 0) {
+  scene::Scene scene;
+  scene.dimension = 2;
+  scene.lower = {-1, -1, 0};
+  scene.upper = {1, 1, 0};
+  scene::Layer points;
+  points.id = "points";
+  points.label = "a square of points";
+  points.color = {0.1f, 0.3f, 0.8f};
+  for (float x = -1; x <= 1; x += 0.05f) {
+    for (float y = -1; y <= 1; y += 0.05f) points.positions.push_back({x, y, 0});
+  }
+  // Points strewn far beyond the bounds, as convex poles are: in every corner at any zoom.
+  if (far_out > 0) {
+    for (float x = -far_out; x <= far_out; x += 0.1f) {
+      for (float y = -far_out; y <= far_out; y += 0.1f) points.positions.push_back({x, y, 0});
+    }
+  }
+  scene.layers = {points};
+  return scene;
+}
+
+// Exports do as the viewer does: a fitted camera steps back until the legend has a corner clear
+// of data; a camera given, or a zoom on a detail, stays; and where no step back would clear a
+// corner (data strewn to every corner), the fit stays and the shape keeps its size.
+TEST(Render_layers, AFittedExportStepsBackForItsLegend) {
+  render::Draw_options options;
+  const scene::Scene square = filled_square();
+  const render::Legend_layout layout(square);
+  const render::Camera fitted = render::fit(square, 1.0f);
+  ASSERT_TRUE(layout.over_data(fitted, 300, 300, options));
+  int steps = 0;
+  const render::Camera stepped =
+      render::with_room_for_legend(layout, fitted, 300, 300, options, &steps);
+  EXPECT_GE(steps, 1);
+  EXPECT_LE(steps, 3);
+  EXPECT_FALSE(layout.over_data(stepped, 300, 300, options));
+
+  const scene::Scene strewn = filled_square(5);
+  const render::Legend_layout strewn_layout(strewn);
+  render::with_room_for_legend(strewn_layout, render::fit(strewn, 1.0f), 300, 300, options, &steps);
+  EXPECT_EQ(steps, 0);
+
+  // Through the shots, as `sculpt render` and the gallery draw.
+  frontend::Shot shot;
+  shot.size = "300x300";
+  EXPECT_GT(frontend::draw_scene(testing::headless(), shot, square).legend_steps, 0);
+  frontend::Shot detail = shot;
+  detail.zoom = 0.5;
+  EXPECT_EQ(frontend::draw_scene(testing::headless(), detail, square).legend_steps, 0);
+  frontend::Shot bare = shot;
+  bare.no_legend = true;
+  EXPECT_EQ(frontend::draw_scene(testing::headless(), bare, square).legend_steps, 0);
+  const nlohmann::json given = render::to_json(fitted);
+  const frontend::Picture kept = frontend::draw_scene(testing::headless(), shot, square, &given);
+  EXPECT_EQ(kept.legend_steps, 0);
+  EXPECT_EQ(render::to_json(kept.camera), given);
 }
 
 }  // namespace

@@ -794,44 +794,38 @@ TEST(Viewer, ExportsTheReplayAsAnAnimation) {
   EXPECT_NE(bytes.find("ANMF"), std::string::npos);
 }
 
-// The lesson shipped in examples/ runs through, picture by picture.
-TEST(Viewer, TheShippedLessonRuns) {
+// Runs a lesson shipped in examples/lessons with its pictures and saved points written into a
+// folder of the test's own (not the current one); returns how many pictures it took, or -1 if
+// the viewer failed.
+int run_lesson(const std::string& name) {
   std::string script =
-      testing::read_file(std::string(SCULPT_SOURCE_DIR) + "/examples/lessons/undersampling.script");
-  ASSERT_FALSE(script.empty());
-  const std::string folder = std::string(SCULPT_TEST_OUTPUT) + "/shipped-lesson";
+      testing::read_file(std::string(SCULPT_SOURCE_DIR) + "/examples/lessons/" + name + ".script");
+  EXPECT_FALSE(script.empty()) << name;
+  const std::string folder = std::string(SCULPT_TEST_OUTPUT) + "/lesson-" + name;
   std::filesystem::remove_all(folder);
   std::filesystem::create_directories(folder);
-  // Its pictures into the test's folder, not the current one.
   for (const std::string verb : {"screenshot ", "save-points "}) {
     for (auto at = script.find(verb); at != std::string::npos; at = script.find(verb, at + 1))
       script.insert(at + verb.size(), folder + "/");
   }
-  ASSERT_EQ(run_viewer_script("shipped-lesson", script), 0);
-  std::size_t pictures = 0;
+  if (run_viewer_script("lesson-" + name, script) != 0) return -1;
+  int pictures = 0;
   for (const auto& entry : std::filesystem::directory_iterator(folder))
     pictures += entry.path().extension() == ".png";
-  EXPECT_EQ(pictures, 8u);
-  EXPECT_TRUE(std::filesystem::exists(folder + "/lesson.xy"));
+  return pictures;
+}
+
+// The lesson on undersampling runs through, picture by picture, and saves the points it drew.
+TEST(Viewer, TheShippedLessonRuns) {
+  EXPECT_EQ(run_lesson("undersampling"), 8);
+  EXPECT_TRUE(
+      std::filesystem::exists(std::string(SCULPT_TEST_OUTPUT) + "/lesson-undersampling/lesson.xy"));
 }
 
 // The lesson on comparing methods runs too, side by side included (what its narration claims
 // of each method is tested in lesson_claims_test.cpp).
 TEST(Viewer, TheComparingLessonRuns) {
-  std::string script =
-      testing::read_file(std::string(SCULPT_SOURCE_DIR) + "/examples/lessons/comparing.script");
-  ASSERT_FALSE(script.empty());
-  const std::string folder = std::string(SCULPT_TEST_OUTPUT) + "/comparing-lesson";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
-  const std::string verb = "screenshot ";
-  for (auto at = script.find(verb); at != std::string::npos; at = script.find(verb, at + 1))
-    script.insert(at + verb.size(), folder + "/");
-  ASSERT_EQ(run_viewer_script("comparing-lesson", script), 0);
-  std::size_t pictures = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
-    pictures += entry.path().extension() == ".png";
-  EXPECT_EQ(pictures, 7u);
+  EXPECT_EQ(run_lesson("comparing"), 7);
 }
 
 // Another model is framed afresh; another method on the same points keeps the camera.

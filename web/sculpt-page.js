@@ -139,9 +139,10 @@ const jobs = {
       withText(message.stage, (stage) =>
         Module._sculpt_job_progress(message.id, stage, message.fraction, message.overall));
     } else if (message.type === 'done') {
-      // One worker is kept for the next job; others go, with the memory their job grew.
-      if (this.idle.length === 0) this.idle.push(worker);
-      else worker.terminate();
+      // The worker goes, with the memory its job grew (a WebAssembly heap never shrinks); a
+      // fresh one stands ready for the next job.
+      worker.terminate();
+      this.keepOneReady();
       this.finish(message.id, message.error, message.description,
                   message.bytes ? new Uint8Array(message.bytes) : null);
     }

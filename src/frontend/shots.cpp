@@ -23,6 +23,7 @@
 #include "io/point_reader.hpp"
 #include "render/animation.hpp"
 #include "render/camera.hpp"
+#include "render/legend_layout.hpp"
 #include "scene/carving_replay.hpp"
 #include "scene/clipping.hpp"
 #include "scene/colours.hpp"
@@ -342,6 +343,13 @@ Picture draw_scene(render::Picture_renderer& renderer, const Shot& shot, scene::
   }
   render::Draw_options options;
   options.legend = options.title = !shot.no_legend;
+  // A fitted camera that shows the whole shape steps back until the legend has a corner clear of
+  // data, as the viewer's does; a camera given, or a zoom on a detail, stays where it was put.
+  if (!inline_camera && shot.camera_file.empty() && shot.zoom >= 1 && options.legend) {
+    picture.camera =
+        render::with_room_for_legend(render::Legend_layout(picture.scene), picture.camera, width,
+                                     height, options, &picture.legend_steps);
+  }
   picture.image = renderer.render(picture.scene, picture.camera, width, height, options);
   return picture;
 }
@@ -395,8 +403,8 @@ std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& r
           }
           return;
         }
-        // The replay of the stage asked for, when it is one (carving, candidates, front, alpha); else the
-        // labelling's.
+        // The replay of the stage asked for, when it is one (carving, candidates, front, alpha);
+        // else the labelling's.
         scene::Stage stage = scene::Stage::propagation;
         if (scene::Stage asked; scene::parse_stage(shot.stage, asked) && scene::replays(asked))
           stage = asked;
@@ -470,6 +478,7 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
     std::optional<render::Camera> camera;  // the first picture's
     glm::vec3 lower{}, upper{};            // the samples' box
     bool framed_far = false;               // the camera frames a far pole with the shape
+    float legend_zoom = 1;                 // the legend's steps back so far
     for (const Shot& frame : animation_frames(shot, shown)) {
       nlohmann::json followed;
       if (camera && frame.stage == "propagation" && frame.step > 0) {
@@ -485,8 +494,12 @@ scene::Scene write_shot(render::Picture_renderer& renderer, const Shot& shot,
             moved == render::Follow::framed_far || (framed_far && moved == render::Follow::stayed);
         followed = render::to_json(*camera);
       }
+      // The legend's steps back only add up: the picture never jumps in and out between frames.
+      Shot stepped = frame;
+      stepped.zoom *= legend_zoom;
       Picture picture =
-          draw_shot(renderer, frame, shown, followed.is_null() ? inline_camera : &followed);
+          draw_shot(renderer, stepped, shown, followed.is_null() ? inline_camera : &followed);
+      legend_zoom *= std::pow(render::legend_step_back, float(picture.legend_steps));
       if (!camera) {
         camera = picture.camera;
         lower = render::to_glm(picture.scene.lower);

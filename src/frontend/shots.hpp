@@ -36,8 +36,9 @@ Shot shot_from_json(const nlohmann::json& json, const std::string& name = "the s
 // output are not read): the scene drawn, the camera, the image.
 struct Picture {
   scene::Scene scene;
-  render::Camera camera;
+  render::Camera camera;  // as drawn: a fitted camera after its steps back for the legend
   render::Image image;
+  int legend_steps = 0;  // the steps back (render::legend_step_back each) the legend asked for
 };
 // What a shot asks of the scene builder: its stage, step, focus, clip, layers and drawing options.
 // Throws io::Error with a one-line message (an unknown stage, a malformed clip, ...).

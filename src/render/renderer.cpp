@@ -57,34 +57,6 @@ void set_color(GLuint program, const scene::Color& c) {
   glUniform4f(uniform(program, "color"), c.r, c.g, c.b, c.a);
 }
 
-// The width of a line of text in stb_easy_font's units (pixels at scale 1).
-float text_width(const std::string& text) {
-  return float(stb_easy_font_width(const_cast<char*>(text.c_str())));
-}
-
-// The text in lines at most `width` wide, broken at spaces (a word wider than that stands alone).
-std::vector<std::string> wrapped(const std::string& text, float width) {
-  std::vector<std::string> lines;
-  if (text.empty()) return lines;
-  std::string current;
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    std::size_t end = text.find(' ', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string word = text.substr(start, end - start);
-    const std::string longer = current.empty() ? word : current + " " + word;
-    if (!current.empty() && text_width(longer) > width) {
-      lines.push_back(current);
-      current = word;
-    } else {
-      current = longer;
-    }
-    start = end + 1;
-  }
-  lines.push_back(current);
-  return lines;
-}
-
 }  // namespace
 
 struct Renderer::Programs {
@@ -127,31 +99,7 @@ void Renderer::set_scene(const scene::Scene& scene) {
     glDeleteVertexArrays(1, &layer.array);
   }
   layers_.clear();
-  landmarks_.clear();
-  scene_ = scene::Scene{scene.dimension, scene.title, {}, scene.lower, scene.upper};
-  // Where each layer lies, thinned to about 100,000 points in all, kept for placing the legend
-  // off the data (the positions themselves live on the GPU only): vertices, the middles of
-  // segments and triangles, balls' centres with their radii.
-  std::size_t total = 0;
-  for (const auto& layer : scene.layers) total += layer.positions.size();
-  const std::size_t stride = std::max<std::size_t>(1, total / 100000);
-  for (const auto& layer : scene.layers) {
-    const std::size_t corners = layer.primitive == scene::Primitive::lines       ? 2
-                                : layer.primitive == scene::Primitive::triangles ? 3
-                                                                                 : 1;
-    std::vector<glm::vec4> marks;
-    for (std::size_t i = 0; i + corners <= layer.positions.size(); i += corners * stride) {
-      glm::vec3 middle(0.0f);
-      for (std::size_t j = 0; j < corners; ++j) {
-        const auto& p = layer.positions[i + j];
-        marks.emplace_back(p[0], p[1], p[2], 0.0f);
-        middle += glm::vec3(p[0], p[1], p[2]) / float(corners);
-      }
-      const float radius = i < layer.radii.size() ? layer.radii[i] : 0.0f;
-      if (corners > 1 || radius > 0) marks.emplace_back(middle, radius);
-    }
-    landmarks_.push_back(std::move(marks));
-  }
+  legend_ = Legend_layout(scene);
   for (const auto& layer : scene.layers) {
     Gpu_layer gpu;
     gpu.count = static_cast<GLsizei>(layer.positions.size());
@@ -192,12 +140,6 @@ void Renderer::set_scene(const scene::Scene& scene) {
     }
     glBindVertexArray(0);
     layers_.push_back(gpu);
-    scene::Layer info = layer;  // keep what the layer is, not its geometry
-    info.positions.clear();
-    info.normals.clear();
-    info.radii.clear();
-    scene_.layers.push_back(std::move(info));
-    if (layer.positions.empty()) scene_.layers.back().in_legend = false;
   }
 }
 
@@ -212,7 +154,8 @@ void Renderer::draw(const Camera& camera, int width, int height, const Draw_opti
   glEnable(GL_PROGRAM_POINT_SIZE);  // always on in OpenGL ES
 #endif
 
-  const bool three = scene_.dimension == 3;
+  const scene::Scene& shown = legend_.scene();
+  const bool three = shown.dimension == 3;
   if (three) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
@@ -226,23 +169,18 @@ void Renderer::draw(const Camera& camera, int width, int height, const Draw_opti
   if (three) {
     for (auto primitive : order_3d) {
       for (std::size_t i = 0; i < layers_.size(); ++i) {
-        if (scene_.layers[i].primitive == primitive && !hidden(scene_.layers[i], options)) {
-          draw_layer(layers_[i], scene_.layers[i], camera, width, height, options.picture_scale);
+        if (shown.layers[i].primitive == primitive && !hidden(shown.layers[i], options)) {
+          draw_layer(layers_[i], shown.layers[i], camera, width, height, options.picture_scale);
         }
       }
     }
   } else {
     for (std::size_t i = 0; i < layers_.size(); ++i) {
-      if (!hidden(scene_.layers[i], options))
-        draw_layer(layers_[i], scene_.layers[i], camera, width, height, options.picture_scale);
+      if (!hidden(shown.layers[i], options))
+        draw_layer(layers_[i], shown.layers[i], camera, width, height, options.picture_scale);
     }
   }
   draw_overlay(camera, width, height, options);
-}
-
-bool Renderer::hidden(const scene::Layer& layer, const Draw_options& options) {
-  return std::find(options.hidden_layers.begin(), options.hidden_layers.end(), layer.id) !=
-         options.hidden_layers.end();
 }
 
 Image read_pixels(int width, int height) {
@@ -330,101 +268,6 @@ void Renderer::draw_layer(const Gpu_layer& layer, const scene::Layer& info, cons
 }
 
 // The legend and title: coloured swatches and text (stb_easy_font quads) in pixel coordinates.
-// The corner for a box of w by h pixels, `inset` from the edges, that the fewest of the drawn
-// layers' points fall in (their vertices, and the middles of segments and triangles, projected
-// by the camera): the top left when none does, so that a legend moves only off the data; else
-// the top right or the bottom right (the title is at the bottom left, `title_width` long and
-// `title_height` high), whichever covers fewest.
-Renderer::Corner Renderer::emptiest_corner(const Camera& camera, int width, int height, float w,
-                                           float h, float inset, float title_width,
-                                           float title_height, const Draw_options& options) const {
-  std::vector<std::pair<float, float>> corners = {{inset, inset}};
-  if (width - inset - w > inset + w) corners.push_back({width - inset - w, inset});
-  if (width - inset - w > title_width && height - inset - h - title_height > inset + h)
-    corners.push_back({width - inset - w, height - inset - h - title_height});
-  const glm::mat4 view = camera.view();
-  const glm::mat4 view_projection = camera.projection(float(width) / float(height)) * view;
-  // A ball is seen as a disc: its outline, across the view (the camera's right and up).
-  const glm::vec3 right(view[0][0], view[1][0], view[2][0]), up(view[0][1], view[1][1], view[2][1]);
-  std::vector<std::size_t> inside(corners.size(), 0);
-  const auto count = [&](const glm::vec3& p) {
-    const glm::vec4 clip = view_projection * glm::vec4(p, 1.0f);
-    if (!(clip.w > 0)) return;
-    const float x = (clip.x / clip.w + 1) * 0.5f * float(width);
-    const float y = (1 - clip.y / clip.w) * 0.5f * float(height);
-    for (std::size_t k = 0; k < corners.size(); ++k) {
-      const auto [cx, cy] = corners[k];
-      if (x >= cx && x <= cx + w && y >= cy && y <= cy + h) ++inside[k];
-    }
-  };
-  for (std::size_t l = 0; l < scene_.layers.size() && l < landmarks_.size(); ++l) {
-    if (hidden(scene_.layers[l], options)) continue;
-    for (const glm::vec4& mark : landmarks_[l]) {
-      const glm::vec3 p(mark);
-      count(p);
-      if (mark.w > 0) {
-        for (int a = 0; a < 16; ++a) {
-          const float angle = float(a) * 0.3927f;  // a sixteenth of the turn
-          count(p + mark.w * (std::cos(angle) * right + std::sin(angle) * up));
-        }
-      }
-    }
-  }
-  const std::size_t fewest =
-      inside[0] == 0 ? 0
-                     : std::size_t(std::min_element(inside.begin(), inside.end()) - inside.begin());
-  return {corners[fewest].first, corners[fewest].second, inside[fewest]};
-}
-
-// The legend's place and size: its text at the picture's size (half as fast as the points and
-// lines grow: it is read, not found), at most two fifths of the picture's width and half its
-// height however large that asks (a projector's picture scale), in the corner clearest of data.
-Renderer::Legend_place Renderer::place_legend(const Camera& camera, int width, int height,
-                                              const Draw_options& options) const {
-  Legend_place place;
-  const float scale = text_scale(height, options);
-  const float line = 12 * scale, margin = 8 * scale;
-  float widest = 0;
-  for (const auto& layer : scene_.layers) {
-    if (!layer.in_legend || hidden(layer, options)) continue;
-    place.listed.push_back(&layer);
-    widest = std::max(widest, float(stb_easy_font_width(const_cast<char*>(layer.label.c_str()))));
-  }
-  if (place.listed.empty()) return place;
-  const float asked_w = 18 * scale + scale * widest,
-              asked_h = (12 * float(place.listed.size()) + 6) * scale;
-  place.size = std::max(1.0f, std::min({scale, scale * 0.4f * float(width) / asked_w,
-                                        scale * 0.5f * float(height) / asked_h}));
-  place.pad = 3 * place.size;
-  place.w = 12 * place.size + place.size * widest + 2 * place.pad;
-  place.h = 12 * place.size * float(place.listed.size()) + 2 * place.pad;
-  float title_width = 0;
-  const auto title = title_lines(width, height, options);
-  for (const auto& part : title)
-    title_width = std::max(title_width, scale * text_width(part) + 2 * margin);
-  place.corner = emptiest_corner(
-      camera, width, height, place.w + 2, place.h + 2, margin - place.pad - 1, title_width,
-      line * float(std::max<std::size_t>(title.size(), 1)) + margin, options);
-  return place;
-}
-
-float Renderer::text_scale(int height, const Draw_options& options) {
-  return (height >= 600 ? 2.0f : 1.0f) *
-         (1.0f + 0.5f * std::max(0.0f, options.picture_scale - 1.0f));
-}
-
-// A title wider than the picture is wrapped at spaces, never clipped.
-std::vector<std::string> Renderer::title_lines(int width, int height,
-                                               const Draw_options& options) const {
-  if (!options.title) return {};
-  const float scale = text_scale(height, options), margin = 8 * scale;
-  return wrapped(scene_.title, (float(width) - 2 * margin) / scale);
-}
-
-bool Renderer::legend_over_data(const Camera& camera, int width, int height,
-                                const Draw_options& options) const {
-  return options.legend && place_legend(camera, width, height, options).corner.covered > 0;
-}
 
 void Renderer::draw_overlay(const Camera& camera, int width, int height,
                             const Draw_options& options) {
@@ -433,7 +276,7 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
     std::vector<float> triangles;  // x, y, z per vertex
   };
   std::vector<Piece> pieces;
-  const float scale = text_scale(height, options);
+  const float scale = Legend_layout::text_scale(height, options);
   const auto text = [&](float x, float y, const std::string& words, scene::Color color,
                         float size) {
     std::vector<char> quads(words.size() * 270 + 1000);
@@ -454,10 +297,10 @@ void Renderer::draw_overlay(const Camera& camera, int width, int height,
         {color, {x, y, 0, x + w, y, 0, x + w, y + h, 0, x, y, 0, x + w, y + h, 0, x, y + h, 0}});
   };
   const float line = 12 * scale, margin = 8 * scale;
-  const std::vector<std::string> title = title_lines(width, height, options);
+  const std::vector<std::string> title = legend_.title_lines(width, height, options);
   if (options.legend) {
     // On a box of its own, so that the legend reads over the data in a small picture.
-    const Legend_place place = place_legend(camera, width, height, options);
+    const Legend_layout::Place place = legend_.place(camera, width, height, options);
     const std::vector<const scene::Layer*>& listed = place.listed;
     const float size = place.size, legend_line = 12 * size;
     const float left = place.corner.x + place.pad + 1, top = place.corner.y + place.pad + 1;

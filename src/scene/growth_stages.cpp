@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -18,31 +17,11 @@
 namespace sculpt::scene {
 namespace {
 
-// "{}" and "{:.4g}" filled in order (the web build has no fmt): text for titles and labels.
-std::string text_of(double value) {
+// A radius in titles and labels: four significant digits.
+std::string radius_text(double value) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.4g", value);
   return buffer;
-}
-std::string text_of(std::size_t value) {
-  return std::to_string(value);
-}
-std::string text_of(long value) {
-  return std::to_string(value);
-}
-std::string text_of(const std::string& value) {
-  return value;
-}
-
-std::string format(const char* pattern) {
-  return pattern;
-}
-template <class First, class... Rest>
-std::string format(const char* pattern, const First& first, const Rest&... rest) {
-  const char* open = std::strchr(pattern, '{');
-  const char* close = open ? std::strchr(open, '}') : nullptr;
-  if (!close) return pattern;
-  return std::string(pattern, open) + text_of(first) + format(close + 1, rest...);
 }
 
 Vec3 vec(const Point<3>& p) {
@@ -60,6 +39,7 @@ void mark_corners(std::deque<Layer>& layers, const Reconstruction<3>& r,
   Layer& corners = add_layer(layers, "just-added-corners", "its corners", Primitive::points,
                              palette::just_removed, 10);
   corners.in_legend = false;
+  corners.part_of = "just-added";
   corners.cut = true;
   for (int v : simplex) corners.positions.push_back(vec(r.sites[v]));
 }
@@ -84,15 +64,18 @@ void samples_not_reached(std::deque<Layer>& layers, const Reconstruction<3>& r,
 std::string describe_growth(const Reconstruction<3>& r, Stage stage, long shown) {
   if (stage == Stage::front) {
     return shown <= 0 ? "before the seed triangle"
-                      : format("triangle {} of {} added on the front", shown, r.front.order.size());
+                      : "triangle " + std::to_string(shown) + " of " +
+                            std::to_string(r.front.order.size()) + " added on the front";
   }
   const Alpha_stage& alpha = r.alpha;
-  const std::string own = alpha.chosen == 0 ? ""
-                                            : format(" (the method's: {:.4g}, cell {})",
-                                                     alpha.radii[alpha.chosen - 1], alpha.chosen);
+  const std::string own = alpha.chosen == 0
+                              ? ""
+                              : " (the method's: " + radius_text(alpha.radii[alpha.chosen - 1]) +
+                                    ", cell " + std::to_string(alpha.chosen) + ")";
   if (shown <= 0 || alpha.cells.empty()) return "alpha 0: the samples alone" + own;
   const std::size_t k = std::min<std::size_t>(std::size_t(shown), alpha.cells.size());
-  return format("alpha {:.4g}: cell {} of {}{}", alpha.radii[k - 1], k, alpha.cells.size(), own);
+  return "alpha " + radius_text(alpha.radii[k - 1]) + ": cell " + std::to_string(k) + " of " +
+         std::to_string(alpha.cells.size()) + own;
 }
 
 long front_length(const Reconstruction<3>& r) {
@@ -110,15 +93,15 @@ void front_growth(std::deque<Layer>& layers, Scene& scene, const Reconstruction<
   std::vector<Facet<3>> grown;
   grown.reserve(shown);
   for (std::size_t k = 0; k < shown; ++k) grown.push_back(r.surface[order[k]]);
-  scene.title = shown == 0
-                    ? format("Advancing Front: before its seed triangle ({} to add)", order.size())
-                    : format(
-                          "Advancing Front, triangle {} of {}: the most plausible "
-                          "triangle on the front's border",
-                          shown, order.size());
+  scene.title = shown == 0 ? "Advancing Front: before its seed triangle (" +
+                                 std::to_string(order.size()) + " to add)"
+                           : "Advancing Front, triangle " + std::to_string(shown) + " of " +
+                                 std::to_string(order.size()) +
+                                 ": the most plausible triangle on the front's border";
   if (shown > 1) {
-    Layer& before = add_layer(layers, "surface", format("grown ({} triangles)", shown - 1),
-                              Primitive::triangles, palette::surface, 1.0f);
+    Layer& before =
+        add_layer(layers, "surface", "grown (" + std::to_string(shown - 1) + " triangles)",
+                  Primitive::triangles, palette::surface, 1.0f);
     before.lit = true;
     for (std::size_t k = 0; k + 1 < shown; ++k) {
       for (int v : grown[k]) before.positions.push_back(vec(r.sites[v]));
@@ -162,23 +145,20 @@ void alpha_growth(std::deque<Layer>& layers, Scene& scene, const Reconstruction<
   const std::size_t shown =
       request.step < 0 ? alpha.chosen : shown_of(request.step, alpha.cells.size());
   const std::vector<Cell<3>> in(alpha.cells.begin(), alpha.cells.begin() + long(shown));
-  const std::string chosen = alpha.chosen == 0
-                                 ? ""
-                                 : format("; the method's alpha {:.4g} at cell {}",
-                                          alpha.radii[alpha.chosen - 1], alpha.chosen);
-  scene.title = shown == 0 ? format("Alpha shape, alpha 0: the samples alone ({} cells to join){}",
-                                    alpha.cells.size(), chosen)
+  const std::string chosen = alpha.chosen == 0 ? ""
+                                               : "; the method's alpha " +
+                                                     radius_text(alpha.radii[alpha.chosen - 1]) +
+                                                     " at cell " + std::to_string(alpha.chosen);
+  scene.title = shown == 0 ? "Alpha shape, alpha 0: the samples alone (" +
+                                 std::to_string(alpha.cells.size()) + " cells to join)" + chosen
                 : shown == alpha.chosen
-                    ? format(
-                          "Alpha shape at the method's alpha {:.4g}: the {} cells of circumradius "
-                          "up to it",
-                          alpha.radii[shown - 1], shown)
-                    : format(
-                          "Alpha shape, alpha {:.4g} (cell {} of {}): the cells of circumradius "
-                          "up to it{}",
-                          alpha.radii[shown - 1], shown, alpha.cells.size(), chosen);
+                    ? "Alpha shape at the method's alpha " + radius_text(alpha.radii[shown - 1]) +
+                          ": the " + std::to_string(shown) + " cells of circumradius up to it"
+                    : "Alpha shape, alpha " + radius_text(alpha.radii[shown - 1]) + " (cell " +
+                          std::to_string(shown) + " of " + std::to_string(alpha.cells.size()) +
+                          "): the cells of circumradius up to it" + chosen;
   const std::vector<Cell<3>> none;
-  const std::string label = format("alpha solid ({} tetrahedra)", shown);
+  const std::string label = "alpha solid (" + std::to_string(shown) + " tetrahedra)";
   if (request.clipped) {
     whole_cells_cut(layers, r.sites, plane_of(scene, request.clip), request.clip.slab,
                     {"solid", label, palette::solid, &in},

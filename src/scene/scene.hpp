@@ -40,6 +40,8 @@ struct Layer {
   // Grows with the picture scale (a projector's): not a wireframe's many edges, which would
   // merge into a dark fill.
   bool scales = true;
+  // Drawn as a part of that layer, in its colour (the step's corners, large so they are found).
+  std::string part_of;
 };
 
 // The stages a picture can show, in the order the algorithm runs.

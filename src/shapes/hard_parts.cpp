@@ -21,7 +21,7 @@ class Portable_random {
  public:
   explicit Portable_random(unsigned seed) : engine_(seed) {}
   double unit() { return double(engine_()) / 4294967296.0; }  // [0, 1)
-  double normal() {  // Box-Muller, one of the pair
+  double normal() {                                           // Box-Muller, one of the pair
     const double u = 1.0 - unit(), v = unit();
     return std::sqrt(-2.0 * std::log(u)) * std::cos(2 * pi * v);
   }
@@ -84,10 +84,10 @@ std::vector<Point<3>> drilled_block(int samples, unsigned seed) {
   // 0.3 at x = -0.3: sharp edges all round, genus 1. Sampled uniformly by area.
   constexpr double a = 1.0, b = 0.7, c = 0.4, hole = 0.3, hole_x = -0.3;
   const std::array<double, 4> areas = {
-      2 * (4 * a * b - pi * hole * hole),  // top and bottom, less the hole
-      2 * (2 * a * 2 * c),                 // the faces across y
-      2 * (2 * b * 2 * c),                 // the faces across x
-      2 * pi * hole * 2 * c};              // the hole's wall
+      2 * (4 * a * b),         // top and bottom (a pick in the hole is drawn again)
+      2 * (2 * a * 2 * c),     // the faces across y
+      2 * (2 * b * 2 * c),     // the faces across x
+      2 * pi * hole * 2 * c};  // the hole's wall
   const double total = areas[0] + areas[1] + areas[2] + areas[3];
   Portable_random random(seed);
   std::vector<Point<3>> points;

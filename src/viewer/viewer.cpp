@@ -324,10 +324,14 @@ void Viewer::frame(int width, int height, double seconds) {
     // far too small in the whole window), with room for the legend; a figure's panel keeps the
     // camera its gallery picture has.
     if (reconstruction_ && !camera_is_panel_camera_) {
-      camera_fitted_ = false;
-      scene_dirty_ = true;
+      if (comparing()) {
+        refit_for_views();  // each view's shape, not the whole picture's
+      } else {
+        camera_fitted_ = false;
+        scene_dirty_ = true;
+      }
     }
-    legend_room_pending_ = presenting_;
+    legend_room_pending_ = presenting_ && !camera_is_panel_camera_;
     was_presenting_ = presenting_;
   }
   if (scene_dirty_) compare_scenes_stale();
@@ -360,17 +364,17 @@ void Viewer::frame(int width, int height, double seconds) {
 }
 
 // Presenting, the legend is drawn in the picture: a camera just fitted steps back, a little at a
-// time, until a corner of the picture is clear of data for it (never below half the fit's scale;
-// a camera the user moved is left where it is).
+// time, until a corner of the picture is clear of data for it (render::with_room_for_legend: the
+// shape keeps at least 70% of its fitted size; a camera the user moved is left where it is).
 void Viewer::leave_room_for_legend() {
   if (!reconstruction_ || frame_height_ <= 0) return;
   render::Draw_options options;
   options.title = false;
   options.picture_scale = picture_scale_;
   options.hidden_layers = hidden_layers_;
-  const int w = view_width(frame_width_), h = view_height(frame_height_);
-  for (int step = 0; step < 6 && renderer_->legend_over_data(camera_, w, h, options); ++step)
-    camera_.zoom(1.12f);
+  options.legend = true;
+  camera_ = render::with_room_for_legend(renderer_->legend(), camera_, view_width(frame_width_),
+                                         view_height(frame_height_), options);
 }
 
 int Viewer::view_height(int window_height) const {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include "readable_style.hpp"
 #include "render/picture_cache.hpp"
@@ -136,12 +137,47 @@ void Viewer::draw_compare(int width, int height) {
     const auto head = label.find(':', label.find(": ") + 2);
     return head == std::string::npos ? label : label.substr(0, head);
   };
+  // Each view's scene, built when the stage or the options changed; a stage the method has not
+  // shows its result.
+  for (auto& view : compare_.views) {
+    if (!view->reconstruction || view->drawn_scene) continue;
+    if (!view->renderer) view->renderer = std::make_unique<render::Renderer>();
+    scene::Request request = request_;
+    request.colour_blind = colour_blind_;
+    request.focus_sample = request.focus_pole = -1;
+    request.neighbourhood = false;
+    const Options& options = options_of(*view->reconstruction);
+    if (!scene::has_stage(options.method, dimension_of(*view->reconstruction), request.stage))
+      request.stage = scene::Stage::surface, request.step = -1;
+    try {
+      view->renderer->set_scene(std::visit(
+          [&](const auto& r) { return scene::build_scene(r, request); }, *view->reconstruction));
+      view->error.clear();
+    } catch (const std::exception& e) {
+      view->error = e.what();
+      view->renderer->set_scene(scene::Scene{});
+    }
+    view->drawn_scene = true;
+  }
+  // Each view's name and verdict (or the error drawing it), and the band as high as the tallest.
+  std::vector<std::string> labels;
+  std::vector<bool> good;
   float band = 0;
   for (const auto& view : compare_.views) {
     std::string label = std::string(to_string(view->method)) + ": ";
-    label += view->reconstruction ? verdict(statistics_of(*view->reconstruction)).line
-                                  : "reconstructing...";
-    band = std::max(band, ImGui::CalcTextSize(fitted(label).c_str(), nullptr, false, wrap).y);
+    bool closed = false;
+    if (!view->error.empty()) {
+      label += view->error;
+    } else if (view->reconstruction) {
+      const Verdict verdict_of = verdict(statistics_of(*view->reconstruction));
+      label += verdict_of.line;
+      closed = verdict_of.manifold;
+    } else {
+      label += "reconstructing...";
+    }
+    good.push_back(closed);
+    labels.push_back(fitted(label));
+    band = std::max(band, ImGui::CalcTextSize(labels.back().c_str(), nullptr, false, wrap).y);
   }
   const int picture_h = std::max(1, view_h - std::min(int(band) + 8, view_h / 3));
   for (std::size_t i = 0; i < count; ++i) {
@@ -151,32 +187,7 @@ void Viewer::draw_compare(int width, int height) {
     // GL counts rows from the bottom; the first row is the top one.
     const int y = caption_height_ + reserved_height_ + (rows - 1 - row) * view_h;
     const float top = float(height - y - view_h);
-    std::string label = std::string(to_string(view.method)) + ": ";
-    bool good = false;
     if (view.reconstruction) {
-      if (!view.drawn_scene) {
-        if (!view.renderer) view.renderer = std::make_unique<render::Renderer>();
-        scene::Request request = request_;
-        request.colour_blind = colour_blind_;
-        request.focus_sample = request.focus_pole = -1;
-        request.neighbourhood = false;
-        // A stage the method has not: its result.
-        const Options& options = options_of(*view.reconstruction);
-        if (!scene::has_stage(options.method, dimension_of(*view.reconstruction), request.stage))
-          request.stage = scene::Stage::surface, request.step = -1;
-        try {
-          view.renderer->set_scene(std::visit(
-              [&](const auto& r) { return scene::build_scene(r, request); }, *view.reconstruction));
-          view.error.clear();
-        } catch (const std::exception& e) {
-          view.error = e.what();
-          view.renderer->set_scene(scene::Scene{});
-        }
-        view.drawn_scene = true;
-      }
-      const Verdict verdict_of = verdict(statistics_of(*view.reconstruction));
-      label += view.error.empty() ? verdict_of.line : view.error;
-      good = verdict_of.manifold && view.error.empty();
       render::Draw_options options;
       options.legend = false;
       options.title = false;
@@ -185,19 +196,17 @@ void Viewer::draw_compare(int width, int height) {
       options.viewport_x = x;
       options.viewport_y = y;
       view.cache.draw(*view.renderer, camera_, view_w, picture_h, options);
-    } else {
-      label += view.error.empty() ? "reconstructing..." : view.error;
     }
     // Its name and verdict over its top edge, on a band that reads over any picture.
-    label = fitted(label);
+    const std::string& label = labels[i];
     const ImVec2 at(float(x) + 6, top + 4);
-    const ImVec2 size = ImGui::CalcTextSize(label.c_str(), nullptr, false, float(view_w) - 12);
+    const ImVec2 size = ImGui::CalcTextSize(label.c_str(), nullptr, false, wrap);
     draw->AddRectFilled(ImVec2(at.x - 4, at.y - 2), ImVec2(at.x + size.x + 4, at.y + size.y + 2),
                         IM_COL32(20, 20, 24, 220));
     draw->AddText(nullptr, 0, at,
                   ImGui::ColorConvertFloat4ToU32(
-                      imgui_colour(good ? panel_colours::success : panel_colours::failure)),
-                  label.c_str(), nullptr, float(view_w) - 12);
+                      imgui_colour(good[i] ? panel_colours::success : panel_colours::failure)),
+                  label.c_str(), nullptr, wrap);
     // A thin line between the views.
     if (column > 0)
       draw->AddLine(ImVec2(float(x), top), ImVec2(float(x), top + float(view_h)),

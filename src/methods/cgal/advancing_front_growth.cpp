@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// CGAL's Advancing Front, run so that the order of its triangles is kept: CGAL numbers each
-// facet it selects (Advancing_front_surface_reconstruction::select_facet), but its cell base
-// throws the numbers away unless compiled with AFSR_FACET_NUMBER. A cell base of our own keeps
-// them; everything else is CGAL's class with its default parameters, the same call
+// CGAL's Advancing Front, run so that the order of its triangles is kept: CGAL tells the cell of
+// each facet it selects (Advancing_front_surface_reconstruction::select_facet), but its cell base
+// forgets unless compiled with AFSR_FACET_NUMBER. A cell base of our own stamps each selection in
+// order; everything else is CGAL's class with its default parameters, the same call
 // advancing_front_surface_reconstruction() makes (src/yardsticks), so the surface is the same.
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -20,7 +21,14 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-// CGAL's cell base for the Advancing Front, with the facet numbers kept (hiding its no-ops).
+// The order of selection, over all cells of one run (advancing_front_in_order resets it).
+thread_local int selections = 0;
+
+// CGAL's cell base for the Advancing Front, with each facet's place in the order kept (hiding
+// its no-ops). CGAL's own numbers will not do after its post-processing: it counts down as it
+// takes triangles back, so later triangles reuse numbers. So each selection is stamped in order
+// instead, above every number CGAL counts to; a stamp CGAL hands back (it moves a selected
+// facet to its mirror when a vertex is inserted, number and all) is kept as it is.
 template <class Base = CGAL::Advancing_front_surface_reconstruction_cell_base_3<Kernel>>
 class Numbered_facets_cell : public Base {
  public:
@@ -30,7 +38,11 @@ class Numbered_facets_cell : public Base {
   };
   using Base::Base;
 
-  void set_facet_number(int i, int n) { numbers_[i] = n; }
+  static constexpr int first_stamp = 1 << 30;  // beyond any count of facets CGAL selects
+
+  void set_facet_number(int i, int n) {
+    numbers_[i] = n >= first_stamp ? n : first_stamp + selections++;
+  }
   int facet_number(int i) const { return numbers_[i]; }
 
  private:
@@ -51,6 +63,7 @@ std::vector<Facet<3>> advancing_front_in_order(const std::vector<Point<3>>& poin
     numbered.push_back({{points[i][0], points[i][1], points[i][2]}, i});
   Triangulation triangulation(numbered.begin(), numbered.end());
   if (triangulation.dimension() < 3) return {};
+  selections = 0;
   Front front(triangulation);
   front.run();  // radius_ratio_bound 5, beta 0.52: CGAL's defaults
 
@@ -69,8 +82,12 @@ std::vector<Facet<3>> advancing_front_in_order(const std::vector<Point<3>>& poin
     for (int j = 0; j < 3; ++j) triangle[j] = static_cast<int>(face->vertex(j)->vertex_3()->id());
     numbered_triangles.push_back({cell->facet_number(index), triangle});
   }
+  // A triangle never stamped (none is expected) goes last rather than first.
+  const auto stamp = [](int number) {
+    return number < 0 ? std::numeric_limits<int>::max() : number;
+  };
   std::stable_sort(numbered_triangles.begin(), numbered_triangles.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
+                   [&](const auto& a, const auto& b) { return stamp(a.first) < stamp(b.first); });
   std::vector<Facet<3>> triangles;
   triangles.reserve(numbered_triangles.size());
   for (const auto& [number, triangle] : numbered_triangles) triangles.push_back(triangle);

@@ -31,23 +31,24 @@
 namespace sculpt {
 
 // The stage `alpha`: every finite cell with its circumradius, smallest first (ties in canonical
-// order), so that the first k cells are the alpha shape's solid at the k-th radius.
+// order), so that the first k cells are the alpha shape's solid at the k-th radius. Sorted on
+// CGAL's own squared alpha, which decides the solid: the radius, a square root scaled back, can
+// round two different alphas to one number.
 template <class Alpha_shape>
 void keep_filtration(const Alpha_shape& shape, int scale, Alpha_stage& stage) {
-  std::vector<std::pair<double, Cell<3>>> cells;
+  std::vector<std::pair<double, Cell<3>>> cells;  // squared alpha, corners
   for (auto cell : shape.finite_cell_handles()) {
     const Cell<3> corners{cell->vertex(0)->info(), cell->vertex(1)->info(), cell->vertex(2)->info(),
                           cell->vertex(3)->info()};
-    cells.push_back({std::ldexp(std::sqrt(CGAL::to_double(cell->get_alpha())), -scale),
-                     canonical_reading(corners)});
+    cells.push_back({CGAL::to_double(cell->get_alpha()), canonical_reading(corners)});
     if (!(shape.get_alpha() < cell->get_alpha())) ++stage.chosen;
   }
   std::sort(cells.begin(), cells.end());
   stage.cells.reserve(cells.size());
   stage.radii.reserve(cells.size());
-  for (const auto& [radius, corners] : cells) {
+  for (const auto& [squared_alpha, corners] : cells) {
     stage.cells.push_back(corners);
-    stage.radii.push_back(radius);
+    stage.radii.push_back(std::ldexp(std::sqrt(squared_alpha), -scale));
   }
 }
 
