@@ -9,6 +9,8 @@
 
 #include <cmath>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "test_support.hpp"
 
@@ -127,6 +129,63 @@ TEST(Separate_curves, NestedCirclesStayTwoCurves) {
   }
   expect_each_curve_alone({{{0, 0}, 2.0}, {{-0.9, 0}, 0.6}, {{0.9, 0.1}, 0.6}},
                           "two circles inside a third");
+}
+
+// A straight stroke from `from` to `to`, its samples `spacing` apart, both ends included, added
+// to the drawing as an open polyline.
+void add_stroke(Drawing& drawing, Point<2> from, Point<2> to, double spacing) {
+  const int n = static_cast<int>(std::ceil(std::hypot(to[0] - from[0], to[1] - from[1]) / spacing));
+  const int first = static_cast<int>(drawing.samples.size());
+  for (int i = 0; i <= n; ++i) {
+    const double t = double(i) / n;
+    drawing.samples.push_back({from[0] + t * (to[0] - from[0]), from[1] + t * (to[1] - from[1])});
+    if (i > 0) drawing.edges.push_back({first + i - 1, first + i});
+  }
+}
+
+// Open strokes near a closed outline keep their ends, whichever kind the samples are left to
+// choose: beside it down to less than two spacings away, pointing at it, inside it, and a face
+// (an outline, two eyes, an open smile). Each stroke is sampled as the outline is.
+TEST(Separate_curves, OpenStrokesNearAnOutlineKeepTheirEnds) {
+  struct Case {
+    const char* name;
+    std::vector<std::pair<Point<2>, Point<2>>> strokes;
+    std::vector<Circle> eyes;
+  };
+  const double spacing = 2 * M_PI / 200;  // the unit circle's, with 200 samples
+  const std::vector<Case> cases = {
+      {"beside it, 0.3 away", {{{1.3, -0.5}, {1.3, 0.5}}}, {}},
+      {"beside it, 0.05 away", {{{1.05, -0.5}, {1.05, 0.5}}}, {}},
+      {"pointing at it, its end 0.06 away", {{{1.06, 0}, {2.06, 0}}}, {}},
+      {"inside, pointing out", {{{-0.4, 0.05}, {0.9, 0.05}}}, {}},
+      {"two strokes side by side", {{{1.3, -0.5}, {1.3, 0.5}}, {{1.5, -0.5}, {1.5, 0.5}}}, {}},
+      {"a face", {{{-0.4, -0.4}, {0.4, -0.4}}}, {{{-0.35, 0.3}, 0.1}, {{0.35, 0.3}, 0.1}}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    Drawing drawing;
+    for (int i = 0; i < 200; ++i) {
+      const double a = 2 * M_PI * i / 200;
+      drawing.samples.push_back({std::cos(a), std::sin(a)});
+      drawing.edges.push_back({i, (i + 1) % 200});
+    }
+    for (const Circle& eye : c.eyes) {
+      const int first = static_cast<int>(drawing.samples.size());
+      const int n = static_cast<int>(std::ceil(2 * M_PI * eye.radius / spacing));
+      for (int i = 0; i < n; ++i) {
+        const double a = 0.2 + 2 * M_PI * i / n;
+        drawing.samples.push_back(
+            {eye.center[0] + eye.radius * std::cos(a), eye.center[1] + eye.radius * std::sin(a)});
+        drawing.edges.push_back({first + i, first + (i + 1) % n});
+      }
+    }
+    for (const auto& [from, to] : c.strokes) add_stroke(drawing, from, to, spacing);
+    const auto result = reconstruct(drawing.samples, Options{});
+    EXPECT_EQ(testing::undirected(result.surface), testing::undirected(drawing.edges));
+    EXPECT_EQ(result.stats.boundary_loops, c.strokes.size());  // open curves
+    EXPECT_EQ(result.stats.components, 1 + c.eyes.size() + c.strokes.size());
+    EXPECT_EQ(result.stats.unused_samples, 0u);
+  }
 }
 
 }  // namespace
