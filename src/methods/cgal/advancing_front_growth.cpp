@@ -3,7 +3,11 @@
 // each facet it selects (Advancing_front_surface_reconstruction::select_facet), but its cell base
 // forgets unless compiled with AFSR_FACET_NUMBER. A cell base of our own stamps each selection in
 // order; everything else is CGAL's class with its default parameters, the same call
-// advancing_front_surface_reconstruction() makes (src/yardsticks), so the surface is the same.
+// advancing_front_surface_reconstruction() makes (src/yardsticks), so the surface is the same on
+// samples in general position. Where candidates tie (cospherical samples, as CAD meshes have),
+// CGAL's choice follows the cells' places in memory: two runs of its own call on CGAL's dino,
+// helmet or cube-meshed, with other allocations between them, give different triangles, and so
+// does this run with its larger cells.
 #include <CGAL/Advancing_front_surface_reconstruction.h>
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
