@@ -198,21 +198,30 @@ TEST(Render_layers, AFittedExportStepsBackForItsLegend) {
   EXPECT_LE(steps, 3);
   EXPECT_FALSE(layout.over_data(stepped, 300, 300, options));
 
+  // Strewn to every corner however far back: the fit stays, the legend where least is.
   const scene::Scene strewn = filled_square(5);
   const render::Legend_layout strewn_layout(strewn);
-  render::with_room_for_legend(strewn_layout, render::fit(strewn, 1.0f), 300, 300, options, &steps);
+  const render::Camera strewn_fit = render::fit(strewn, 1.0f);
+  ASSERT_TRUE(strewn_layout.over_data(strewn_fit, 300, 300, options));
+  const render::Camera kept_fit =
+      render::with_room_for_legend(strewn_layout, strewn_fit, 300, 300, options, &steps);
   EXPECT_EQ(steps, 0);
+  EXPECT_EQ(render::to_json(kept_fit), render::to_json(strewn_fit));
 
   // Through the shots, as `sculpt render` and the gallery draw.
   frontend::Shot shot;
   shot.size = "300x300";
   EXPECT_GT(frontend::draw_scene(testing::headless(), shot, square).legend_steps, 0);
+  // A zoom on a detail stays, though stepping back would clear a corner.
   frontend::Shot detail = shot;
-  detail.zoom = 0.5;
+  detail.zoom = 0.95;
+  render::with_room_for_legend(layout,
+                               render::fit(square, 1.0f, 0.95f, float(shot.yaw), float(shot.pitch)),
+                               300, 300, options, &steps);
+  ASSERT_GE(steps, 1);
   EXPECT_EQ(frontend::draw_scene(testing::headless(), detail, square).legend_steps, 0);
-  frontend::Shot bare = shot;
-  bare.no_legend = true;
-  EXPECT_EQ(frontend::draw_scene(testing::headless(), bare, square).legend_steps, 0);
+  // An animation's frames step back three times at most in all.
+  EXPECT_EQ(frontend::draw_scene(testing::headless(), shot, square, nullptr, 3).legend_steps, 3);
   const nlohmann::json given = render::to_json(fitted);
   const frontend::Picture kept = frontend::draw_scene(testing::headless(), shot, square, &given);
   EXPECT_EQ(kept.legend_steps, 0);

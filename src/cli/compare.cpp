@@ -18,6 +18,7 @@
 #include "io/destinations.hpp"
 #include "io/output_set.hpp"
 #include "io/point_reader.hpp"
+#include "render/camera.hpp"
 #include "render/headless.hpp"
 #include "render/image.hpp"
 #include "render/png_band_writer.hpp"
@@ -203,6 +204,7 @@ class Comparison {
     const std::optional<Reference> reference = reference_of(input, given_reference_);
     if (!reference && args_.pictures.empty()) return;  // nothing more to measure
     samples_only_.reset();                             // a new input
+    tile_camera_ = nullptr;
     if (given_reference_ && reference) {
       const Statistics own = facet_topology(reference->points.size(), reference->triangles);
       row["delaunay_only"]["reference"] = {{"triangles", reference->triangles.size()},
@@ -259,11 +261,15 @@ class Comparison {
     if (!args_.pictures.empty()) add_grid_row(tiles);
   }
 
-  // A tile of the grid; every tile of an input fits the same box, the samples' (one camera).
+  // A tile of the grid; every tile of an input fits the same box, the samples', and is seen by
+  // one camera: the first tile's, stepped back for its legend.
   render::Image draw(const frontend::Shot& shot, const frontend::Any_reconstruction& result) {
     if (args_.pictures.empty()) return {};
     if (!renderer_) renderer_ = std::make_unique<render::Headless_renderer>();
-    return frontend::draw_shot(*renderer_, shot, result).image;
+    frontend::Picture picture = frontend::draw_shot(
+        *renderer_, shot, result, tile_camera_.is_null() ? nullptr : &tile_camera_);
+    if (tile_camera_.is_null()) tile_camera_ = render::to_json(picture.camera);
+    return std::move(picture.image);
   }
   // A tile of the samples alone, where a method does not apply: drawn from one reconstruction
   // per input, made only for them.
@@ -298,6 +304,7 @@ class Comparison {
   std::optional<Reference> given_reference_;  // --reference
   std::unique_ptr<render::Headless_renderer> renderer_;
   std::optional<frontend::Any_reconstruction> samples_only_;  // this input's, for draw()
+  nlohmann::json tile_camera_;  // this input's tiles' camera, once its first is drawn
   std::string grid_path_;
   std::size_t grid_rows_ = 0;
   std::unique_ptr<render::Png_band_writer> grid_;

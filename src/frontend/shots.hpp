@@ -38,7 +38,7 @@ struct Picture {
   scene::Scene scene;
   render::Camera camera;  // as drawn: a fitted camera after its steps back for the legend
   render::Image image;
-  int legend_steps = 0;  // the steps back (render::legend_step_back each) the legend asked for
+  int legend_steps = 0;  // the steps back (render::legend_step_back each) from the fit, in all
 };
 // What a shot asks of the scene builder: its stage, step, focus, clip, layers and drawing options.
 // Throws io::Error with a one-line message (an unknown stage, a malformed clip, ...).
@@ -56,13 +56,17 @@ scene::Scene scene_of(const Shot& shot, const Any_reconstruction& reconstruction
 // 3D triangulation or diagram in section, facing the camera, unless the shot cuts or sections).
 std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& reconstruction);
 
-// `camera`, if given, replaces the fitted camera. Throws io::Error with a one-line message.
+// `camera`, if given, replaces the fitted camera. A fitted camera steps back for the legend
+// (render::with_room_for_legend); `legend_steps_before`, the steps an animation's earlier frames
+// took, starts it that far back, and three steps is all it takes in all. Throws io::Error with a
+// one-line message.
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
-                  const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr);
+                  const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr,
+                  int legend_steps_before = 0);
 
 // The same, of a scene already built by scene_of (what was checked is what is drawn).
 Picture draw_scene(render::Picture_renderer& renderer, const Shot& shot, scene::Scene scene,
-                   const nlohmann::json* camera = nullptr);
+                   const nlohmann::json* camera = nullptr, int legend_steps_before = 0);
 
 // What can be known of a shot before any work: its output's format and folder, its stage, size
 // and animation. Throws io::Error with a one-line message.

@@ -64,6 +64,24 @@ bool crosses_box(glm::vec2 a, glm::vec2 b, float x0, float y0, float x1, float y
   return true;
 }
 
+// What a layer is, without its geometry (copying a mesh to clear it would cost as much as the
+// mesh); a layer with nothing to draw is left out of the legend.
+scene::Layer described(const scene::Layer& layer) {
+  scene::Layer info;
+  info.id = layer.id;
+  info.label = layer.label;
+  info.primitive = layer.primitive;
+  info.color = layer.color;
+  info.size = layer.size;
+  info.lit = layer.lit;
+  info.translucent = layer.translucent;
+  info.in_legend = layer.in_legend && !layer.positions.empty();
+  info.cut = layer.cut;
+  info.scales = layer.scales;
+  info.part_of = layer.part_of;
+  return info;
+}
+
 }  // namespace
 
 // Where each layer lies, thinned to about 100,000 points in all (the positions themselves live
@@ -97,16 +115,10 @@ Legend_layout::Legend_layout(const scene::Scene& scene)
     }
     landmarks_.push_back(std::move(marks));
     segments_.push_back(std::move(segments));
-    scene::Layer info = layer;  // keep what the layer is, not its geometry
-    info.positions.clear();
-    info.normals.clear();
-    info.radii.clear();
-    if (layer.positions.empty()) info.in_legend = false;
-    shown_.layers.push_back(std::move(info));
+    shown_.layers.push_back(described(layer));
   }
 }
 
-// The legend and title: coloured swatches and text (stb_easy_font quads) in pixel coordinates.
 // The corner for a box of w by h pixels, `inset` from the edges, that the fewest of the drawn
 // layers' landmarks fall in (projected by the camera) and segments cross: the top left when none
 // does, so that a legend moves only off the data; else the top right or the bottom right (the title
@@ -153,7 +165,10 @@ Legend_layout::Corner Legend_layout::emptiest_corner(const Camera& camera, int w
     }
     for (const auto& [from, to] : segments_[l]) {
       const auto a = on_screen(from), b = on_screen(to);
-      if (!a || !b) continue;
+      if (!a || !b) {  // running past the eye: its end in front, at least
+        count(a ? from : to);
+        continue;
+      }
       for (std::size_t k = 0; k < corners.size(); ++k) {
         const auto [cx, cy] = corners[k];
         if (crosses_box(*a, *b, cx, cy, cx + w, cy + h)) ++inside[k];
@@ -217,11 +232,11 @@ bool Legend_layout::over_data(const Camera& camera, int width, int height,
 }
 
 Camera with_room_for_legend(const Legend_layout& layout, Camera camera, int width, int height,
-                            const Draw_options& options, int* steps) {
+                            const Draw_options& options, int* steps, int most_steps) {
   Camera stepped = camera;
   int taken = 0;
   while (layout.over_data(stepped, width, height, options)) {
-    if (++taken > 3) {
+    if (++taken > most_steps) {
       stepped = camera;
       taken = 0;
       break;

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Where the legend and the title go in a picture. The legend takes the corner clearest of the
 // data, judged from where each layer lies (points and segments, about 100,000 in all), so
-// that it never hides what it explains; a freshly fitted camera steps back until such a corner
-// exists. No OpenGL here: the renderer draws by this layout, and the exports (`sculpt render`,
-// the gallery, Python) step their fitted cameras back by it before drawing, as the viewer does.
+// that it hides as little as it can of what it explains; a freshly fitted camera steps back a
+// little where that clears a corner. No OpenGL here: the renderer draws by this layout, and the
+// exports (`sculpt render`, the gallery, Python) step their fitted cameras back by it before
+// drawing, as the viewer does.
 #pragma once
 
 #include <cstddef>
@@ -24,7 +25,7 @@ class Legend_layout {
 
   struct Corner {
     float x = 0, y = 0;       // the legend box's top left, in pixels from the top left
-    std::size_t covered = 0;  // the data's landmarks under it
+    std::size_t covered = 0;  // the data's points under it and segments across it
   };
   struct Place {
     std::vector<const scene::Layer*> listed;  // the layers the legend names, in order
@@ -55,14 +56,14 @@ class Legend_layout {
 };
 
 // A camera just fitted, stepped back a little at a time until a corner of the picture is clear
-// of data for the legend: at most three steps of 12%, so that the shape keeps at least 70% of
-// its fitted size. Where three do not clear a corner (Delaunay edges running to the box, poles
-// strewn to every corner) the camera stays as fitted, the legend in the corner with the least
-// data: shrinking the shape further would cost more than the legend hides. A camera chosen by
-// hand is not passed here: it stays where it was put. `steps`, if given, learns how many steps
-// were taken.
+// of data for the legend: at most `most_steps` steps of 12% (three by default, so that the shape
+// keeps at least 70% of its fitted size). Where they do not clear a corner (Delaunay edges
+// running to the box, poles strewn to every corner) the camera stays as given, the legend in the
+// corner with the least data: shrinking the shape further would cost more than the legend hides.
+// A camera chosen by hand is not passed here: it stays where it was put. `steps`, if given,
+// learns how many steps were taken.
 Camera with_room_for_legend(const Legend_layout& layout, Camera camera, int width, int height,
-                            const Draw_options& options, int* steps = nullptr);
+                            const Draw_options& options, int* steps = nullptr, int most_steps = 3);
 // What one step back zooms by.
 inline constexpr float legend_step_back = 1.12f;
 

@@ -42,6 +42,8 @@ struct Layer {
   bool scales = true;
   // Drawn as a part of that layer, in its colour (the step's corners, large so they are found).
   std::string part_of;
+  // (A field added here is copied where a layer is kept without its geometry:
+  // render/legend_layout.cpp, described.)
 };
 
 // The stages a picture can show, in the order the algorithm runs.

@@ -283,9 +283,11 @@ void Viewer::rebuild_scene() {
                              : 1.0f;
     if (panel_camera_pending_) {
       // The panel's camera, as the gallery frames it (fitted to the samples, which every stage
-      // shares), flown to when the reconstruction stays the same.
+      // shares, and stepped back for the legend when the picture draws one), flown to when the
+      // reconstruction stays the same.
       const frontend::Shot& shot = tour_.image().shot;
-      const render::Camera target = render::fit(scene, aspect, shot.zoom, shot.yaw, shot.pitch);
+      render::Camera target = render::fit(scene, aspect, shot.zoom, shot.yaw, shot.pitch);
+      if (presenting_ && shot.zoom >= 1 && frame_height_ > 0) target = with_legend_room(target);
       if (walk_stages_ && camera_fitted_ && camera_.dimension == target.dimension) {
         camera_move_ = Camera_move{camera_, target, 0.0f};
       } else {
@@ -323,7 +325,10 @@ void Viewer::frame(int width, int height, double seconds) {
     // The picture changed shape: framed afresh (a fit for the narrow view beside the panel is
     // far too small in the whole window), with room for the legend; a figure's panel keeps the
     // camera its gallery picture has.
-    if (reconstruction_ && !camera_is_panel_camera_) {
+    if (reconstruction_ && camera_is_panel_camera_) {
+      panel_camera_pending_ = true;  // the gallery's framing, for the picture's new shape
+      scene_dirty_ = true;
+    } else if (reconstruction_) {
       if (comparing()) {
         refit_for_views();  // each view's shape, not the whole picture's
       } else {
@@ -368,13 +373,17 @@ void Viewer::frame(int width, int height, double seconds) {
 // shape keeps at least 70% of its fitted size; a camera the user moved is left where it is).
 void Viewer::leave_room_for_legend() {
   if (!reconstruction_ || frame_height_ <= 0) return;
+  camera_ = with_legend_room(camera_);
+}
+
+render::Camera Viewer::with_legend_room(const render::Camera& camera) const {
   render::Draw_options options;
   options.title = false;
   options.picture_scale = picture_scale_;
   options.hidden_layers = hidden_layers_;
   options.legend = true;
-  camera_ = render::with_room_for_legend(renderer_->legend(), camera_, view_width(frame_width_),
-                                         view_height(frame_height_), options);
+  return render::with_room_for_legend(renderer_->legend(), camera, view_width(frame_width_),
+                                      view_height(frame_height_), options);
 }
 
 int Viewer::view_height(int window_height) const {

@@ -372,6 +372,8 @@ class Viewer {
   bool legend_room_pending_ = false;  // a camera just fitted, or presentation just begun
   bool was_presenting_ = false;
   void leave_room_for_legend();
+  // The camera stepped back until the legend drawn in the picture has a corner clear of data.
+  render::Camera with_legend_room(const render::Camera& camera) const;
   int reserved_height_ = 0;
   std::string caption_figure_;  // the figure the caption's height was measured on
   float caption_min_height_ = 0;
