@@ -11,6 +11,7 @@
 #include <imgui.h>
 
 #include "io/destinations.hpp"
+#include "render/legend_layout.hpp"
 #include "scene/clipping.hpp"
 #include "shapes/shapes.hpp"
 #include "viewer_internals.hpp"
