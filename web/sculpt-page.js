@@ -139,10 +139,12 @@ const jobs = {
       withText(message.stage, (stage) =>
         Module._sculpt_job_progress(message.id, stage, message.fraction, message.overall));
     } else if (message.type === 'done') {
-      // The worker goes, with the memory its job grew (a WebAssembly heap never shrinks); a
-      // fresh one stands ready for the next job.
-      worker.terminate();
-      this.keepOneReady();
+      // One worker is kept for the next job, others go with the memory their jobs grew. The kept
+      // one holds its heap (a WebAssembly heap never shrinks), at most the largest job's: a
+      // fresh worker would free it, but loading one needs the network, and once loaded the page
+      // works offline.
+      if (this.idle.length === 0) this.idle.push(worker);
+      else worker.terminate();
       this.finish(message.id, message.error, message.description,
                   message.bytes ? new Uint8Array(message.bytes) : null);
     }
