@@ -8,10 +8,10 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <random>
 #include <set>
 
 #include "io/point_reader.hpp"
+#include "shapes/portable_random.hpp"
 #include "test_support.hpp"
 
 namespace sculpt {
@@ -50,14 +50,9 @@ std::size_t defects(const Statistics& s) {
 
 // A simulated scan of a CAD part: its triangles sampled `count` times uniformly by area, each
 // point moved by Gaussian noise of `noise` times the mesh's diagonal (a scanner's). The random
-// numbers are the engine's own, converted here, so that every standard library agrees.
+// numbers are the same on every standard library (shapes::Portable_random).
 std::vector<Point<3>> noisy_scan(const io::Point_set& mesh, int count, double noise) {
-  std::mt19937 engine(17);
-  const auto unit = [&] { return double(engine()) / 4294967296.0; };
-  const auto gauss = [&] {
-    const double u = 1.0 - unit(), v = unit();
-    return std::sqrt(-2.0 * std::log(u)) * std::cos(2 * M_PI * v);
-  };
+  shapes::Portable_random random(17);
   std::vector<double> cumulative;
   double total = 0;
   Point<3> lower = mesh.points[0], upper = mesh.points[0];
@@ -81,16 +76,16 @@ std::vector<Point<3>> noisy_scan(const io::Point_set& mesh, int count, double no
   std::vector<Point<3>> points;
   for (int i = 0; i < count; ++i) {
     const auto t = mesh.triangles[std::size_t(
-        std::lower_bound(cumulative.begin(), cumulative.end(), unit() * total) -
+        std::lower_bound(cumulative.begin(), cumulative.end(), random.unit() * total) -
         cumulative.begin())];
-    double u = unit(), v = unit();
+    double u = random.unit(), v = random.unit();
     if (u + v > 1) u = 1 - u, v = 1 - v;
     Point<3> p{};
     for (int k = 0; k < 3; ++k) {
       const auto &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
       p[k] = a[k] + u * (b[k] - a[k]) + v * (c[k] - a[k]);
     }
-    for (double& x : p) x += sigma * gauss();
+    for (double& x : p) x += sigma * random.normal();
     points.push_back(p);
   }
   return points;

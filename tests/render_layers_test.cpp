@@ -120,6 +120,20 @@ TEST(Render_layers, ReportsLlvmpipe) {
   EXPECT_NE(std::string(testing::headless().gl_renderer()).find("llvmpipe"), std::string::npos);
 }
 
+// A 2D scene framed on the square [-1, 1]^2 with one layer of points, none yet.
+scene::Scene points_in_square(const char* label) {
+  scene::Scene scene;
+  scene.dimension = 2;
+  scene.lower = {-1, -1, 0};
+  scene.upper = {1, 1, 0};
+  scene::Layer points;
+  points.id = "points";
+  points.label = label;
+  points.color = {0.1f, 0.3f, 0.8f};
+  scene.layers = {points};
+  return scene;
+}
+
 // The legend takes the corner clearest of the data: off a shape that fills the top left, into
 // the empty top right; and stays top left when that is clear.
 TEST(Render_layers, TheLegendMovesOffTheData) {
@@ -133,21 +147,14 @@ TEST(Render_layers, TheLegendMovesOffTheData) {
     }
     return count;
   };
-  scene::Scene scene;
-  scene.dimension = 2;
-  scene.lower = {-1, -1, 0};
-  scene.upper = {1, 1, 0};
-  scene::Layer points;
-  points.id = "points";
-  points.label = "shape";
-  points.color = {0.1f, 0.3f, 0.8f};
-  points.size = 6;
+  scene::Scene scene = points_in_square("shape");
+  scene.layers[0].size = 6;
   // Past the bounds the camera frames, so that the shape reaches the picture's corner.
+  auto& positions = scene.layers[0].positions;
   for (float x = -1.5f; x <= 0; x += 0.02f) {
-    for (float y = 0; y <= 1.5f; y += 0.02f) points.positions.push_back({x, y, 0});
+    for (float y = 0; y <= 1.5f; y += 0.02f) positions.push_back({x, y, 0});
   }
-  points.positions.push_back({1, -1, 0});  // the bottom right corner of the bounds
-  scene.layers = {points};
+  positions.push_back({1, -1, 0});  // the bottom right corner of the bounds
   const render::Image moved = testing::render_scene(scene, 300, /*legend=*/true);
   EXPECT_EQ(legend_pixels(moved, 0, 0, 60, 40), 0u);
   EXPECT_GT(legend_pixels(moved, 150, 0, 300, 40), 200u);
@@ -161,24 +168,17 @@ TEST(Render_layers, TheLegendMovesOffTheData) {
 
 // A square filled with points: the fit puts data in every corner of the picture.
 scene::Scene filled_square(float far_out = 0) {
-  scene::Scene scene;
-  scene.dimension = 2;
-  scene.lower = {-1, -1, 0};
-  scene.upper = {1, 1, 0};
-  scene::Layer points;
-  points.id = "points";
-  points.label = "a square of points";
-  points.color = {0.1f, 0.3f, 0.8f};
+  scene::Scene scene = points_in_square("a square of points");
+  auto& positions = scene.layers[0].positions;
   for (float x = -1; x <= 1; x += 0.05f) {
-    for (float y = -1; y <= 1; y += 0.05f) points.positions.push_back({x, y, 0});
+    for (float y = -1; y <= 1; y += 0.05f) positions.push_back({x, y, 0});
   }
   // Points strewn far beyond the bounds, as convex poles are: in every corner at any zoom.
   if (far_out > 0) {
     for (float x = -far_out; x <= far_out; x += 0.1f) {
-      for (float y = -far_out; y <= far_out; y += 0.1f) points.positions.push_back({x, y, 0});
+      for (float y = -far_out; y <= far_out; y += 0.1f) positions.push_back({x, y, 0});
     }
   }
-  scene.layers = {points};
   return scene;
 }
 

@@ -208,9 +208,9 @@ Picture draw_scene(render::Picture_renderer& renderer, const Shot& shot, scene::
   // data, as the viewer's does; a camera given, or a zoom on a detail, stays where it was put.
   if (!inline_camera && shot.camera_file.empty() && shot.zoom >= 1 && options.legend) {
     for (int k = 0; k < legend_steps_before; ++k) picture.camera.zoom(render::legend_step_back);
-    picture.camera = render::with_room_for_legend(render::Legend_layout(picture.scene),
-                                                  picture.camera, width, height, options,
-                                                  &picture.legend_steps, 3 - legend_steps_before);
+    picture.camera = render::with_room_for_legend(
+        render::Legend_layout(picture.scene), picture.camera, width, height, options,
+        &picture.legend_steps, render::legend_steps_at_most - legend_steps_before);
     picture.legend_steps += legend_steps_before;
   }
   picture.image = renderer.render(picture.scene, picture.camera, width, height, options);

@@ -58,8 +58,8 @@ std::vector<Shot> animation_frames(const Shot& shot, const Any_reconstruction& r
 
 // `camera`, if given, replaces the fitted camera. A fitted camera steps back for the legend
 // (render::with_room_for_legend); `legend_steps_before`, the steps an animation's earlier frames
-// took, starts it that far back, and three steps is all it takes in all. Throws io::Error with a
-// one-line message.
+// took, starts it that far back, and render::legend_steps_at_most is all it takes in all. Throws
+// io::Error with a one-line message.
 Picture draw_shot(render::Picture_renderer& renderer, const Shot& shot,
                   const Any_reconstruction& reconstruction, const nlohmann::json* camera = nullptr,
                   int legend_steps_before = 0);

@@ -151,7 +151,7 @@ Legend_layout::Corner Legend_layout::emptiest_corner(const Camera& camera, int w
       if (at->x >= cx && at->x <= cx + w && at->y >= cy && at->y <= cy + h) ++inside[k];
     }
   };
-  for (std::size_t l = 0; l < shown_.layers.size() && l < landmarks_.size(); ++l) {
+  for (std::size_t l = 0; l < shown_.layers.size(); ++l) {
     if (hidden(shown_.layers[l], options)) continue;
     for (const glm::vec4& mark : landmarks_[l]) {
       const glm::vec3 p(mark);
@@ -193,7 +193,7 @@ Legend_layout::Place Legend_layout::place(const Camera& camera, int width, int h
   for (const auto& layer : shown_.layers) {
     if (!layer.in_legend || hidden(layer, options)) continue;
     place.listed.push_back(&layer);
-    widest = std::max(widest, float(stb_easy_font_width(const_cast<char*>(layer.label.c_str()))));
+    widest = std::max(widest, text_width(layer.label));
   }
   if (place.listed.empty()) return place;
   const float asked_w = 18 * scale + scale * widest,

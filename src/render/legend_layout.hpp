@@ -62,8 +62,10 @@ class Legend_layout {
 // corner with the least data: shrinking the shape further would cost more than the legend hides.
 // A camera chosen by hand is not passed here: it stays where it was put. `steps`, if given,
 // learns how many steps were taken.
+inline constexpr int legend_steps_at_most = 3;
 Camera with_room_for_legend(const Legend_layout& layout, Camera camera, int width, int height,
-                            const Draw_options& options, int* steps = nullptr, int most_steps = 3);
+                            const Draw_options& options, int* steps = nullptr,
+                            int most_steps = legend_steps_at_most);
 // What one step back zooms by.
 inline constexpr float legend_step_back = 1.12f;
 

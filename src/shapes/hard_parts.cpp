@@ -4,31 +4,15 @@
 // side by side they visibly differ, and each part shows a different one failing.
 #include <array>
 #include <cmath>
-#include <random>
 #include <vector>
 
+#include "portable_random.hpp"
 #include "shapes.hpp"
 
 namespace sculpt::shapes {
 namespace {
 
 constexpr double pi = 3.14159265358979323846;
-
-// Random numbers that are the same on every standard library: the engine's output is fixed by
-// the standard, the distributions' are not (libstdc++ natively, libc++ in the browser build), so
-// the conversions are ours and the browser shows the samples the command line reconstructs.
-class Portable_random {
- public:
-  explicit Portable_random(unsigned seed) : engine_(seed) {}
-  double unit() { return double(engine_()) / 4294967296.0; }  // [0, 1)
-  double normal() {                                           // Box-Muller, one of the pair
-    const double u = 1.0 - unit(), v = unit();
-    return std::sqrt(-2.0 * std::log(u)) * std::cos(2 * pi * v);
-  }
-
- private:
-  std::mt19937 engine_;
-};
 
 // A closed polygon walked at constant speed: t in [0, 1) to a point of its outline.
 Point<2> along_polygon(const std::vector<Point<2>>& corners, double t) {
