@@ -139,7 +139,29 @@ TEST_P(Robust_closed, IsTheMeshsTopology) {
 INSTANTIATE_TEST_SUITE_P(Meshes, Robust_closed,
                          ::testing::Values("knot1.off", "fandisk.off", "bunny00.off",
                                            "elephant.off", "refined_elephant.off", "armadillo.off",
-                                           "hand.off"));
+                                           "hand.off", "oblong.off"));
+
+// oblong.off (422 samples of a rounded bar, coarse and uneven) leaves one sample buried under its
+// surface: a nearly flat quad over it took the diagonal that passes above it, more than one cell
+// deep, so no cell of its own touches the outside. The carving digs to it through a short path
+// of cells, each removed by Boissonnat's condition, and every sample is on the surface.
+TEST(Cgal_meshes, ASampleBuriedDeeperThanOneCellIsDugTo) {
+  const std::string path = std::string(SCULPT_TEST_DATA) + "/data/meshes/oblong.off";
+  ASSERT_TRUE(std::filesystem::exists(path)) << path;
+  Options options;
+  options.keep_triangulations = true;  // the carving's events
+  const auto result = reconstruct(io::read_points(path).points, options);
+  EXPECT_FALSE(result.stats.carved_by_flood);
+  EXPECT_TRUE(result.carving.buried_samples.empty());
+  EXPECT_EQ(result.stats.unused_samples, 0u);
+  // The path: the last events expose the sample, and there are more of them than buried samples
+  // exposed one cell each would need (one).
+  std::size_t exposing = 0;
+  for (const auto& event : result.carving.events)
+    exposing += event.reason == Carve_reason::exposes_sample;
+  EXPECT_GE(exposing, 2u);
+  EXPECT_EQ(result.carving.events.back().reason, Carve_reason::exposes_sample);
+}
 
 TEST(Cgal_meshes, RobustMethodReproducesTheMeshOnDenseModels) {
   for (const char* name : {"bunny00.off", "refined_elephant.off"}) {

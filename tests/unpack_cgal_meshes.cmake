@@ -9,7 +9,7 @@ execute_process(
           data/meshes/hand.off data/meshes/femur.off data/meshes/fandisk.off
           data/meshes/elephant.off data/meshes/refined_elephant.off data/meshes/armadillo.off
           data/meshes/holes.off data/meshes/mech-holes-shark.off
-          data/meshes/cylinder_locally_refined.off
+          data/meshes/cylinder_locally_refined.off data/meshes/oblong.off
   WORKING_DIRECTORY "${DESTINATION}"
   RESULT_VARIABLE result)
 if(NOT result EQUAL 0)
