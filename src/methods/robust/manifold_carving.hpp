@@ -3,22 +3,12 @@
 // a time, keeping the surface a 2-manifold (a closed curve in 2D) after every removal.
 //
 // The solid starts as every all-sample cell of DT(S ∪ BBV) (the hull of the samples); the
-// outside is every other cell. A cell judged outer (cell_classification.hpp) is removed when it
-// touches the outside through k of its facets and the removal keeps the surface a manifold,
-// which is Boissonnat's condition for sculpting (1984): the part of the cell's boundary that
-// touches the outside must be a disk. It is, unless the simplex spanned by the vertices opposite
-// those k facets already touches the outside:
-//   k = 1        its opposite vertex must not be on the surface (or the surface pinches there);
-//   k = 2 (3D)   its opposite edge must not be on the surface (or the surface folds over it);
-//   k >= D       always (the rest of its boundary is one facet shared with the solid).
-// A removal must also leave every one of its samples on some solid cell, so that the surface
-// interpolates them all. Cells are removed largest circumball first (as Boissonnat does); a cell
-// that cannot be removed now is tried again whenever a neighbour is removed. Outer cells that
-// never can be stay in the solid and are counted.
-//
-// Last, samples left buried inside the solid (their surface passed over them, as when a quad of
-// nearly cospherical samples takes the other diagonal) are exposed by removing one more cell
-// of theirs, when that keeps the manifold, or else a short path of cells dug down to them.
+// outside is every other cell. Cells judged outer (cell_classification.hpp) are removed by
+// Boissonnat's condition, largest circumball first (carved_solid.hpp); outer cells that never
+// can be stay in the solid and are counted. Then the steps that change the solid's topology, by
+// removing outer cells several at once (solid_openings.hpp): cavities, handles, punches through
+// webs, a few rounds while they remove cells. Last, samples left buried inside the solid are
+// brought onto the surface (buried_samples.hpp).
 //
 // First, though, the carving tries a shortcut (Options::carve_by_flood): every outer cell the
 // outside reaches through outer cells is removed at once, a flood. Until it stalls, the carving
@@ -34,19 +24,12 @@
 #pragma once
 
 #include <algorithm>
-#include <array>
 #include <climits>
 #include <cstdint>
 #include <optional>
-#include <queue>
 #include <sculpt/sculpt.hpp>
-#include <unordered_map>
-#include <unordered_set>
-#include <utility>
 #include <vector>
 
-#include "../../core/cells_around_edge.hpp"
-#include "../../core/circumball_query.hpp"
 #include "../../core/closed_skin_check.hpp"
 #include "../../core/prefetch.hpp"
 #include "../../core/solid_and_skin.hpp"
@@ -54,28 +37,47 @@
 #include "../../core/union_find.hpp"
 #include "cell_classification.hpp"
 #include "piece_evidence.hpp"
+#include "solid_openings.hpp"
 
 namespace sculpt {
 
 template <class Traits>
-class Manifold_carving {
+class Manifold_carving : public Solid_openings<Traits> {
+  using Base = Solid_openings<Traits>;
   static constexpr int D = Traits::dimension;
-  using Triangulation = typename Traits::Triangulation;
-  using Cell_handle = typename Traits::Cell_handle;
-  using Vertex_handle = typename Triangulation::Vertex_handle;
+  using Base::buried;
+  using Base::carve_queue;
+  using Base::clock_;
+  using Base::expose_buried_samples;
+  using Base::is_outside;
+  using Base::is_sample;
+  using Base::judge_;
+  using Base::judged_outer;
+  using Base::judged_reason;
+  using Base::open_cavities;
+  using Base::open_handles;
+  using Base::outer_cells_left;
+  using Base::outer_left_;
+  using Base::outside_;
+  using Base::punch_through;
+  using Base::push_if_outer;
+  using Base::queued_;
+  using Base::record_removal;
+  using Base::removed_;
+  using Base::report;
+  using Base::result_;
+  using Base::sample_count_;
+  using Base::small_piece;
+  using Base::stamp_;
+  using Base::start_from_hull;
+  using Base::triangulation_;
+  using typename Base::Cell_handle;
+  using typename Base::Triangulation;
+  using typename Base::Vertex_handle;
 
  public:
-  // The judge's verdicts (cell_classification.hpp) are one byte a cell; whatever else the
-  // carving needs of a cell (its circumradius, the samples whose outer pole it is) is computed
-  // when asked, for the few cells that are asked about.
-  Manifold_carving(const Triangulation& triangulation, Reconstruction<D>& result,
-                   const Cell_judge<Traits>& judge, const Stage_clock& clock)
-      : triangulation_(triangulation),
-        result_(result),
-        judge_(judge),
-        clock_(clock),
-        sample_count_(static_cast<int>(result.sample_count())),
-        outside_(result.delaunay.cell_count, 0) {}
+  using Base::Base;
+  using Base::removed;
 
   void run() {
     if (result_.options.carve_by_flood) {
@@ -99,17 +101,10 @@ class Manifold_carving {
     record_what_stayed();
   }
 
-  // How many cells were removed.
-  std::size_t removed() const { return removed_; }
-
   // The surface's check as a closed 2-manifold through every sample, when the flood stood (it
   // passed it): the topology follows from it without checking the surface again.
   std::optional<Skin_check> checked_skin() const {
     return result_.stats.carved_by_flood ? checked_skin_ : std::nullopt;
-  }
-
-  bool is_outside(Cell_handle cell) const {
-    return triangulation_.is_infinite(cell) || outside_[cell->info()];
   }
 
   // Stage 7: the cells left in the solid.
@@ -132,78 +127,12 @@ class Manifold_carving {
   }
 
  private:
-  // A group removal must not cut off a piece of the solid with fewer cells.
-  static constexpr std::size_t small_piece = 256;
-
   // A facet of the skin: facet i of the solid cell numbered c, key (D + 1) c + i, its sites
   // facing out.
   struct Skin_facet {
     std::uint32_t key;
     Facet<D> sites;
   };
-
-  // Largest circumball first; among equal ones (cospherical samples) the lowest cell index, so
-  // that the order does not depend on the queue's history.
-  struct Entry {
-    float radius2;
-    int index;
-    Cell_handle cell;
-    bool operator<(const Entry& other) const {
-      return radius2 < other.radius2 || (radius2 == other.radius2 && index > other.index);
-    }
-  };
-
-  bool is_sample(Vertex_handle v) const {
-    return !triangulation_.is_infinite(v) && v->info() < sample_count_;
-  }
-  bool judged_outer(Cell_handle cell) const { return judge_.verdict(cell) != 0; }
-
-  // The squared circumradius, rounded to a float: the carving order.
-  float radius2(Cell_handle cell) const {
-    return static_cast<float>(squared_circumradius<Traits>(
-        cell, Traits::from_cgal(Traits::circumcenter(triangulation_, cell))));
-  }
-
-  // How many samples have this cell as their outer pole: a sample's poles are cells around it,
-  // so only the cell's own vertices can.
-  int outer_pole_of(Cell_handle cell) const {
-    int count = 0;
-    for (int i = 0; i <= D; ++i) {
-      const int s = cell->vertex(i)->info();
-      if (s >= sample_count_) continue;
-      for (int q : {result_.poles.positive_pole[s], result_.poles.negative_pole[s]}) {
-        count += q >= 0 && result_.propagation.labels[q] == Label::outer &&
-                 static_cast<int>(result_.poles.poles[q].cell) == cell->info();
-      }
-    }
-    return count;
-  }
-  Carve_reason judged_reason(Cell_handle cell) const {
-    return static_cast<Carve_reason>(judge_.verdict(cell) - 1);
-  }
-
-  // The carving's progress, never going back (an undone flood's, then the carving's).
-  void report(double fraction) {
-    if (fraction <= reported_) return;
-    reported_ = std::min(1.0, fraction);
-    clock_.report(reported_);
-  }
-
-  // The solid is the hull: every all-sample cell; each sample's cells in it and outside counted
-  // (the carving cell by cell reads the counts).
-  void start_from_hull() {
-    solid_cells_at_.assign(sample_count_, 0);
-    outside_cells_at_.assign(sample_count_, 0);
-    for (auto cell : Traits::finite_cells(triangulation_)) {
-      bool all_samples = true;
-      for (int i = 0; i <= D; ++i) all_samples = all_samples && is_sample(cell->vertex(i));
-      outside_[cell->info()] = !all_samples;
-      for (int i = 0; i <= D; ++i) {
-        if (!is_sample(cell->vertex(i))) continue;
-        ++(all_samples ? solid_cells_at_ : outside_cells_at_)[cell->vertex(i)->info()];
-      }
-    }
-  }
 
   // The flood's start: the cells outside the hull, marked so, and returned: the infinite ones
   // and those with a box corner among their vertices. Found around the corners, the hull's
@@ -233,80 +162,6 @@ class Manifold_carving {
       }
     }
     return outside;
-  }
-
-  int outside_facets(Cell_handle cell, int opposite[]) const {
-    int k = 0;
-    for (int i = 0; i <= D; ++i) {
-      if (is_outside(cell->neighbor(i))) opposite[k++] = i;
-    }
-    return k;
-  }
-
-  bool vertex_on_surface(Vertex_handle v) const { return outside_cells_at_[v->info()] > 0; }
-
-  bool edge_on_surface(Cell_handle cell, int i, int j) const {
-    return any_cell_around_edge<Traits>(triangulation_, cell, i, j,
-                                        [&](Cell_handle c) { return is_outside(c); });
-  }
-
-  // Boissonnat's condition, and no sample left off the solid.
-  bool can_remove(Cell_handle cell) const {
-    for (int i = 0; i <= D; ++i) {
-      if (solid_cells_at_[cell->vertex(i)->info()] <= 1) return false;
-    }
-    int opposite[D + 1];
-    const int k = outside_facets(cell, opposite);
-    if (k == 0) return false;
-    if (k >= D) return true;
-    if (k == 1) return !vertex_on_surface(cell->vertex(opposite[0]));
-    return !edge_on_surface(cell, opposite[0], opposite[1]);  // k = 2 in 3D
-  }
-
-  void set_outside(Cell_handle cell, bool outside) {
-    outside_[cell->info()] = outside;
-    const int change = outside ? 1 : -1;
-    for (int i = 0; i <= D; ++i) {
-      const int s = cell->vertex(i)->info();
-      solid_cells_at_[s] -= change;
-      outside_cells_at_[s] += change;
-    }
-  }
-
-  void remove(Cell_handle cell, Carve_reason reason) {
-    set_outside(cell, true);
-    record_removal(cell, reason);
-  }
-
-  // The events name cells of the first triangulation: kept with its cells (the viewer, the
-  // tests), only counted without them (the command line: 40 MB on a 1M-point torus).
-  void record_removal(Cell_handle cell, Carve_reason reason) {
-    ++removed_;
-    if (result_.options.keep_triangulations)
-      result_.carving.events.push_back({cell->info(), reason});
-    if (!stamp_.empty()) stamp_around(cell);
-  }
-
-  // A removal stamps the cell's vertices: a vertex's stamp moves whenever a cell around it
-  // changes. That is all a vertex's manifold test (manifold_at) and its count of solid cells read
-  // (the neighbour across a facet at v is around v too); a punch at a cell reads the cell's
-  // neighbours, each sharing all but one of its vertices, and the cells around one of its
-  // vertices or edges.
-  void stamp_around(Cell_handle cell) {
-    ++tick_;
-    for (int i = 0; i <= D; ++i) stamp_[cell->vertex(i)->info()] = tick_;
-  }
-  bool unchanged_since(Vertex_handle v, std::uint32_t tick) const {
-    return stamp_[v->info()] <= tick;
-  }
-
-  // A cell is queued at most once at a time: a removal next to a queued cell changes what its
-  // pending entry will find, so a second entry would only be popped and tried again.
-  void push_if_outer(Cell_handle cell) {
-    if (!is_outside(cell) && judged_outer(cell) && !queued_[cell->info()]) {
-      queued_[cell->info()] = 1;
-      queue_.push({radius2(cell), cell->info(), cell});
-    }
   }
 
   void carve_outer_cells() {
@@ -492,434 +347,6 @@ class Manifold_carving {
     return true;
   }
 
-  void carve_queue() {
-    while (!queue_.empty()) {
-      const Cell_handle cell = queue_.top().cell;
-      queue_.pop();
-      queued_[cell->info()] = 0;
-      if (is_outside(cell) || !can_remove(cell)) continue;
-      remove(cell, judged_reason(cell));
-      for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
-    }
-  }
-
-  // The surface is a 2-manifold at a vertex when its facets around the vertex form one fan:
-  // 3D, the link edges (the facets' sides opposite v) make one cycle; 2D, two edges meet at v.
-  // A vertex on no facet passes.
-  bool manifold_at(Vertex_handle v) {
-    star_.clear();
-    Traits::incident_cells(triangulation_, v, star_);
-    link_.clear();
-    for (Cell_handle cell : star_) {
-      if (is_outside(cell)) continue;
-      const int at = cell->index(v);
-      for (int i = 0; i <= D; ++i) {
-        if (i == at || !is_outside(cell->neighbor(i))) continue;
-        std::array<int, 2> edge{-1, -1};
-        for (int j = 0, k = 0; j <= D; ++j) {
-          if (j != at && j != i) edge[k++] = cell->vertex(j)->info();
-        }
-        link_.push_back(edge);
-      }
-    }
-    if (link_.empty()) return true;
-    if constexpr (D == 2) {
-      return link_.size() == 2;
-    } else {
-      // One cycle: every link vertex has degree 2, and walking from one edge visits them all.
-      auto& ends = link_ends_;
-      ends.clear();
-      for (const auto& e : link_) {
-        ends.push_back({e[0], e[1]});
-        ends.push_back({e[1], e[0]});
-      }
-      std::sort(ends.begin(), ends.end());
-      for (std::size_t i = 0; i < ends.size(); i += 2) {
-        if (i + 1 >= ends.size() || ends[i].first != ends[i + 1].first) return false;
-        if (i + 2 < ends.size() && ends[i + 2].first == ends[i].first) return false;
-      }
-      const auto next = [&](int at, int from) {
-        const auto it = std::lower_bound(ends.begin(), ends.end(), std::make_pair(at, INT_MIN));
-        return it->second == from ? (it + 1)->second : it->second;
-      };
-      const int start = link_[0][0];
-      int previous = start, current = link_[0][1];
-      std::size_t length = 1;
-      while (current != start && length <= link_.size()) {
-        const int after = next(current, previous);
-        previous = current;
-        current = after;
-        ++length;
-      }
-      return length == link_.size();
-    }
-  }
-
-  // The judged-outer cells still in the solid (fewer with every removal).
-  const std::vector<Cell_handle>& outer_cells_left() {
-    outer_left_.erase(std::remove_if(outer_left_.begin(), outer_left_.end(),
-                                     [&](Cell_handle cell) { return is_outside(cell); }),
-                      outer_left_.end());
-    return outer_left_;
-  }
-
-  // The connected group of outer cells still in the solid that `start` belongs to, each marked
-  // with a new mark (returned); `enclosed` says whether none of them touches the outside.
-  int outer_group(Cell_handle start, std::vector<Cell_handle>& group, bool& enclosed) {
-    if (group_mark_.size() != outside_.size()) group_mark_.assign(outside_.size(), 0);
-    const int mark = ++group_counter_;
-    group.clear();
-    stack_.assign(1, start);
-    group_mark_[start->info()] = mark;
-    enclosed = true;
-    while (!stack_.empty()) {  // depth first: the order cells are tried and carved around
-      const Cell_handle cell = stack_.back();
-      stack_.pop_back();
-      group.push_back(cell);
-      for (int i = 0; i <= D; ++i) {
-        const Cell_handle neighbour = cell->neighbor(i);
-        if (is_outside(neighbour)) {
-          enclosed = false;
-          continue;
-        }
-        if (!judged_outer(neighbour) || group_mark_[neighbour->info()] == mark) continue;
-        group_mark_[neighbour->info()] = mark;
-        stack_.push_back(neighbour);
-      }
-    }
-    return mark;
-  }
-
-  // Carving from the outside never reaches a cavity: the hole of an annulus (2D), the inside of a
-  // hollow part. A group of outer cells enclosed by the solid is a cavity when most samples on it
-  // (at least half) have their outer pole inside it: the labelling saw the medial balls of a
-  // hollow there. A pocket left by a few mislabelled poles has few (femur: 5 of its samples, the
-  // annulus: all 60). The cavity is opened at the cell that is the outer pole of most samples;
-  // removing it makes a new boundary, a sphere (circle) around it, which is a manifold when none
-  // of its vertices is on the surface yet. Carving goes on from there.
-  void open_cavities() {
-    const int first_mark = group_counter_ + 1;
-    std::vector<Cell_handle> group;
-    std::vector<int> samples;
-    for (Cell_handle start : std::vector<Cell_handle>(outer_cells_left())) {
-      if (is_outside(start) || (!group_mark_.empty() && group_mark_[start->info()] >= first_mark)) {
-        continue;  // carved since, or in a group already seen
-      }
-      bool enclosed = false;
-      const int mark = outer_group(start, group, enclosed);
-      if (!enclosed) continue;
-      samples.clear();
-      Cell_handle opening = start;
-      for (Cell_handle cell : group) {
-        if (outer_pole_of(cell) > outer_pole_of(opening)) {
-          opening = cell;
-        }
-        for (int i = 0; i <= D; ++i) samples.push_back(cell->vertex(i)->info());
-      }
-      std::sort(samples.begin(), samples.end());
-      samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
-      std::size_t pointing = 0;
-      for (int s : samples) {
-        bool points_in = false;
-        for (int q : {result_.poles.positive_pole[s], result_.poles.negative_pole[s]}) {
-          if (q < 0 || result_.propagation.labels[q] != Label::outer) continue;
-          points_in = points_in || group_mark_[result_.poles.poles[q].cell] == mark;
-        }
-        pointing += points_in;
-      }
-      if (2 * pointing < samples.size()) continue;
-      bool clear = true;
-      for (int i = 0; i <= D && clear; ++i) {
-        const int s = opening->vertex(i)->info();
-        clear = outside_cells_at_[s] == 0 && solid_cells_at_[s] > 1;
-      }
-      if (!clear) continue;
-      remove(opening, judged_reason(opening));
-      for (int i = 0; i <= D; ++i) push_if_outer(opening->neighbor(i));
-      carve_queue();
-    }
-  }
-
-  // Sculpting by Boissonnat's condition never changes the topology of the solid: a torus stays
-  // filled, its hole a wall of outer cells that cannot be removed one at a time. Each connected
-  // group of outer cells still in the solid is tried as a whole: it goes if the surface stays a
-  // manifold at every vertex of the group and no sample leaves the solid.
-  void open_handles() {
-    std::vector<Cell_handle> group;
-    for (int round = 0; round < 4; ++round) {
-      bool opened = false;
-      const int first_mark = group_counter_ + 1;
-      for (Cell_handle start : std::vector<Cell_handle>(outer_cells_left())) {
-        if (is_outside(start) ||
-            (!group_mark_.empty() && group_mark_[start->info()] >= first_mark)) {
-          continue;
-        }
-        bool enclosed = false;
-        outer_group(start, group, enclosed);
-        opened = (!enclosed && try_remove_group(group)) || opened;
-      }
-      if (!opened) break;
-    }
-  }
-
-  // A web of outer cells spanning a loop of the shape (between the strands of a knot) has no free
-  // edge to carve from: its first removable cell is blocked by a vertex (or edge) already on the
-  // surface on the web's other side. Removing that cell together with the outer cells around the
-  // blocking vertex (edge) punches a hole through the web at once; it goes if the surface stays a
-  // manifold there, and Boissonnat's carving then widens the hole.
-  void punch_through() {
-    std::vector<Cell_handle> group;
-    for (int round = 0; round < 4; ++round) {
-      bool punched = false;
-      for (Cell_handle cell : std::vector<Cell_handle>(outer_cells_left())) {
-        if (is_outside(cell)) continue;
-        // Nothing changed around the cell (its faces, the cells at its vertices) and around the
-        // vertex that failed since this punch last failed: it would fail again, the same way.
-        const auto failed = failed_punches_.find(cell->info());
-        if (failed != failed_punches_.end()) {
-          bool unchanged = unchanged_since(failed->second.at, failed->second.tick);
-          for (int i = 0; i <= D; ++i)
-            unchanged = unchanged && unchanged_since(cell->vertex(i), failed->second.tick);
-          if (unchanged) continue;
-        }
-        int opposite[D + 1];
-        const int k = outside_facets(cell, opposite);
-        if (k == 0 || k >= D) continue;
-        group.assign(1, cell);
-        const auto add = [&](Cell_handle c) {
-          if (c != cell && !is_outside(c) && judged_outer(c)) group.push_back(c);
-        };
-        if (k == 1) {
-          star_.clear();
-          Traits::incident_cells(triangulation_, cell->vertex(opposite[0]), star_);
-          for (Cell_handle c : star_) add(c);
-        } else if constexpr (D == 3) {
-          const auto first = triangulation_.incident_cells(cell, opposite[0], opposite[1]);
-          auto c = first;
-          do add(c);
-          while (++c != first);
-        }
-        Vertex_handle failed_at{};
-        if (try_remove_group(group, &failed_at)) {
-          punched = true;
-        } else if (failed_at != Vertex_handle{}) {
-          failed_punches_[cell->info()] = {tick_, failed_at};
-        }
-      }
-      if (!punched) break;
-    }
-  }
-
-  // Whether removing `group` (already set outside) cut a small piece off the solid: a collapse
-  // never disconnects, a group removal can. From a solid neighbour of the group a search through
-  // the solid either grows past small_piece cells (whatever it is in is large: a real part), or
-  // stops short, a piece of its own: the only piece when it holds every neighbour (nothing was
-  // cut off), else a small piece cut off, refused unless the labelling says it is a part in its
-  // own right (piece_evidence.hpp: a separate curve, a small separate part). A neighbour inside a
-  // piece found before is in that piece, and a search reaching a large one is as large.
-  bool cuts_off_small_piece(const std::vector<Cell_handle>& group) {
-    enum : std::uint8_t { unreached = 0, in_this_search = 1, in_large_piece = 2, in_own_part = 3 };
-    std::vector<Cell_handle> neighbours;
-    for (Cell_handle cell : group) {
-      for (int i = 0; i <= D; ++i) {
-        if (!is_outside(cell->neighbor(i))) neighbours.push_back(cell->neighbor(i));
-      }
-    }
-    if (reached_.size() != outside_.size()) reached_.assign(outside_.size(), unreached);
-    large_pieces_.clear();
-    own_parts_.clear();
-    const auto search_small_piece = [&](Cell_handle from) {  // false: from is in a large piece
-      piece_.assign(1, from);
-      reached_[from->info()] = in_this_search;
-      for (std::size_t next = 0; next < piece_.size(); ++next) {
-        if (piece_.size() >= small_piece) return false;
-        for (int i = 0; i <= D; ++i) {
-          const Cell_handle neighbour = piece_[next]->neighbor(i);
-          if (is_outside(neighbour)) continue;
-          const std::uint8_t mark = reached_[neighbour->info()];
-          if (mark == in_large_piece) return false;
-          if (mark == in_this_search) continue;
-          reached_[neighbour->info()] = in_this_search;
-          piece_.push_back(neighbour);
-        }
-      }
-      return true;
-    };
-    bool cut = false;
-    for (Cell_handle from : neighbours) {
-      if (reached_[from->info()] != unreached) continue;
-      if (!search_small_piece(from)) {
-        for (Cell_handle cell : piece_) reached_[cell->info()] = in_large_piece;
-        large_pieces_.insert(large_pieces_.end(), piece_.begin(), piece_.end());
-        continue;
-      }
-      const bool whole = std::all_of(neighbours.begin(), neighbours.end(), [&](Cell_handle other) {
-        return reached_[other->info()] == in_this_search;
-      });
-      if (whole) break;  // the only piece: nothing cut off
-      if (!is_part_of_its_own(piece_)) {
-        cut = true;
-        break;
-      }
-      for (Cell_handle cell : piece_) reached_[cell->info()] = in_own_part;
-      own_parts_.insert(own_parts_.end(), piece_.begin(), piece_.end());
-    }
-    // Only the cells searched carry marks: unmark them.
-    for (Cell_handle cell : piece_) reached_[cell->info()] = unreached;
-    for (Cell_handle cell : large_pieces_) reached_[cell->info()] = unreached;
-    for (Cell_handle cell : own_parts_) reached_[cell->info()] = unreached;
-    piece_.clear();
-    return cut;
-  }
-
-  // A small piece of the solid (its cells, marked in reached_ by the search that found them)
-  // that holds the inner poles of most of its samples.
-  bool is_part_of_its_own(const std::vector<Cell_handle>& piece) {
-    std::vector<int> samples;
-    for (Cell_handle cell : piece) {
-      for (int i = 0; i <= D; ++i) {
-        if (cell->vertex(i)->info() < sample_count_) samples.push_back(cell->vertex(i)->info());
-      }
-    }
-    std::sort(samples.begin(), samples.end());
-    samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
-    const std::uint8_t mark = reached_[piece.front()->info()];
-    return holds_inner_poles_of_most(result_, samples,
-                                     [&](std::size_t cell) { return reached_[cell] == mark; });
-  }
-
-  // `failed_at`, when given, is set to the vertex whose test failed (left alone when the group
-  // would cut a piece off).
-  bool try_remove_group(const std::vector<Cell_handle>& group, Vertex_handle* failed_at = nullptr) {
-    // Callers pass groups that touch the outside (pockets inside the solid are cavities' business).
-    for (Cell_handle cell : group) set_outside(cell, true);
-    // Each vertex of the group once: the cells around a vertex all share it (punch_through's
-    // groups), and a vertex's test walks all its cells.
-    group_vertices_.clear();
-    for (Cell_handle cell : group) {
-      for (int i = 0; i <= D; ++i) group_vertices_.push_back(cell->vertex(i));
-    }
-    std::sort(group_vertices_.begin(), group_vertices_.end());
-    group_vertices_.erase(std::unique(group_vertices_.begin(), group_vertices_.end()),
-                          group_vertices_.end());
-    bool fine = true;
-    for (std::size_t j = 0; j < group_vertices_.size() && fine; ++j) {
-      const Vertex_handle v = group_vertices_[j];
-      fine = solid_cells_at_[v->info()] > 0 && manifold_at(v);
-      if (!fine && failed_at) *failed_at = v;
-    }
-    if (fine) fine = !cuts_off_small_piece(group);
-    if (!fine) {
-      for (Cell_handle cell : group) set_outside(cell, false);
-      return false;
-    }
-    for (Cell_handle cell : group) record_removal(cell, judged_reason(cell));
-    // Removing the group can make Boissonnat's condition hold for outer cells next to it.
-    for (Cell_handle cell : group) {
-      for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
-    }
-    carve_queue();
-    return true;
-  }
-
-  bool buried(int sample) const {
-    return solid_cells_at_[sample] > 0 && outside_cells_at_[sample] == 0;
-  }
-
-  void expose_buried_samples() {
-    std::vector<Vertex_handle> waiting;
-    for (auto v : Traits::finite_vertices(triangulation_)) {
-      if (is_sample(v) && buried(v->info())) waiting.push_back(v);
-    }
-    // A removal can make a deeper sample reachable: a few rounds, while they help.
-    for (int round = 0; round < 8 && !waiting.empty(); ++round) {
-      std::vector<Vertex_handle> still;
-      for (Vertex_handle v : waiting) {
-        if (!buried(v->info())) continue;
-        star_.clear();
-        Traits::incident_cells(triangulation_, v, star_);
-        Cell_handle best{};
-        float best_radius2 = -1;
-        for (Cell_handle cell : star_) {
-          if (triangulation_.is_infinite(cell) || is_outside(cell) || !can_remove(cell)) continue;
-          const float r2 = radius2(cell);
-          if (r2 > best_radius2) {
-            best = cell;
-            best_radius2 = r2;
-          }
-        }
-        if (best_radius2 >= 0) {
-          remove(best, Carve_reason::exposes_sample);
-        } else if (!dig_to(v)) {
-          still.push_back(v);
-        }
-      }
-      if (still.size() == waiting.size()) break;
-      waiting.swap(still);
-    }
-  }
-
-  // A sample buried under the surface by more than one cell (under a nearly flat quad whose
-  // other diagonal won, up to a spacing or so deep): no cell of its own touches the outside.
-  // A short path of solid cells from the outside down to one of them, each removable when the
-  // one before it is gone, is removed whole (each step a collapse, by Boissonnat's condition:
-  // the topology stays, the surface dents down to the sample); a path that stops is put back.
-  // Paths are searched breadth first from the sample's cells, at most dig_depth cells long.
-  static constexpr int dig_depth = 6;
-  bool dig_to(Vertex_handle v) {
-    star_.clear();
-    Traits::incident_cells(triangulation_, v, star_);
-    // Breadth first through solid cells: each cell found, with the index of the one it was
-    // reached from (-1: a cell of the sample).
-    std::vector<std::pair<Cell_handle, int>> found;
-    std::unordered_set<int> seen;
-    for (Cell_handle cell : star_) {
-      if (triangulation_.is_infinite(cell) || is_outside(cell)) continue;
-      seen.insert(cell->info());
-      found.push_back({cell, -1});
-    }
-    std::size_t level_begin = 0;
-    for (int depth = 1; depth <= dig_depth; ++depth) {
-      const std::size_t level_end = found.size();
-      for (std::size_t f = level_begin; f < level_end; ++f) {
-        Cell_handle cell = found[f].first;
-        if (depth > 1 && outside_facets_count(cell) > 0 && try_path(found, static_cast<int>(f)))
-          return true;
-        if (depth == dig_depth) continue;
-        for (int i = 0; i <= D; ++i) {
-          Cell_handle next = cell->neighbor(i);
-          if (triangulation_.is_infinite(next) || is_outside(next)) continue;
-          if (seen.insert(next->info()).second) found.push_back({next, static_cast<int>(f)});
-        }
-      }
-      level_begin = level_end;
-    }
-    return false;
-  }
-
-  int outside_facets_count(Cell_handle cell) const {
-    int opposite[D + 1];
-    return outside_facets(cell, opposite);
-  }
-
-  // Removes the path from found[last] (on the surface) back to a cell of the sample, each cell
-  // removable in turn; or nothing.
-  bool try_path(const std::vector<std::pair<Cell_handle, int>>& found, int last) {
-    std::vector<Cell_handle> path;
-    for (int f = last; f >= 0; f = found[f].second) path.push_back(found[f].first);
-    std::size_t done = 0;
-    for (; done < path.size(); ++done) {
-      if (!can_remove(path[done])) break;
-      set_outside(path[done], true);
-    }
-    if (done == path.size()) {
-      for (Cell_handle cell : path) record_removal(cell, Carve_reason::exposes_sample);
-      return true;
-    }
-    while (done > 0) set_outside(path[--done], false);
-    return false;
-  }
-
   void record_what_stayed() {
     for (Cell_handle cell : outer_cells_left())
       result_.carving.kept_outer_cells.push_back(cell->info());
@@ -928,39 +355,7 @@ class Manifold_carving {
     }
   }
 
-  const Triangulation& triangulation_;
-  Reconstruction<D>& result_;
-  const Cell_judge<Traits>& judge_;
-  const Stage_clock& clock_;
-  int sample_count_;
-  std::vector<std::uint8_t> outside_;
-  std::vector<std::uint8_t> queued_;  // per cell: an entry of it is in the queue
-  std::size_t removed_ = 0;           // cells removed (the events, when they are kept)
-  double reported_ = 0;               // the carving's progress so far
-  // Per sample (counted by start_from_hull, not by a flood): incident cells still in the solid,
-  // and outside.
-  std::vector<int> solid_cells_at_;
-  std::vector<int> outside_cells_at_;
-  std::priority_queue<Entry> queue_;
-  std::vector<Cell_handle> star_, piece_, large_pieces_, own_parts_;
-  std::vector<Vertex_handle> group_vertices_;
-  // The change stamps (stamp_around), per site; empty in the flood, which needs none.
-  std::vector<std::uint32_t> stamp_;
-  std::uint32_t tick_ = 0;
-  // Per outer cell whose punch failed at a vertex's test: the stamp then, and the vertex.
-  struct Failed_punch {
-    std::uint32_t tick;
-    Vertex_handle at;
-  };
-  std::unordered_map<int, Failed_punch> failed_punches_;
   std::optional<Skin_check> checked_skin_;  // the flood's skin, when it passed the check
-  std::vector<std::uint8_t> reached_;       // per cell: reached by a search of cuts_off_small_piece
-  std::vector<std::array<int, 2>> link_;
-  std::vector<std::pair<int, int>> link_ends_;
-  std::vector<Cell_handle> outer_left_;  // judged outer and in the solid after the first carve
-  std::vector<Cell_handle> stack_;
-  std::vector<int> group_mark_;  // per cell: the outer group that last reached it
-  int group_counter_ = 0;
 };
 
 }  // namespace sculpt

@@ -1,0 +1,356 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The robust method's carving (manifold_carving.hpp) changes the solid's topology only here.
+// Removing one cell at a time by Boissonnat's condition (carved_solid.hpp) never does: a torus
+// stays filled, its hole a wall of outer cells that cannot be removed one at a time, and a
+// cavity is never reached from the outside. Three steps remove outer cells several at once:
+//   - a cavity, a group of outer cells enclosed by the solid, is opened at one cell when most
+//     samples on it have their outer pole inside it;
+//   - a group of outer cells that touches the outside is removed whole (a handle opens);
+//   - a web of outer cells with no free edge to carve from is punched through at a cell and the
+//     outer cells around the vertex or edge that blocks it.
+// Each goes only where the surface stays a 2-manifold at every vertex it touches, no sample
+// leaves the solid and no small piece of the solid is cut off that is not a part of its own.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <sculpt/sculpt.hpp>
+#include <unordered_map>
+#include <vector>
+
+#include "buried_samples.hpp"
+#include "piece_evidence.hpp"
+
+namespace sculpt {
+
+template <class Traits>
+class Solid_openings : public Buried_samples<Traits> {
+ public:
+  using Buried_samples<Traits>::Buried_samples;
+
+ protected:
+  using Base = Buried_samples<Traits>;
+  static constexpr int D = Traits::dimension;
+  using Base::carve_queue;
+  using Base::is_outside;
+  using Base::judged_outer;
+  using Base::judged_reason;
+  using Base::manifold_at;
+  using Base::outside_;
+  using Base::outside_cells_at_;
+  using Base::outside_facets;
+  using Base::push_if_outer;
+  using Base::record_removal;
+  using Base::remove;
+  using Base::result_;
+  using Base::sample_count_;
+  using Base::set_outside;
+  using Base::solid_cells_at_;
+  using Base::star_;
+  using Base::tick_;
+  using Base::triangulation_;
+  using Base::unchanged_since;
+  using typename Base::Cell_handle;
+  using typename Base::Vertex_handle;
+
+  // A group removal must not cut off a piece of the solid with fewer cells.
+  static constexpr std::size_t small_piece = 256;
+
+  // How many samples have this cell as their outer pole: a sample's poles are cells around it,
+  // so only the cell's own vertices can.
+  int outer_pole_of(Cell_handle cell) const {
+    int count = 0;
+    for (int i = 0; i <= D; ++i) {
+      const int s = cell->vertex(i)->info();
+      if (s >= sample_count_) continue;
+      for (int q : {result_.poles.positive_pole[s], result_.poles.negative_pole[s]}) {
+        count += q >= 0 && result_.propagation.labels[q] == Label::outer &&
+                 static_cast<int>(result_.poles.poles[q].cell) == cell->info();
+      }
+    }
+    return count;
+  }
+
+  // The judged-outer cells still in the solid (fewer with every removal).
+  const std::vector<Cell_handle>& outer_cells_left() {
+    outer_left_.erase(std::remove_if(outer_left_.begin(), outer_left_.end(),
+                                     [&](Cell_handle cell) { return is_outside(cell); }),
+                      outer_left_.end());
+    return outer_left_;
+  }
+
+  // The connected group of outer cells still in the solid that `start` belongs to, each marked
+  // with a new mark (returned); `enclosed` says whether none of them touches the outside.
+  int outer_group(Cell_handle start, std::vector<Cell_handle>& group, bool& enclosed) {
+    if (group_mark_.size() != outside_.size()) group_mark_.assign(outside_.size(), 0);
+    const int mark = ++group_counter_;
+    group.clear();
+    stack_.assign(1, start);
+    group_mark_[start->info()] = mark;
+    enclosed = true;
+    while (!stack_.empty()) {  // depth first: the order cells are tried and carved around
+      const Cell_handle cell = stack_.back();
+      stack_.pop_back();
+      group.push_back(cell);
+      for (int i = 0; i <= D; ++i) {
+        const Cell_handle neighbour = cell->neighbor(i);
+        if (is_outside(neighbour)) {
+          enclosed = false;
+          continue;
+        }
+        if (!judged_outer(neighbour) || group_mark_[neighbour->info()] == mark) continue;
+        group_mark_[neighbour->info()] = mark;
+        stack_.push_back(neighbour);
+      }
+    }
+    return mark;
+  }
+
+  // Carving from the outside never reaches a cavity: the hole of an annulus (2D), the inside of a
+  // hollow part. A group of outer cells enclosed by the solid is a cavity when most samples on it
+  // (at least half) have their outer pole inside it: the labelling saw the medial balls of a
+  // hollow there. A pocket left by a few mislabelled poles has few (femur: 5 of its samples, the
+  // annulus: all 60). The cavity is opened at the cell that is the outer pole of most samples;
+  // removing it makes a new boundary, a sphere (circle) around it, which is a manifold when none
+  // of its vertices is on the surface yet. Carving goes on from there.
+  void open_cavities() {
+    const int first_mark = group_counter_ + 1;
+    std::vector<Cell_handle> group;
+    std::vector<int> samples;
+    for (Cell_handle start : std::vector<Cell_handle>(outer_cells_left())) {
+      if (is_outside(start) || (!group_mark_.empty() && group_mark_[start->info()] >= first_mark)) {
+        continue;  // carved since, or in a group already seen
+      }
+      bool enclosed = false;
+      const int mark = outer_group(start, group, enclosed);
+      if (!enclosed) continue;
+      samples.clear();
+      Cell_handle opening = start;
+      for (Cell_handle cell : group) {
+        if (outer_pole_of(cell) > outer_pole_of(opening)) {
+          opening = cell;
+        }
+        for (int i = 0; i <= D; ++i) samples.push_back(cell->vertex(i)->info());
+      }
+      std::sort(samples.begin(), samples.end());
+      samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
+      std::size_t pointing = 0;
+      for (int s : samples) {
+        bool points_in = false;
+        for (int q : {result_.poles.positive_pole[s], result_.poles.negative_pole[s]}) {
+          if (q < 0 || result_.propagation.labels[q] != Label::outer) continue;
+          points_in = points_in || group_mark_[result_.poles.poles[q].cell] == mark;
+        }
+        pointing += points_in;
+      }
+      if (2 * pointing < samples.size()) continue;
+      bool clear = true;
+      for (int i = 0; i <= D && clear; ++i) {
+        const int s = opening->vertex(i)->info();
+        clear = outside_cells_at_[s] == 0 && solid_cells_at_[s] > 1;
+      }
+      if (!clear) continue;
+      remove(opening, judged_reason(opening));
+      for (int i = 0; i <= D; ++i) push_if_outer(opening->neighbor(i));
+      carve_queue();
+    }
+  }
+
+  // Sculpting by Boissonnat's condition never changes the topology of the solid: a torus stays
+  // filled, its hole a wall of outer cells that cannot be removed one at a time. Each connected
+  // group of outer cells still in the solid is tried as a whole: it goes if the surface stays a
+  // manifold at every vertex of the group and no sample leaves the solid.
+  void open_handles() {
+    std::vector<Cell_handle> group;
+    for (int round = 0; round < 4; ++round) {
+      bool opened = false;
+      const int first_mark = group_counter_ + 1;
+      for (Cell_handle start : std::vector<Cell_handle>(outer_cells_left())) {
+        if (is_outside(start) ||
+            (!group_mark_.empty() && group_mark_[start->info()] >= first_mark)) {
+          continue;
+        }
+        bool enclosed = false;
+        outer_group(start, group, enclosed);
+        opened = (!enclosed && try_remove_group(group)) || opened;
+      }
+      if (!opened) break;
+    }
+  }
+
+  // A web of outer cells spanning a loop of the shape (between the strands of a knot) has no free
+  // edge to carve from: its first removable cell is blocked by a vertex (or edge) already on the
+  // surface on the web's other side. Removing that cell together with the outer cells around the
+  // blocking vertex (edge) punches a hole through the web at once; it goes if the surface stays a
+  // manifold there, and Boissonnat's carving then widens the hole.
+  void punch_through() {
+    std::vector<Cell_handle> group;
+    for (int round = 0; round < 4; ++round) {
+      bool punched = false;
+      for (Cell_handle cell : std::vector<Cell_handle>(outer_cells_left())) {
+        if (is_outside(cell)) continue;
+        // Nothing changed around the cell (its faces, the cells at its vertices) and around the
+        // vertex that failed since this punch last failed: it would fail again, the same way.
+        const auto failed = failed_punches_.find(cell->info());
+        if (failed != failed_punches_.end()) {
+          bool unchanged = unchanged_since(failed->second.at, failed->second.tick);
+          for (int i = 0; i <= D; ++i)
+            unchanged = unchanged && unchanged_since(cell->vertex(i), failed->second.tick);
+          if (unchanged) continue;
+        }
+        int opposite[D + 1];
+        const int k = outside_facets(cell, opposite);
+        if (k == 0 || k >= D) continue;
+        group.assign(1, cell);
+        const auto add = [&](Cell_handle c) {
+          if (c != cell && !is_outside(c) && judged_outer(c)) group.push_back(c);
+        };
+        if (k == 1) {
+          star_.clear();
+          Traits::incident_cells(triangulation_, cell->vertex(opposite[0]), star_);
+          for (Cell_handle c : star_) add(c);
+        } else if constexpr (D == 3) {
+          const auto first = triangulation_.incident_cells(cell, opposite[0], opposite[1]);
+          auto c = first;
+          do add(c);
+          while (++c != first);
+        }
+        Vertex_handle failed_at{};
+        if (try_remove_group(group, &failed_at)) {
+          punched = true;
+        } else if (failed_at != Vertex_handle{}) {
+          failed_punches_[cell->info()] = {tick_, failed_at};
+        }
+      }
+      if (!punched) break;
+    }
+  }
+
+  // Whether removing `group` (already set outside) cut a small piece off the solid: a collapse
+  // never disconnects, a group removal can. From a solid neighbour of the group a search through
+  // the solid either grows past small_piece cells (whatever it is in is large: a real part), or
+  // stops short, a piece of its own: the only piece when it holds every neighbour (nothing was
+  // cut off), else a small piece cut off, refused unless the labelling says it is a part in its
+  // own right (piece_evidence.hpp: a separate curve, a small separate part). A neighbour inside a
+  // piece found before is in that piece, and a search reaching a large one is as large.
+  bool cuts_off_small_piece(const std::vector<Cell_handle>& group) {
+    enum : std::uint8_t { unreached = 0, in_this_search = 1, in_large_piece = 2, in_own_part = 3 };
+    std::vector<Cell_handle> neighbours;
+    for (Cell_handle cell : group) {
+      for (int i = 0; i <= D; ++i) {
+        if (!is_outside(cell->neighbor(i))) neighbours.push_back(cell->neighbor(i));
+      }
+    }
+    if (reached_.size() != outside_.size()) reached_.assign(outside_.size(), unreached);
+    large_pieces_.clear();
+    own_parts_.clear();
+    const auto search_small_piece = [&](Cell_handle from) {  // false: from is in a large piece
+      piece_.assign(1, from);
+      reached_[from->info()] = in_this_search;
+      for (std::size_t next = 0; next < piece_.size(); ++next) {
+        if (piece_.size() >= small_piece) return false;
+        for (int i = 0; i <= D; ++i) {
+          const Cell_handle neighbour = piece_[next]->neighbor(i);
+          if (is_outside(neighbour)) continue;
+          const std::uint8_t mark = reached_[neighbour->info()];
+          if (mark == in_large_piece) return false;
+          if (mark == in_this_search) continue;
+          reached_[neighbour->info()] = in_this_search;
+          piece_.push_back(neighbour);
+        }
+      }
+      return true;
+    };
+    bool cut = false;
+    for (Cell_handle from : neighbours) {
+      if (reached_[from->info()] != unreached) continue;
+      if (!search_small_piece(from)) {
+        for (Cell_handle cell : piece_) reached_[cell->info()] = in_large_piece;
+        large_pieces_.insert(large_pieces_.end(), piece_.begin(), piece_.end());
+        continue;
+      }
+      const bool whole = std::all_of(neighbours.begin(), neighbours.end(), [&](Cell_handle other) {
+        return reached_[other->info()] == in_this_search;
+      });
+      if (whole) break;  // the only piece: nothing cut off
+      if (!is_part_of_its_own(piece_)) {
+        cut = true;
+        break;
+      }
+      for (Cell_handle cell : piece_) reached_[cell->info()] = in_own_part;
+      own_parts_.insert(own_parts_.end(), piece_.begin(), piece_.end());
+    }
+    // Only the cells searched carry marks: unmark them.
+    for (Cell_handle cell : piece_) reached_[cell->info()] = unreached;
+    for (Cell_handle cell : large_pieces_) reached_[cell->info()] = unreached;
+    for (Cell_handle cell : own_parts_) reached_[cell->info()] = unreached;
+    piece_.clear();
+    return cut;
+  }
+
+  // A small piece of the solid (its cells, marked in reached_ by the search that found them)
+  // that holds the inner poles of most of its samples.
+  bool is_part_of_its_own(const std::vector<Cell_handle>& piece) {
+    std::vector<int> samples;
+    for (Cell_handle cell : piece) {
+      for (int i = 0; i <= D; ++i) {
+        if (cell->vertex(i)->info() < sample_count_) samples.push_back(cell->vertex(i)->info());
+      }
+    }
+    std::sort(samples.begin(), samples.end());
+    samples.erase(std::unique(samples.begin(), samples.end()), samples.end());
+    const std::uint8_t mark = reached_[piece.front()->info()];
+    return holds_inner_poles_of_most(result_, samples,
+                                     [&](std::size_t cell) { return reached_[cell] == mark; });
+  }
+
+  // `failed_at`, when given, is set to the vertex whose test failed (left alone when the group
+  // would cut a piece off).
+  bool try_remove_group(const std::vector<Cell_handle>& group, Vertex_handle* failed_at = nullptr) {
+    // Callers pass groups that touch the outside (pockets inside the solid are cavities' business).
+    for (Cell_handle cell : group) set_outside(cell, true);
+    // Each vertex of the group once: the cells around a vertex all share it (punch_through's
+    // groups), and a vertex's test walks all its cells.
+    group_vertices_.clear();
+    for (Cell_handle cell : group) {
+      for (int i = 0; i <= D; ++i) group_vertices_.push_back(cell->vertex(i));
+    }
+    std::sort(group_vertices_.begin(), group_vertices_.end());
+    group_vertices_.erase(std::unique(group_vertices_.begin(), group_vertices_.end()),
+                          group_vertices_.end());
+    bool fine = true;
+    for (std::size_t j = 0; j < group_vertices_.size() && fine; ++j) {
+      const Vertex_handle v = group_vertices_[j];
+      fine = solid_cells_at_[v->info()] > 0 && manifold_at(v);
+      if (!fine && failed_at) *failed_at = v;
+    }
+    if (fine) fine = !cuts_off_small_piece(group);
+    if (!fine) {
+      for (Cell_handle cell : group) set_outside(cell, false);
+      return false;
+    }
+    for (Cell_handle cell : group) record_removal(cell, judged_reason(cell));
+    // Removing the group can make Boissonnat's condition hold for outer cells next to it.
+    for (Cell_handle cell : group) {
+      for (int i = 0; i <= D; ++i) push_if_outer(cell->neighbor(i));
+    }
+    carve_queue();
+    return true;
+  }
+
+  std::vector<Cell_handle> piece_, large_pieces_, own_parts_;
+  std::vector<Vertex_handle> group_vertices_;
+  // Per outer cell whose punch failed at a vertex's test: the stamp then, and the vertex.
+  struct Failed_punch {
+    std::uint32_t tick;
+    Vertex_handle at;
+  };
+  std::unordered_map<int, Failed_punch> failed_punches_;
+  std::vector<std::uint8_t> reached_;    // per cell: reached by a search of cuts_off_small_piece
+  std::vector<Cell_handle> outer_left_;  // judged outer and in the solid after the first carve
+  std::vector<Cell_handle> stack_;
+  std::vector<int> group_mark_;  // per cell: the outer group that last reached it
+  int group_counter_ = 0;
+};
+
+}  // namespace sculpt
