@@ -276,6 +276,26 @@ struct Carve_event {
   Carve_reason reason;
 };
 
+/// How the robust carving removed several cells at once (methods/robust/solid_openings.hpp).
+enum class Opening_kind : std::uint8_t {
+  cavity,  ///< a cavity (a group of outer cells enclosed by the solid) opened at one cell
+  group,   ///< a group of outer cells touching the outside, removed whole
+  punch,   ///< a web of outer cells punched through around the vertex or edge that blocked it
+};
+
+/// A removal of several cells at once, the only removals of the robust carving that can change
+/// the solid's topology (one cell removed by Boissonnat's condition never does). Its cells are
+/// events[first_event, first_event + cells) (with the events kept).
+struct Carving_opening {
+  std::uint64_t first_event = 0;
+  std::uint32_t cells = 0;
+  Opening_kind kind = Opening_kind::group;
+  /// The change of the solid's Euler characteristic (vertices - edges + faces - cells of the
+  /// cells left): 3D, -1 a handle opened (the surface's genus one more), +1 a cavity or a piece
+  /// of its own (one more surface); 2D, -1 a hole (one more curve); 0 the topology kept.
+  std::int32_t euler_change = 0;
+};
+
 struct Carving_stage {
   /// Removed cells, in order: largest circumball first, or in the order a flood that stood met
   /// them (Statistics::carved_by_flood). The robust method keeps them with the triangulations'
@@ -284,6 +304,9 @@ struct Carving_stage {
   /// Judged outer but kept: removing them breaks the manifold (after a flood, not looked for).
   std::vector<int> kept_outer_cells;
   std::vector<int> buried_samples;  ///< samples left inside the solid, on no surface facet
+  /// The removals of several cells at once, in order (after a flood that stood, none: the flood
+  /// set the topology at once).
+  std::vector<Carving_opening> openings;
 };
 
 /// The crust's own stage (method crust): the Voronoi vertices V of the samples (the circumcentres
@@ -364,6 +387,7 @@ struct Statistics {
   std::size_t conflict_offers = 0;   ///< offers of the other label (several per pole)
   std::size_t carved_cells = 0;      ///< robust: all-sample cells removed from the hull
   std::size_t kept_outer_cells = 0;  ///< robust: judged outer, kept so the surface stays manifold
+  std::size_t carved_handles = 0;    ///< robust, 3D: handles its openings opened (sum of -euler_change)
   bool carved_by_flood = false;      ///< robust: the outer cells went in one flood (the shortcut);
                                      ///< kept_outer_cells is then not counted (0)
   std::size_t inserted_poles = 0;    ///< m (closed) or l (bordered), without the box corners
@@ -551,6 +575,7 @@ double hausdorff_distance(const std::vector<Point<3>>& a_points, const std::vect
 
 const char* to_string(Method method);
 const char* to_string(Carve_reason reason);
+const char* to_string(Opening_kind kind);
 const char* to_string(Label label);
 const char* to_string(Label_reason reason);
 const char* to_string(Surface_rule rule);

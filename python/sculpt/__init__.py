@@ -19,6 +19,7 @@ Reconstruction runs without the GIL; progress(stage, fraction) may return False 
 
 from ._sculpt import (
     CARVE_REASONS,
+    OPENING_KINDS,
     DEFAULT_METHOD,
     LABEL_REASONS,
     LABELS,
@@ -46,6 +47,7 @@ __version__ = version()
 
 __all__ = [
     "CARVE_REASONS",
+    "OPENING_KINDS",
     "DEFAULT_METHOD",
     "LABEL_REASONS",
     "LABELS",

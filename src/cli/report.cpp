@@ -71,6 +71,9 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     } else {
       row("carved cells", stats.carved_cells);
       row("outer cells kept (manifold)", stats.kept_outer_cells);
+      if (stats.method == Method::robust)
+        row(stats.dimension == 3 ? "handles opened (webs removed)" : "holes opened",
+            stats.carved_handles);
     }
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);

@@ -144,6 +144,18 @@ const char* to_string(Carve_reason reason) {
   return "?";
 }
 
+const char* to_string(Opening_kind kind) {
+  switch (kind) {
+    case Opening_kind::cavity:
+      return "a cavity opened";
+    case Opening_kind::group:
+      return "a group of outer cells removed whole";
+    case Opening_kind::punch:
+      return "a web of outer cells punched through";
+  }
+  return "?";
+}
+
 bool parse_rule(const std::string& name, Surface_rule& rule) {
   if (name == "auto" || name == "automatic") {
     rule = Surface_rule::automatic;

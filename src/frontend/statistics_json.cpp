@@ -45,6 +45,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"conflict_offers", stats.conflict_offers},
       {"carved_cells", stats.carved_cells},
       {"kept_outer_cells", stats.kept_outer_cells},
+      {"carved_handles", stats.carved_handles},
       {"carved_by_flood", stats.carved_by_flood},
       {"inserted_poles", stats.inserted_poles},
       {"delaunay_cells", stats.delaunay_cells},

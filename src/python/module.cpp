@@ -357,7 +357,11 @@ insertion          inserted_poles: the poles inserted into DT (paper method: OUP
 sculpted_delaunay  cells, cell_count: DT(S + OUP) (paper method)
 carving            events: records (cell, reason) of the cells of delaunay removed (robust
                    method, with keep_triangulations; reason codes: CARVE_REASONS);
-                   kept_outer_cells (not counted after a flood); buried_samples
+                   kept_outer_cells (not counted after a flood); buried_samples; openings:
+                   records (first_event, cells, kind, euler_change), the removals of several
+                   cells at once, the only ones that can change the solid's topology (kind
+                   codes: OPENING_KINDS; euler_change of the solid: 3D -1 a handle opened, +1 a
+                   cavity; 2D -1 a hole); stats['carved_handles'] sums the handles (holes)
 crust              voronoi_vertices (v, d), cells, cell_count: DT(S + V) of the crust, whose
                    sites are the samples then the Voronoi vertices
 candidates         chosen, pruned (k, d): the facets the crust or co-cone chose, those pruned;
@@ -427,6 +431,7 @@ PYBIND11_MODULE(_sculpt, m) {
   m.attr("LABELS") = names_of<Label>(3);
   m.attr("LABEL_REASONS") = names_of<Label_reason>(4);
   m.attr("CARVE_REASONS") = names_of<Carve_reason>(4);
+  m.attr("OPENING_KINDS") = names_of<Opening_kind>(3);
   m.attr("DEFAULT_METHOD") = to_string(Options{}.method);
 
   m.def("version", &sculpt::version, "Sculpt's version, e.g. '0.1.0'.");

@@ -83,6 +83,17 @@ inline py::dtype carve_event_type() {
                      sizeof(Carve_event));
 }
 
+// The carving's openings (methods/robust/solid_openings.hpp): first_event, cells, kind,
+// euler_change.
+inline py::dtype carving_opening_type() {
+  static_assert(sizeof(Opening_kind) == 1);
+  return record_type({{"first_event", "u8", offsetof(Carving_opening, first_event)},
+                      {"cells", "u4", offsetof(Carving_opening, cells)},
+                      {"kind", "u1", offsetof(Carving_opening, kind)},
+                      {"euler_change", "i4", offsetof(Carving_opening, euler_change)}},
+                     sizeof(Carving_opening));
+}
+
 // Thin handles (core/thin_handles.hpp): the loop of 3 samples (then -1) or 4, width over spacing.
 inline py::dtype thin_handle_type() {
   return record_type({{"loop", "(4,)i4", offsetof(Thin_handle, loop)},
@@ -169,6 +180,8 @@ py::dict stage_objects(py::handle owner, const Reconstruction<D>& r) {
     carving["events"] = read_only_view(owner, c.events.data(), c.events.size(), carve_event_type());
     carving["kept_outer_cells"] = values_view(owner, c.kept_outer_cells);
     carving["buried_samples"] = values_view(owner, c.buried_samples);
+    carving["openings"] =
+        read_only_view(owner, c.openings.data(), c.openings.size(), carving_opening_type());
     stages["carving"] = stage_object(carving);
   }
   {

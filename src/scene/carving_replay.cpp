@@ -68,18 +68,32 @@ void steps_by_poles(const Reconstruction<D>& r, const std::vector<int>& leaving,
   }
 }
 
-// The robust method's carving and Boissonnat's removal: their own order, one cell a step.
+// The robust method's carving and Boissonnat's removal: their own order, one cell a step, or one
+// opening (several cells removed at once) a step.
 void steps_by_carving(const Carving_stage& carving, std::vector<int> leaving,
                       Carving_replay& replay) {
   std::sort(leaving.begin(), leaving.end());
   std::vector<bool> taken(leaving.size(), false);
-  for (const Carve_event& event : carving.events) {
+  std::size_t next_opening = 0;
+  for (std::size_t e = 0; e < carving.events.size(); ++e) {
+    const Carve_event& event = carving.events[e];
     const auto at = std::lower_bound(leaving.begin(), leaving.end(), event.cell);
     if (at == leaving.end() || *at != event.cell || taken[at - leaving.begin()]) continue;
     taken[at - leaving.begin()] = true;
+    while (next_opening < carving.openings.size() &&
+           carving.openings[next_opening].first_event + carving.openings[next_opening].cells <= e)
+      ++next_opening;
+    const bool in_opening =
+        next_opening < carving.openings.size() && carving.openings[next_opening].first_event <= e;
+    if (in_opening && !replay.steps.empty() &&
+        replay.steps.back().opening == static_cast<int>(next_opening)) {
+      replay.steps.back().cells.push_back(event.cell);
+      continue;
+    }
     Carving_step step;
     step.cells = {event.cell};
     step.reason = event.reason;
+    if (in_opening) step.opening = static_cast<int>(next_opening);
     replay.steps.push_back(std::move(step));
   }
   Carving_step rest;  // not in the record (none is expected): they leave last, together
@@ -223,7 +237,8 @@ Carving_moment moment_of(const Carving_replay& replay, std::size_t cell_count, l
   return moment;
 }
 
-std::string describe_step(const Carving_replay& replay, std::size_t step, int dimension) {
+std::string describe_step(const Carving_replay& replay, std::size_t step, int dimension,
+                          const Carving_stage& carving) {
   const Carving_step& s = replay.steps.at(step);
   const std::string cells = dimension == 2 ? "triangle" : "tetrahedron";
   const std::string plural = dimension == 2 ? "triangles" : "tetrahedra";
@@ -234,6 +249,19 @@ std::string describe_step(const Carving_replay& replay, std::size_t step, int di
   if (replay.by_poles)
     return at + (s.pole < 0 ? count + " on a circumsphere's edge, taken last"
                             : "a pole destroys " + count);
+  if (s.opening >= 0) {
+    const Carving_opening& opening = carving.openings.at(std::size_t(s.opening));
+    const int change = opening.euler_change;
+    const std::string what =
+        change == 0 ? "the topology stays"
+        : dimension == 3
+            ? (change < 0
+                   ? (change == -1 ? "a handle opens" : std::to_string(-change) + " handles open")
+                   : "a cavity or a piece of its own opens")
+            : (change < 0 ? "a hole opens" : "a piece of its own opens");
+    return at + to_string(opening.kind) + ", " + count + (s.cells.size() == 1 ? "" : " at once") +
+           ": " + what;
+  }
   if (s.cells.size() != 1) return at + count + " not in the record, taken last";
   return at + to_string(s.reason);
 }

@@ -7,7 +7,8 @@
 //    leave. Any order of insertion ends at the same DT(S ∪ OUP); the replay takes the order of
 //    the list (stage 5). The robust method's bordered surfaces insert poles the same way.
 //  - The robust method's carving and Boissonnat's removal take one cell per step, in the order
-//    they recorded it (stage 6b), each with its reason.
+//    they recorded it (stage 6b), each with its reason; a removal of several cells at once (an
+//    opening, the only kind of step that can change the topology) is one step.
 // The replay always ends at the solid: a hull cell not in the solid that no step took (a tie on
 // a circumsphere, in doubles) leaves at a last step of its own, and a solid cell never leaves.
 #pragma once
@@ -26,6 +27,9 @@ struct Carving_step {
   std::vector<int> cells;  // the cells that leave, indices into stage 1's cells
   int pole = -1;           // the pole inserted (an index into the poles), when poles are
   Carve_reason reason = Carve_reason::outer_pole_inside;  // when cells are carved
+  // The robust carving's removals of several cells at once (solid_openings.hpp) are one step
+  // each: the opening's index into Carving_stage::openings (-1: a cell removed on its own).
+  int opening = -1;
 };
 
 struct Carving_replay {
@@ -64,7 +68,9 @@ struct Carving_moment {
 Carving_moment moment_of(const Carving_replay& replay, std::size_t cell_count, long step);
 
 // A short line on a carving step, for titles and the viewer: "step 12 of 65: a pole destroys 2
-// triangles", "step 5 of 812: outer pole in its circumball".
-std::string describe_step(const Carving_replay& replay, std::size_t step, int dimension);
+// triangles", "step 5 of 812: outer pole in its circumball", "step 700 of 812: a web of outer
+// cells punched through, 7 tetrahedra at once: a handle opens".
+std::string describe_step(const Carving_replay& replay, std::size_t step, int dimension,
+                          const Carving_stage& carving);
 
 }  // namespace sculpt::scene

@@ -617,7 +617,7 @@ class Scene_builder {
     scene_.title = std::string(method) + ", " +
                    (shown == 0 ? "before any cell leaves: the hull's " +
                                      std::to_string(replay.hull.size()) + " cells"
-                               : describe_step(replay, shown - 1, D));
+                               : describe_step(replay, shown - 1, D, r_.carving));
     const auto cells = [](std::size_t count) {
       return "(" + std::to_string(count) +
              (count == 1 ? (D == 2 ? " triangle)" : " tetrahedron)")

@@ -256,8 +256,9 @@ class Section_builder {
           return 2;
       }
     };
-    scene_.title = "Section of the carving, " + (shown == 0 ? std::string("before any cell leaves")
-                                                            : describe_step(replay, shown - 1, 3));
+    scene_.title =
+        "Section of the carving, " + (shown == 0 ? std::string("before any cell leaves")
+                                                 : describe_step(replay, shown - 1, 3, r_.carving));
     const Cell<3>* first = r_.delaunay.cells.data();
     cells_by_kind(r_.delaunay.cells,
                   [&](const Cell<3>& cell) { return kind_of(moment.states[&cell - first]); });

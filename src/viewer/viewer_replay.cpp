@@ -141,7 +141,7 @@ void Viewer::draw_propagation_controls() {
                                     ": a candidate pruned";
           if (shown == 0) return "before any cell leaves";
           return scene::describe_step(*scene::shared_carving_replay(r), std::size_t(shown - 1),
-                                      r.dimension);
+                                      r.dimension, r.carving);
         },
         *reconstruction_);
     ImGui::PushTextWrapPos(0.0f);

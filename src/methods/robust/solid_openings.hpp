@@ -13,11 +13,15 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <sculpt/sculpt.hpp>
+#include <set>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
+#include "../../core/cells_around_edge.hpp"
 #include "buried_samples.hpp"
 #include "piece_evidence.hpp"
 
@@ -42,6 +46,7 @@ class Solid_openings : public Buried_samples<Traits> {
   using Base::push_if_outer;
   using Base::record_removal;
   using Base::remove;
+  using Base::removed_;
   using Base::result_;
   using Base::sample_count_;
   using Base::set_outside;
@@ -150,7 +155,9 @@ class Solid_openings : public Buried_samples<Traits> {
         clear = outside_cells_at_[s] == 0 && solid_cells_at_[s] > 1;
       }
       if (!clear) continue;
-      remove(opening, judged_reason(opening));
+      set_outside(opening, true);
+      record_opening({opening}, Opening_kind::cavity);
+      record_removal(opening, judged_reason(opening));
       for (int i = 0; i <= D; ++i) push_if_outer(opening->neighbor(i));
       carve_queue();
     }
@@ -172,7 +179,7 @@ class Solid_openings : public Buried_samples<Traits> {
         }
         bool enclosed = false;
         outer_group(start, group, enclosed);
-        opened = (!enclosed && try_remove_group(group)) || opened;
+        opened = (!enclosed && try_remove_group(group, Opening_kind::group)) || opened;
       }
       if (!opened) break;
     }
@@ -216,7 +223,7 @@ class Solid_openings : public Buried_samples<Traits> {
           while (++c != first);
         }
         Vertex_handle failed_at{};
-        if (try_remove_group(group, &failed_at)) {
+        if (try_remove_group(group, Opening_kind::punch, &failed_at)) {
           punched = true;
         } else if (failed_at != Vertex_handle{}) {
           failed_punches_[cell->info()] = {tick_, failed_at};
@@ -306,7 +313,8 @@ class Solid_openings : public Buried_samples<Traits> {
 
   // `failed_at`, when given, is set to the vertex whose test failed (left alone when the group
   // would cut a piece off).
-  bool try_remove_group(const std::vector<Cell_handle>& group, Vertex_handle* failed_at = nullptr) {
+  bool try_remove_group(const std::vector<Cell_handle>& group, Opening_kind kind,
+                        Vertex_handle* failed_at = nullptr) {
     // Callers pass groups that touch the outside (pockets inside the solid are cavities' business).
     for (Cell_handle cell : group) set_outside(cell, true);
     // Each vertex of the group once: the cells around a vertex all share it (punch_through's
@@ -329,6 +337,7 @@ class Solid_openings : public Buried_samples<Traits> {
       for (Cell_handle cell : group) set_outside(cell, false);
       return false;
     }
+    record_opening(group, kind);
     for (Cell_handle cell : group) record_removal(cell, judged_reason(cell));
     // Removing the group can make Boissonnat's condition hold for outer cells next to it.
     for (Cell_handle cell : group) {
@@ -336,6 +345,55 @@ class Solid_openings : public Buried_samples<Traits> {
     }
     carve_queue();
     return true;
+  }
+
+  // An opening (`cells`, already outside, not yet recorded as removed) and the change it made
+  // to the solid's topology.
+  void record_opening(const std::vector<Cell_handle>& cells, Opening_kind kind) {
+    Carving_opening opening;
+    opening.first_event = removed_;
+    opening.cells = static_cast<std::uint32_t>(cells.size());
+    opening.kind = kind;
+    opening.euler_change = euler_change_of_removal(cells);
+    result_.carving.openings.push_back(opening);
+    if (opening.euler_change < 0)
+      result_.stats.carved_handles += std::size_t(-opening.euler_change);
+  }
+
+  // The change of the solid's Euler characteristic (vertices - edges + faces - cells, in 3D)
+  // when `cells` (already outside) left it: minus the alternating count of their faces that no
+  // solid cell holds any more. Counted around the cells only: a few tests per cell.
+  int euler_change_of_removal(const std::vector<Cell_handle>& cells) const {
+    std::set<int> vertices;
+    std::set<std::pair<int, int>> edges;  // 3D: the edges; in 2D the facets are the edges
+    std::set<std::array<int, D>> facets;
+    const auto solid = [&](Cell_handle cell) { return !is_outside(cell); };
+    for (Cell_handle cell : cells) {
+      for (int i = 0; i <= D; ++i) {
+        const int v = cell->vertex(i)->info();
+        if (solid_cells_at_[v] == 0) vertices.insert(v);
+        if (is_outside(cell->neighbor(i))) {
+          std::array<int, D> facet;
+          for (int j = 0, k = 0; j <= D; ++j) {
+            if (j != i) facet[k++] = cell->vertex(j)->info();
+          }
+          std::sort(facet.begin(), facet.end());
+          facets.insert(facet);
+        }
+        if constexpr (D == 3) {
+          for (int j = i + 1; j <= D; ++j) {
+            if (any_cell_around_edge<Traits>(triangulation_, cell, i, j, solid)) continue;
+            const int a = cell->vertex(i)->info(), b = cell->vertex(j)->info();
+            edges.insert({std::min(a, b), std::max(a, b)});
+          }
+        }
+      }
+    }
+    const long cells_gone = static_cast<long>(cells.size());
+    const long alternating =
+        D == 3 ? long(vertices.size()) - long(edges.size()) + long(facets.size()) - cells_gone
+               : long(vertices.size()) - long(facets.size()) + cells_gone;
+    return static_cast<int>(-alternating);
   }
 
   std::vector<Cell_handle> piece_, large_pieces_, own_parts_;
