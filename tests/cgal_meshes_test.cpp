@@ -126,7 +126,10 @@ TEST(Cgal_meshes, PaperMethodOnBunnyAndKnot) {
 }
 
 // The robust method: a closed manifold of the mesh's own Euler characteristic, one piece, every
-// sample on it, on every model that is sampled well enough for one to exist.
+// sample on it, on every model that is sampled well enough for one to exist. homer, bull and
+// handle are among the hardest: parts that touch (an arm on the body, a leg on a leg) leave webs
+// of outer cells one sample thin, which the carving once punched through into handles the
+// models have not (genus 4, 2 and 2).
 class Robust_closed : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(Robust_closed, IsTheMeshsTopology) {
@@ -139,7 +142,8 @@ TEST_P(Robust_closed, IsTheMeshsTopology) {
 INSTANTIATE_TEST_SUITE_P(Meshes, Robust_closed,
                          ::testing::Values("knot1.off", "fandisk.off", "bunny00.off",
                                            "elephant.off", "refined_elephant.off", "armadillo.off",
-                                           "hand.off", "oblong.off"));
+                                           "hand.off", "oblong.off", "homer.off", "bull.off",
+                                           "handle.off"));
 
 // oblong.off (422 samples of a rounded bar, coarse and uneven) leaves one sample buried under its
 // surface: a nearly flat quad over it took the diagonal that passes above it, more than one cell

@@ -825,7 +825,7 @@ TEST(Viewer, TheShippedLessonRuns) {
 // The lesson on comparing methods runs too, side by side included (what its narration claims
 // of each method is tested in lesson_claims_test.cpp).
 TEST(Viewer, TheComparingLessonRuns) {
-  EXPECT_EQ(run_lesson("comparing"), 7);
+  EXPECT_EQ(run_lesson("comparing"), 8);
 }
 
 // Another model is framed afresh; another method on the same points keeps the camera.

@@ -307,6 +307,9 @@ struct Carving_stage {
   /// The removals of several cells at once, in order (after a flood that stood, none: the flood
   /// set the topology at once).
   std::vector<Carving_opening> openings;
+  /// Cells of stage 1 where a punch through a web was refused because it would open a handle (a
+  /// tunnel one sample wide: methods/robust/solid_openings.hpp); the web stayed around them.
+  std::vector<int> refused_handles;
 };
 
 /// The crust's own stage (method crust): the Voronoi vertices V of the samples (the circumcentres
@@ -387,7 +390,8 @@ struct Statistics {
   std::size_t conflict_offers = 0;   ///< offers of the other label (several per pole)
   std::size_t carved_cells = 0;      ///< robust: all-sample cells removed from the hull
   std::size_t kept_outer_cells = 0;  ///< robust: judged outer, kept so the surface stays manifold
-  std::size_t carved_handles = 0;    ///< robust, 3D: handles its openings opened (sum of -euler_change)
+  std::size_t carved_handles = 0;    ///< robust: handles (2D: holes) its openings opened
+  std::size_t refused_handles = 0;   ///< robust: punches refused as they would open a handle
   bool carved_by_flood = false;      ///< robust: the outer cells went in one flood (the shortcut);
                                      ///< kept_outer_cells is then not counted (0)
   std::size_t inserted_poles = 0;    ///< m (closed) or l (bordered), without the box corners

@@ -74,6 +74,9 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
       if (stats.method == Method::robust)
         row(stats.dimension == 3 ? "handles opened (webs removed)" : "holes opened",
             stats.carved_handles);
+      if (stats.method == Method::robust && stats.refused_handles > 0)
+        row(stats.dimension == 3 ? "handles refused (one sample wide)" : "holes refused",
+            stats.refused_handles);
     }
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);

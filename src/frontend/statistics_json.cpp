@@ -46,6 +46,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"carved_cells", stats.carved_cells},
       {"kept_outer_cells", stats.kept_outer_cells},
       {"carved_handles", stats.carved_handles},
+      {"refused_handles", stats.refused_handles},
       {"carved_by_flood", stats.carved_by_flood},
       {"inserted_poles", stats.inserted_poles},
       {"delaunay_cells", stats.delaunay_cells},

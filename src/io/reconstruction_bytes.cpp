@@ -13,7 +13,7 @@ namespace {
 
 // "SCRB" and a version: bytes of another layout are refused, not misread.
 constexpr std::uint32_t magic = 0x42524353;
-constexpr std::uint32_t format_version = 3;  // 2: the front and alpha stages; 3: openings
+constexpr std::uint32_t format_version = 3;  // 2: the front and alpha stages; 3: openings, refused handles
 
 class Byte_writer {
  public:
@@ -88,10 +88,10 @@ class Byte_reader {
 // A field added to these structures must be added to the lists below: their sizes on the two
 // machines the project builds for (x86-64, WebAssembly) are checked, so that the compiler says so.
 constexpr bool wasm32 = sizeof(void*) == 4;
-static_assert(sizeof(Statistics) == (wasm32 ? 280 : 456),
+static_assert(sizeof(Statistics) == (wasm32 ? 280 : 464),
               "a statistic to carry: statistics_fields");
 static_assert(sizeof(Options) == (wasm32 ? 72 : 80), "an option to carry: options_fields");
-static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 776 : 1376), "a stage to carry: stage_fields");
+static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 784 : 1408), "a stage to carry: stage_fields");
 
 // One list of every field, read or written by the same code: a field cannot be written and then
 // forgotten when read. `io` is a Byte_writer (fields const) or a Byte_reader.
@@ -133,6 +133,7 @@ void statistics_fields(Io& io, Statistics_ref& s) {
   io.value(s.carved_cells);
   io.value(s.kept_outer_cells);
   io.value(s.carved_handles);
+  io.value(s.refused_handles);
   io.value(s.carved_by_flood);
   io.value(s.inserted_poles);
   io.value(s.delaunay_cells);
@@ -189,6 +190,7 @@ void stage_fields(Io& io, Reconstruction_ref& r) {
   io.values(r.carving.kept_outer_cells);
   io.values(r.carving.buried_samples);
   io.values(r.carving.openings);
+  io.values(r.carving.refused_handles);
   io.values(r.crust.voronoi_vertices);
   io.value(r.crust.delaunay.cell_count);
   io.values(r.crust.delaunay.cells);

@@ -361,7 +361,9 @@ carving            events: records (cell, reason) of the cells of delaunay remov
                    records (first_event, cells, kind, euler_change), the removals of several
                    cells at once, the only ones that can change the solid's topology (kind
                    codes: OPENING_KINDS; euler_change of the solid: 3D -1 a handle opened, +1 a
-                   cavity; 2D -1 a hole); stats['carved_handles'] sums the handles (holes)
+                   cavity; 2D -1 a hole); stats['carved_handles'] sums the handles (holes);
+                   refused_handles: cells of delaunay where a punch through a web was refused
+                   as it would open a handle one sample wide (stats['refused_handles'])
 crust              voronoi_vertices (v, d), cells, cell_count: DT(S + V) of the crust, whose
                    sites are the samples then the Voronoi vertices
 candidates         chosen, pruned (k, d): the facets the crust or co-cone chose, those pruned;

@@ -182,6 +182,7 @@ py::dict stage_objects(py::handle owner, const Reconstruction<D>& r) {
     carving["buried_samples"] = values_view(owner, c.buried_samples);
     carving["openings"] =
         read_only_view(owner, c.openings.data(), c.openings.size(), carving_opening_type());
+    carving["refused_handles"] = values_view(owner, c.refused_handles);
     stages["carving"] = stage_object(carving);
   }
   {

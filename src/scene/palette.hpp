@@ -63,6 +63,9 @@ inline constexpr Color non_manifold{0.90f, 0.00f, 0.00f};
 inline constexpr Color opening{0.55f, 0.30f, 0.85f};
 // A handle thinner than the samples' spacing: a loop the sampling cannot vouch for.
 inline constexpr Color thin_handle{0.00f, 0.75f, 0.80f};
+// Where the carving refused to punch a handle through a web one sample thin: wine, apart from
+// the borders' orange and the defects' red.
+inline constexpr Color refused_handle{0.55f, 0.00f, 0.30f};
 // Samples an interpolating result leaves off.
 inline constexpr Color unused_sample{0.10f, 0.10f, 0.55f};
 // The curve a built-in 2D example was sampled from (the viewer's ground truth), light under all.

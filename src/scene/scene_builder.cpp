@@ -13,6 +13,7 @@
 #include "core/facet_orientation.hpp"
 #include "cut_cells.hpp"
 #include "growth_stages.hpp"
+#include "handle_layers.hpp"
 #include "layer_helpers.hpp"
 #include "palette.hpp"
 #include "scene.hpp"
@@ -859,25 +860,7 @@ class Scene_builder {
       }
     }
     unused_samples();
-    thin_handles();
-  }
-
-  // The loops around (or through) the handles thinner than the samples' spacing: where the
-  // genus is a guess the sampling cannot check (core/thin_handles.hpp).
-  void thin_handles() {
-    const auto& handles = r_.thin_handles;
-    if (handles.empty()) return;
-    Layer& layer =
-        add("thin-handles",
-            "suspect handles, thinner than the spacing (" + std::to_string(handles.size()) + ")",
-            Primitive::lines, palette::thin_handle, 4.0f);
-    for (const auto& handle : handles) {
-      const int k = handle.loop[3] < 0 ? 3 : 4;
-      for (int j = 0; j < k; ++j) {
-        layer.positions.push_back(vec(r_.surface_points()[handle.loop[j]]));
-        layer.positions.push_back(vec(r_.surface_points()[handle.loop[(j + 1) % k]]));
-      }
-    }
+    add_handle_layers<D>(layers_, r_, [&](const Point<D>& p) { return vec(p); });
   }
 
   // The samples the result leaves out: an interpolating reconstruction should pass through

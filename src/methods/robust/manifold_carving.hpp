@@ -28,6 +28,8 @@
 #include <cstdint>
 #include <optional>
 #include <sculpt/sculpt.hpp>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "../../core/closed_skin_check.hpp"
@@ -63,6 +65,7 @@ class Manifold_carving : public Solid_openings<Traits> {
   using Base::push_if_outer;
   using Base::queued_;
   using Base::record_removal;
+  using Base::refused_punches_;
   using Base::removed_;
   using Base::report;
   using Base::result_;
@@ -353,6 +356,26 @@ class Manifold_carving : public Solid_openings<Traits> {
     for (int s = 0; s < sample_count_; ++s) {
       if (buried(s)) result_.carving.buried_samples.push_back(s);
     }
+    // The refused punches still in the solid, and the webs they stayed in: punches at cells
+    // that share a sample are tries at one web (from its cells around one blocking vertex).
+    std::vector<std::pair<int, Cell_handle>> refused;
+    for (const auto& [number, cell] : refused_punches_) {
+      if (!outside_[number]) refused.emplace_back(number, cell);
+    }
+    std::sort(refused.begin(), refused.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    Union_find webs(refused.size());
+    std::unordered_map<int, std::size_t> first_with_sample;
+    for (std::size_t i = 0; i < refused.size(); ++i) {
+      result_.carving.refused_handles.push_back(refused[i].first);
+      for (int k = 0; k <= D; ++k) {
+        const auto [at, fresh] = first_with_sample.emplace(refused[i].second->vertex(k)->info(), i);
+        if (!fresh) webs.unite(at->second, i);
+      }
+    }
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < refused.size(); ++i) count += webs.find(i) == i;
+    result_.stats.refused_handles = count;
   }
 
   std::optional<Skin_check> checked_skin_;  // the flood's skin, when it passed the check
