@@ -446,6 +446,24 @@ TEST(Automatic_kind, BorderLoopsAreOpeningsOnlyWhereTheClosedResultCappedThem) {
   EXPECT_FALSE(keeps_bordered<3>(closed, 1000, bordered));
   bordered.unused_samples = 0;
   EXPECT_TRUE(keeps_bordered<3>(closed, 1000, bordered));
+  // A surface with defects in more pieces than the closed one: each piece more is a defect (a
+  // shape torn apart, as CGAL's camel bordered: 5 pieces against 1).
+  closed.components = 1;
+  bordered.components = 2;
+  EXPECT_FALSE(keeps_bordered<3>(closed, 1000, bordered));  // 30 + 1 > 30 torn loops
+  bordered.torn_loops = 31;
+  bordered.boundary_loops = 33;
+  EXPECT_TRUE(keeps_bordered<3>(closed, 1000, bordered));
+  // Without defects, more pieces are sheets of their own (the closed attempt joined them); a
+  // curve's separate strokes likewise.
+  bordered.non_manifold_vertices = 0;
+  bordered.torn_loops = 0;
+  bordered.components = 5;
+  EXPECT_TRUE(keeps_bordered<3>(closed, 1000, bordered));
+  bordered.non_manifold_vertices = 2;
+  bordered.torn_loops = 2;
+  EXPECT_TRUE(keeps_bordered<2>(closed, 1000, bordered));
+  EXPECT_FALSE(keeps_bordered<3>(closed, 1000, bordered));
 }
 
 }  // namespace

@@ -69,6 +69,8 @@ void expect_round_trip(const std::vector<Point<D>>& points, Method method) {
   EXPECT_TRUE(same_values(copy.carving.events, original.carving.events));
   EXPECT_TRUE(same_values(copy.carving.kept_outer_cells, original.carving.kept_outer_cells));
   EXPECT_TRUE(same_values(copy.carving.buried_samples, original.carving.buried_samples));
+  EXPECT_TRUE(same_values(copy.carving.openings, original.carving.openings));
+  EXPECT_TRUE(same_values(copy.carving.refused_handles, original.carving.refused_handles));
   EXPECT_TRUE(same_values(copy.crust.voronoi_vertices, original.crust.voronoi_vertices));
   EXPECT_TRUE(same_values(copy.crust.delaunay.cells, original.crust.delaunay.cells));
   EXPECT_TRUE(same_values(copy.candidates.chosen, original.candidates.chosen));
@@ -126,6 +128,12 @@ TEST(ReconstructionBytes, StagesOnlyNoiseAndBordersFillComeBackToo) {
   paper.method = Method::paper;
   EXPECT_FALSE(reconstruct(noisy, paper).propagation.conflicts.empty());
   EXPECT_FALSE(reconstruct(noisy).propagation.conflicts.empty());
+  // The carving's openings and refused handles: the drilled block has both.
+  const auto block = shapes::example_points_3("drilled-block");
+  expect_round_trip<3>(block, Method::robust);
+  const auto carved = reconstruct(block);
+  EXPECT_FALSE(carved.carving.openings.empty());
+  EXPECT_FALSE(carved.carving.refused_handles.empty());
 }
 
 TEST(ReconstructionBytes, RefusesWhatIsNotAReconstruction) {

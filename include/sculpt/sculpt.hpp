@@ -287,13 +287,15 @@ enum class Opening_kind : std::uint8_t {
 /// the solid's topology (one cell removed by Boissonnat's condition never does). Its cells are
 /// events[first_event, first_event + cells) (with the events kept).
 struct Carving_opening {
-  std::uint64_t first_event = 0;
+  std::uint32_t first_event = 0;
   std::uint32_t cells = 0;
-  Opening_kind kind = Opening_kind::group;
   /// The change of the solid's Euler characteristic (vertices - edges + faces - cells of the
   /// cells left): 3D, -1 a handle opened (the surface's genus one more), +1 a cavity or a piece
-  /// of its own (one more surface); 2D, -1 a hole (one more curve); 0 the topology kept.
+  /// of its own (one more surface); 2D, -1 a hole (a cavity opened: one more curve); 0 the
+  /// topology kept.
   std::int32_t euler_change = 0;
+  Opening_kind kind = Opening_kind::group;
+  std::uint8_t unused[3] = {0, 0, 0};  ///< written as zeros with the rest (no padding)
 };
 
 struct Carving_stage {
@@ -390,10 +392,10 @@ struct Statistics {
   std::size_t conflict_offers = 0;   ///< offers of the other label (several per pole)
   std::size_t carved_cells = 0;      ///< robust: all-sample cells removed from the hull
   std::size_t kept_outer_cells = 0;  ///< robust: judged outer, kept so the surface stays manifold
-  std::size_t carved_handles = 0;    ///< robust: handles (2D: holes) its openings opened
-  std::size_t refused_handles = 0;   ///< robust: punches refused as they would open a handle
+  std::size_t carved_handles = 0;    ///< robust: handles (2D: holes) opened (not after a flood)
+  std::size_t refused_handles = 0;   ///< robust, 3D: webs kept where a punch would open a handle
   bool carved_by_flood = false;      ///< robust: the outer cells went in one flood (the shortcut);
-                                     ///< kept_outer_cells is then not counted (0)
+                                     ///< kept_outer_cells, carved_handles are then not counted (0)
   std::size_t inserted_poles = 0;    ///< m (closed) or l (bordered), without the box corners
   std::size_t delaunay_cells = 0;    ///< cells of DT(S ∪ BBV)
   std::size_t sculpted_cells = 0;    ///< cells of DT(S ∪ OUP); 0 when it was not built

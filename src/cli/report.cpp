@@ -75,8 +75,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
         row(stats.dimension == 3 ? "handles opened (webs removed)" : "holes opened",
             stats.carved_handles);
       if (stats.method == Method::robust && stats.refused_handles > 0)
-        row(stats.dimension == 3 ? "handles refused (one sample wide)" : "holes refused",
-            stats.refused_handles);
+        row("handles refused (one sample wide)", stats.refused_handles);
     }
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);

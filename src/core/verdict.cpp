@@ -79,6 +79,14 @@ Verdict verdict(const Statistics& s) {
           "touching the sampling cannot tell apart)",
           plural(s.thin_handles, "handle", "handles"));
     }
+    // Handles the robust carving refused (methods/robust/solid_openings.hpp): the surface spans
+    // a web there, across a gap or a touching, and the genus is the lower one.
+    if (s.refused_handles > 0) {
+      v.line += fmt::format(
+          "; {} refused: a web one sample thin kept (a gap or a touching the sampling cannot "
+          "tell apart)",
+          plural(s.refused_handles, "handle", "handles"));
+    }
   } else {
     v.line = fmt::format("NOT a {}: {}; {}", wanted, join(defects), shape);
   }

@@ -13,6 +13,7 @@
 //   least 2 facets spanning an opening per opening (1 on a curve),
 //   defects(R_bordered) < defects(R_closed) + those facets, and
 //   defects(R_bordered) <= defects(R_closed) + the loops noise tore in R_bordered; else R_closed
+//   (a surface R_bordered with defects counts each piece more than R_closed has as one more)
 //
 // defects = non-manifold ridges + non-manifold vertices + samples left off. A facet spanning an
 // opening counts as a defect of the closed result: a surface made up across missing data. A

@@ -93,11 +93,13 @@ std::string carving(Method method, Surface_kind kind, int dimension) {
   return "The robust method's carving step by step: from the outside in, one " + cell(dimension) +
          " at a time, each cell judged outer (an outer pole in its " + ball +
          ", or its centre in an outer ball's power cell) leaves when its removal keeps the "
-         "boundary a manifold, which never changes the topology. A " +
-         std::string(dimension == 2 ? "hole" : "handle") +
-         " opens only where a whole group of outer cells leaves in one step; a web one sample "
-         "thin is never punched through into one. Some cells leave last to expose a sample "
-         "buried in the solid.";
+         "boundary a manifold, which never changes the topology. " +
+         std::string(dimension == 2
+                         ? "A hole opens as a cavity: outer cells enclosed by the solid, opened "
+                           "at one cell in one step. "
+                         : "A handle opens only where a whole group of outer cells leaves in one "
+                           "step; a web one sample thin is never punched through into one. ") +
+         "Some cells leave last to expose a sample buried in the solid.";
 }
 
 std::string surface(Method method, Surface_kind kind, int dimension) {

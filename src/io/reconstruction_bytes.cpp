@@ -13,7 +13,8 @@ namespace {
 
 // "SCRB" and a version: bytes of another layout are refused, not misread.
 constexpr std::uint32_t magic = 0x42524353;
-constexpr std::uint32_t format_version = 3;  // 2: the front and alpha stages; 3: openings, refused handles
+constexpr std::uint32_t format_version =
+    3;  // 2: the front and alpha stages; 3: openings, refused handles
 
 class Byte_writer {
  public:
@@ -90,6 +91,8 @@ class Byte_reader {
 constexpr bool wasm32 = sizeof(void*) == 4;
 static_assert(sizeof(Statistics) == (wasm32 ? 280 : 464),
               "a statistic to carry: statistics_fields");
+// Written raw: no padding whose bytes would be undefined.
+static_assert(std::has_unique_object_representations_v<Carving_opening>);
 static_assert(sizeof(Options) == (wasm32 ? 72 : 80), "an option to carry: options_fields");
 static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 784 : 1408), "a stage to carry: stage_fields");
 

@@ -87,7 +87,8 @@ inline py::dtype carve_event_type() {
 // euler_change.
 inline py::dtype carving_opening_type() {
   static_assert(sizeof(Opening_kind) == 1);
-  return record_type({{"first_event", "u8", offsetof(Carving_opening, first_event)},
+  static_assert(std::has_unique_object_representations_v<Carving_opening>);  // no padding
+  return record_type({{"first_event", "u4", offsetof(Carving_opening, first_event)},
                       {"cells", "u4", offsetof(Carving_opening, cells)},
                       {"kind", "u1", offsetof(Carving_opening, kind)},
                       {"euler_change", "i4", offsetof(Carving_opening, euler_change)}},

@@ -32,22 +32,20 @@ void add_handle_layers(std::deque<Layer>& layers, const Reconstruction<D>& r, To
         }
       }
     }
-  }
-  // The cells are kept with the triangulations only.
-  const auto& refused = r.carving.refused_handles;
-  if (refused.empty() || r.delaunay.cells.size() != r.delaunay.cell_count) return;
-  const std::size_t webs = r.stats.refused_handles;
-  Layer& layer =
-      add_layer(layers, "refused-handles",
-                std::string(D == 3 ? "handles refused, one sample wide (" : "holes refused (") +
-                    std::to_string(webs) + ")",
-                Primitive::lines, palette::refused_handle, 3.0f);
-  for (int cell : refused) {
-    const auto& sites = r.delaunay.cells[std::size_t(cell)];
-    for (int i = 0; i <= D; ++i) {
-      for (int j = i + 1; j <= D; ++j) {
-        layer.positions.push_back(vec(r.sites[sites[i]]));
-        layer.positions.push_back(vec(r.sites[sites[j]]));
+    // The cells are kept with the triangulations only.
+    const auto& refused = r.carving.refused_handles;
+    if (refused.empty() || r.delaunay.cells.size() != r.delaunay.cell_count) return;
+    Layer& layer = add_layer(
+        layers, "refused-handles",
+        "handles refused, one sample wide (" + std::to_string(r.stats.refused_handles) + ")",
+        Primitive::lines, palette::refused_handle, 3.0f);
+    for (int cell : refused) {
+      const auto& sites = r.delaunay.cells[std::size_t(cell)];
+      for (int i = 0; i <= D; ++i) {
+        for (int j = i + 1; j <= D; ++j) {
+          layer.positions.push_back(vec(r.sites[sites[i]]));
+          layer.positions.push_back(vec(r.sites[sites[j]]));
+        }
       }
     }
   }

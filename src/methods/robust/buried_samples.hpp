@@ -85,7 +85,7 @@ class Buried_samples : public Carved_solid<Traits> {
     std::vector<std::pair<Cell_handle, int>> found;
     std::unordered_set<int> seen;
     for (Cell_handle cell : star_) {
-      if (triangulation_.is_infinite(cell) || is_outside(cell)) continue;
+      if (is_outside(cell)) continue;
       seen.insert(cell->info());
       found.push_back({cell, -1});
     }
@@ -99,7 +99,7 @@ class Buried_samples : public Carved_solid<Traits> {
         if (depth == dig_depth) continue;
         for (int i = 0; i <= D; ++i) {
           Cell_handle next = cell->neighbor(i);
-          if (triangulation_.is_infinite(next) || is_outside(next)) continue;
+          if (is_outside(next)) continue;
           if (seen.insert(next->info()).second) found.push_back({next, static_cast<int>(f)});
         }
       }

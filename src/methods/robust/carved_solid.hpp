@@ -248,7 +248,7 @@ class Carved_solid {
   // changes. That is all a vertex's manifold test (manifold_at) and its count of solid cells read
   // (the neighbour across a facet at v is around v too); a punch at a cell reads the cell's
   // neighbours, each sharing all but one of its vertices, and the cells around one of its
-  // vertices or edges.
+  // vertices or edges; its change of topology, the cells around every vertex of its group.
   void stamp_around(Cell_handle cell) {
     ++tick_;
     for (int i = 0; i <= D; ++i) stamp_[cell->vertex(i)->info()] = tick_;

@@ -35,7 +35,6 @@
 #include "../../core/closed_skin_check.hpp"
 #include "../../core/prefetch.hpp"
 #include "../../core/solid_and_skin.hpp"
-#include "../../core/stage_clock.hpp"
 #include "../../core/union_find.hpp"
 #include "cell_classification.hpp"
 #include "piece_evidence.hpp"
@@ -49,7 +48,6 @@ class Manifold_carving : public Solid_openings<Traits> {
   static constexpr int D = Traits::dimension;
   using Base::buried;
   using Base::carve_queue;
-  using Base::clock_;
   using Base::expose_buried_samples;
   using Base::is_outside;
   using Base::is_sample;
@@ -75,7 +73,6 @@ class Manifold_carving : public Solid_openings<Traits> {
   using Base::start_from_hull;
   using Base::triangulation_;
   using typename Base::Cell_handle;
-  using typename Base::Triangulation;
   using typename Base::Vertex_handle;
 
  public:

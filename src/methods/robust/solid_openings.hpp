@@ -45,7 +45,6 @@ class Solid_openings : public Buried_samples<Traits> {
   using Base::outside_facets;
   using Base::push_if_outer;
   using Base::record_removal;
-  using Base::remove;
   using Base::removed_;
   using Base::result_;
   using Base::sample_count_;
@@ -156,7 +155,7 @@ class Solid_openings : public Buried_samples<Traits> {
       }
       if (!clear) continue;
       set_outside(opening, true);
-      record_opening({opening}, Opening_kind::cavity);
+      record_opening({opening}, Opening_kind::cavity, euler_change_of_removal({opening}));
       record_removal(opening, judged_reason(opening));
       for (int i = 0; i <= D; ++i) push_if_outer(opening->neighbor(i));
       carve_queue();
@@ -191,7 +190,8 @@ class Solid_openings : public Buried_samples<Traits> {
   // blocking vertex (edge) punches a hole through the web at once; it goes if the surface stays a
   // manifold there, and Boissonnat's carving then widens the hole.
   //
-  // A punch never opens a handle (a hole, in 2D), though: the tunnel it would make is the star of
+  // A punch never opens a handle, though (in 2D a group that touches the outside cannot open a
+  // hole: holes open as cavities): the tunnel it would make is the star of
   // one vertex or edge, where the web is one sample thin, thinner than the samples can vouch for
   // (two limbs that touch, a noisy corner, a wall of a sparse CAD part). Handles open where a
   // whole group of outer cells goes at once (open_handles), a tunnel the poles see whole. The web
@@ -206,10 +206,12 @@ class Solid_openings : public Buried_samples<Traits> {
       for (Cell_handle cell : std::vector<Cell_handle>(outer_cells_left())) {
         if (is_outside(cell)) continue;
         // Nothing changed around the cell (its faces, the cells at its vertices) and around the
-        // vertex that failed since this punch last failed: it would fail again, the same way.
+        // vertices that failed since this punch last failed: it would fail again, the same way.
         const auto failed = failed_punches_.find(cell->info());
         if (failed != failed_punches_.end()) {
-          bool unchanged = unchanged_since(failed->second.at, failed->second.tick);
+          bool unchanged = true;
+          for (Vertex_handle v : failed->second.at)
+            unchanged = unchanged && unchanged_since(v, failed->second.tick);
           for (int i = 0; i <= D; ++i)
             unchanged = unchanged && unchanged_since(cell->vertex(i), failed->second.tick);
           if (unchanged) continue;
@@ -233,14 +235,18 @@ class Solid_openings : public Buried_samples<Traits> {
         }
         Vertex_handle failed_at{};
         bool opens_handle = false;
-        if (try_remove_group(group, Opening_kind::punch, &failed_at, &opens_handle)) {
+        const bool removed =
+            try_remove_group(group, Opening_kind::punch, &failed_at, &opens_handle);
+        if (!opens_handle) refused_punches_.erase(cell->info());
+        if (removed) {
           punched = true;
         } else if (opens_handle) {
-          // Tried again only once the cells around the blocking vertex (or edge) change.
+          // The change of topology reads the cells around every vertex of the group: tried again
+          // once one of them changes.
           refused_punches_.emplace(cell->info(), cell);
-          failed_punches_[cell->info()] = {tick_, cell->vertex(opposite[0])};
+          failed_punches_[cell->info()] = {tick_, group_vertices_};
         } else if (failed_at != Vertex_handle{}) {
-          failed_punches_[cell->info()] = {tick_, failed_at};
+          failed_punches_[cell->info()] = {tick_, {failed_at}};
         }
       }
       if (!punched) break;
@@ -348,7 +354,8 @@ class Solid_openings : public Buried_samples<Traits> {
       if (!fine && failed_at) *failed_at = v;
     }
     if (fine) fine = !cuts_off_small_piece(group);
-    if (fine && kind == Opening_kind::punch && euler_change_of_removal(group) < 0) {
+    const int change = fine ? euler_change_of_removal(group) : 0;
+    if (fine && kind == Opening_kind::punch && change < 0) {
       fine = false;
       if (opens_handle) *opens_handle = true;
     }
@@ -356,7 +363,7 @@ class Solid_openings : public Buried_samples<Traits> {
       for (Cell_handle cell : group) set_outside(cell, false);
       return false;
     }
-    record_opening(group, kind);
+    record_opening(group, kind, change);
     for (Cell_handle cell : group) record_removal(cell, judged_reason(cell));
     // Removing the group can make Boissonnat's condition hold for outer cells next to it.
     for (Cell_handle cell : group) {
@@ -367,13 +374,13 @@ class Solid_openings : public Buried_samples<Traits> {
   }
 
   // An opening (`cells`, already outside, not yet recorded as removed) and the change it made
-  // to the solid's topology.
-  void record_opening(const std::vector<Cell_handle>& cells, Opening_kind kind) {
+  // to the solid's Euler characteristic.
+  void record_opening(const std::vector<Cell_handle>& cells, Opening_kind kind, int change) {
     Carving_opening opening;
-    opening.first_event = removed_;
+    opening.first_event = static_cast<std::uint32_t>(removed_);
     opening.cells = static_cast<std::uint32_t>(cells.size());
     opening.kind = kind;
-    opening.euler_change = euler_change_of_removal(cells);
+    opening.euler_change = change;
     result_.carving.openings.push_back(opening);
     if (opening.euler_change < 0)
       result_.stats.carved_handles += std::size_t(-opening.euler_change);
@@ -420,10 +427,11 @@ class Solid_openings : public Buried_samples<Traits> {
   std::unordered_map<int, Cell_handle> refused_punches_;
   std::vector<Cell_handle> piece_, large_pieces_, own_parts_;
   std::vector<Vertex_handle> group_vertices_;
-  // Per outer cell whose punch failed at a vertex's test: the stamp then, and the vertex.
+  // Per outer cell whose punch failed: the stamp then, and the vertex whose test failed (or, for
+  // a punch refused as it would open a handle, every vertex of its group).
   struct Failed_punch {
     std::uint32_t tick;
-    Vertex_handle at;
+    std::vector<Vertex_handle> at;
   };
   std::unordered_map<int, Failed_punch> failed_punches_;
   std::vector<std::uint8_t> reached_;    // per cell: reached by a search of cuts_off_small_piece
