@@ -116,7 +116,7 @@ TEST(Cleaning, NoiseThatWouldCrumpleTheSurfaceIsSmoothedFirstAndSaidSo) {
   const auto crumpled = reconstruct(samples, as_given);
   // Through every noisy sample the surface is a crumple of spikes. It keeps the sphere's genus:
   // the handles the noise would open are webs one sample thin, which the carving refuses to
-  // punch through (it made genus 2 to 5 before that rule).
+  // punch through (before that rule this test asserted the genus was not the sphere's).
   EXPECT_EQ(crumpled.stats.euler_characteristic, 2);
   EXPECT_GT(crumpled.stats.refused_handles, 0u);
   EXPECT_FALSE(crumpled.stats.cleaned);
