@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <map>
 #include <random>
@@ -13,6 +12,7 @@
 #include <vector>
 
 #include "core/sample_noise.hpp"
+#include "methods/extraction/vector3.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -22,16 +22,12 @@ namespace {
 // How crumpled a closed surface is: 1 - cos of the angle between the normals of two triangles
 // on an edge, in the mean over its edges (0: flat everywhere).
 double mean_bend(const std::vector<Point<3>>& points, const std::vector<Facet<3>>& triangles) {
-  std::vector<std::array<double, 3>> normals;
+  using namespace extraction_detail;
+  std::vector<Vector> normals;
   for (const auto& t : triangles) {
-    const auto &a = points[t[0]], &b = points[t[1]], &c = points[t[2]];
-    const std::array<double, 3> u{b[0] - a[0], b[1] - a[1], b[2] - a[2]},
-        v{c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    std::array<double, 3> n{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                            u[0] * v[1] - u[1] * v[0]};
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    for (double& x : n) x /= length;
-    normals.push_back(n);
+    const Vector n = normal_of(points, t[0], t[1], t[2]);
+    const double length = std::sqrt(dot(n, n));
+    normals.push_back({n[0] / length, n[1] / length, n[2] / length});
   }
   std::map<std::pair<int, int>, std::vector<std::size_t>> on_edge;
   for (std::size_t i = 0; i < triangles.size(); ++i) {
@@ -44,8 +40,7 @@ double mean_bend(const std::vector<Point<3>>& points, const std::vector<Facet<3>
   std::size_t edges = 0;
   for (const auto& [edge, sides] : on_edge) {
     if (sides.size() != 2) continue;
-    const auto &n = normals[sides[0]], &m = normals[sides[1]];
-    sum += 1 - (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]);
+    sum += 1 - dot(normals[sides[0]], normals[sides[1]]);
     ++edges;
   }
   return edges == 0 ? 0 : sum / double(edges);

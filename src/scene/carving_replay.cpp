@@ -237,6 +237,17 @@ Carving_moment moment_of(const Carving_replay& replay, std::size_t cell_count, l
   return moment;
 }
 
+namespace {
+// An opening's change of the solid's Euler characteristic, in words.
+std::string what_it_did(int change, int dimension) {
+  if (change == 0) return "the topology stays";
+  if (change > 0)
+    return dimension == 3 ? "a cavity or a piece of its own opens" : "a piece of its own opens";
+  if (dimension == 2) return "a hole opens";
+  return change == -1 ? "a handle opens" : std::to_string(-change) + " handles open";
+}
+}  // namespace
+
 std::string describe_step(const Carving_replay& replay, std::size_t step, int dimension,
                           const Carving_stage& carving) {
   const Carving_step& s = replay.steps.at(step);
@@ -251,16 +262,8 @@ std::string describe_step(const Carving_replay& replay, std::size_t step, int di
                             : "a pole destroys " + count);
   if (s.opening >= 0) {
     const Carving_opening& opening = carving.openings.at(std::size_t(s.opening));
-    const int change = opening.euler_change;
-    const std::string what =
-        change == 0 ? "the topology stays"
-        : dimension == 3
-            ? (change < 0
-                   ? (change == -1 ? "a handle opens" : std::to_string(-change) + " handles open")
-                   : "a cavity or a piece of its own opens")
-            : (change < 0 ? "a hole opens" : "a piece of its own opens");
     return at + to_string(opening.kind) + ", " + count + (s.cells.size() == 1 ? "" : " at once") +
-           ": " + what;
+           ": " + what_it_did(opening.euler_change, dimension);
   }
   if (s.cells.size() != 1) return at + count + " not in the record, taken last";
   return at + to_string(s.reason);

@@ -24,10 +24,6 @@ std::string radius_text(double value) {
   return buffer;
 }
 
-Vec3 vec(const Point<3>& p) {
-  return {float(p[0]), float(p[1]), float(p[2])};
-}
-
 std::size_t shown_of(long step, std::size_t all) {
   return step < 0 ? all : std::min<std::size_t>(std::size_t(step), all);
 }

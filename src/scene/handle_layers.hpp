@@ -16,8 +16,8 @@
 
 namespace sculpt::scene {
 
-template <int D, class To_vec>
-void add_handle_layers(std::deque<Layer>& layers, const Reconstruction<D>& r, To_vec&& vec) {
+template <int D>
+void add_handle_layers(std::deque<Layer>& layers, const Reconstruction<D>& r) {
   if constexpr (D == 3) {
     if (!r.thin_handles.empty()) {
       Layer& layer = add_layer(layers, "thin-handles",

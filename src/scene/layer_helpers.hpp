@@ -4,6 +4,8 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
+#include <cstddef>
 #include <deque>
 #include <string>
 #include <vector>
@@ -11,6 +13,12 @@
 #include "scene/scene.hpp"
 
 namespace sculpt::scene {
+
+// A point of the samples as the renderer takes it (a 2D point in the plane z = 0).
+template <std::size_t N>
+Vec3 vec(const std::array<double, N>& p) {
+  return {float(p[0]), float(p[1]), N == 3 ? float(p[N - 1]) : 0.0f};
+}
 
 // A deque: references to its layers stay valid as more are added.
 inline Layer& add_layer(std::deque<Layer>& layers, const char* id, const std::string& label,

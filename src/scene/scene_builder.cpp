@@ -168,10 +168,6 @@ class Scene_builder {
     return std::find(request_.layers.begin(), request_.layers.end(), id) != request_.layers.end();
   }
 
-  static Vec3 vec(const Point<D>& p) {
-    return {float(p[0]), float(p[1]), D == 3 ? float(p[D - 1]) : 0.0f};
-  }
-
   Layer& add(const char* id, const std::string& label, Primitive primitive, Color color,
              float size) {
     return add_layer(layers_, id, label, primitive, color, size);
@@ -860,7 +856,7 @@ class Scene_builder {
       }
     }
     unused_samples();
-    add_handle_layers<D>(layers_, r_, [&](const Point<D>& p) { return vec(p); });
+    add_handle_layers(layers_, r_);
   }
 
   // The samples the result leaves out: an interpolating reconstruction should pass through

@@ -26,10 +26,6 @@ Vec3 crossing(const Vec3& p, const Vec3& q, float side_p, float side_q) {
   return along(p, q, side_p / (side_p - side_q));
 }
 
-Vec3 vec(const Point<3>& p) {
-  return {float(p[0]), float(p[1]), float(p[2])};
-}
-
 float distance(const Vec3& p, const Vec3& q) {
   return std::hypot(q[0] - p[0], q[1] - p[1], q[2] - p[2]);
 }

@@ -61,7 +61,7 @@ class Buried_samples : public Carved_solid<Traits> {
         }
         if (best_radius2 >= 0) {
           remove(best, Carve_reason::exposes_sample);
-        } else if (!dig_to(v)) {
+        } else if (!dig_to(star_)) {
           still.push_back(v);
         }
       }
@@ -76,15 +76,14 @@ class Buried_samples : public Carved_solid<Traits> {
   // one before it is gone, is removed whole (each step a collapse, by Boissonnat's condition:
   // the topology stays, the surface dents down to the sample); a path that stops is put back.
   // Paths are searched breadth first from the sample's cells, at most dig_depth cells long.
+  // `cells_of_sample`: the cells around the buried sample.
   static constexpr int dig_depth = 6;
-  bool dig_to(Vertex_handle v) {
-    star_.clear();
-    Traits::incident_cells(triangulation_, v, star_);
+  bool dig_to(const std::vector<Cell_handle>& cells_of_sample) {
     // Breadth first through solid cells: each cell found, with the index of the one it was
     // reached from (-1: a cell of the sample).
     std::vector<std::pair<Cell_handle, int>> found;
     std::unordered_set<int> seen;
-    for (Cell_handle cell : star_) {
+    for (Cell_handle cell : cells_of_sample) {
       if (is_outside(cell)) continue;
       seen.insert(cell->info());
       found.push_back({cell, -1});
