@@ -466,5 +466,23 @@ TEST(Automatic_kind, BorderLoopsAreOpeningsOnlyWhereTheClosedResultCappedThem) {
   EXPECT_FALSE(keeps_bordered<3>(closed, 1000, bordered));
 }
 
+// A border loop through fewer samples than the rim of the smallest opening the kind choice finds
+// is no opening either (a hole the bordered rule cut): as a scan of a closed part, smoothed,
+// whose bordered result has 5 loops, 4 torn and one short, with a pinched vertex beside each.
+TEST(Automatic_kind, ShortBorderLoopsAreNotOpenings) {
+  Statistics closed, bordered;
+  closed.components = bordered.components = 1;
+  bordered.boundary_loops = 5;
+  bordered.torn_loops = 4;
+  bordered.non_manifold_vertices = 4;
+  EXPECT_TRUE(keeps_bordered<3>(closed, 5, bordered));  // the one not torn is an opening
+  bordered.short_loops = 1;
+  EXPECT_FALSE(keeps_bordered<3>(closed, 5, bordered));
+  EXPECT_FALSE(keeps_bordered<3>(closed, 1000, bordered));
+  // A long loop beside them is an opening.
+  bordered.boundary_loops = 6;
+  EXPECT_TRUE(keeps_bordered<3>(closed, 5, bordered));
+}
+
 }  // namespace
 }  // namespace sculpt

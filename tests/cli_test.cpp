@@ -149,6 +149,18 @@ TEST(Cli, AFileIsReconstructedAsTheKindItsSamplesShow) {
   const Command_result closed = run_sculpt("reconstruct --closed " + input + " -o " + output);
   EXPECT_NE(closed.out.find("verdict: closed 2-manifold"), std::string::npos) << closed.out;
   EXPECT_EQ(closed.out.find("chosen automatically"), std::string::npos);
+  // compare (and bench) are told the kind the same way.
+  const Command_result compared = run_sculpt("compare " + input + " --methods robust");
+  EXPECT_EQ(compared.exit_code, 0) << compared.err;
+  EXPECT_NE(compared.out.find("| bordered 2-manifold with 1 border loop |"), std::string::npos)
+      << compared.out;
+  const Command_result compared_closed =
+      run_sculpt("compare " + input + " --closed --methods robust");
+  EXPECT_EQ(compared_closed.exit_code, 0) << compared_closed.err;
+  EXPECT_NE(compared_closed.out.find("| closed 2-manifold of genus 0 |"), std::string::npos)
+      << compared_closed.out;
+  const Command_result both = run_sculpt("compare " + input + " --closed --bordered");
+  EXPECT_EQ(both.exit_code, 2) << both.err;
 }
 
 TEST(Cli, AllOutputsOrNone) {
@@ -353,6 +365,7 @@ TEST(Cli, CompareRefusesBadRequestsBeforeAnyWork) {
         "compare --example bumpy --markdown " + output_path("table.txt"),
         "compare --example bumpy --tile 0x10 --markdown " + table,
         "compare --example bumpy --methods sculpting --markdown " + table,
+        "compare --example bumpy --closed --markdown " + table,
         std::string("compare")}) {
     SCOPED_TRACE(arguments);
     const Command_result run = run_sculpt(arguments);

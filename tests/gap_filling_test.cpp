@@ -138,6 +138,45 @@ TEST(Gap_filling, ABorderPieceIsTornWhenAllItsLoopsAre) {
   EXPECT_EQ(count_torn_pieces(apart, edge_uses(apart), {}), 0u);
 }
 
+// A piece of the border that is not torn is short when it passes through fewer samples than the
+// rim of the smallest opening the kind choice can find (19): a hole cut in the sheet. Small loops
+// pinched together at a sample are one piece, counted by its samples.
+TEST(Gap_filling, ABorderPieceThroughFewerSamplesThanAnOpeningsRimIsShort) {
+  // A fan of triangles around sample 0 whose rim passes through `rim` samples: one border loop.
+  const auto fan = [](int rim, int first) {
+    std::vector<Facet<3>> triangles;
+    for (int i = 0; i < rim; ++i) {
+      triangles.push_back({first, first + 1 + i, first + 1 + (i + 1) % rim});
+    }
+    return triangles;
+  };
+  const auto pieces = [](const std::vector<Facet<3>>& surface,
+                         const std::unordered_set<std::uint64_t>& torn) {
+    return count_pieces_not_openings(surface, edge_uses(surface), torn);
+  };
+  EXPECT_EQ(smallest_opening_rim, 19u);
+  EXPECT_EQ(pieces(fan(18, 0), {}).short_, 1u);
+  EXPECT_EQ(pieces(fan(19, 0), {}).short_, 0u);
+  // A torn piece is torn, not short.
+  const std::vector<Facet<3>> small = fan(5, 0);
+  std::unordered_set<std::uint64_t> rim;
+  for (int i = 0; i < 5; ++i) rim.insert(edge_key(1 + i, 1 + (i + 1) % 5));
+  const auto torn = pieces(small, rim);
+  EXPECT_EQ(torn.torn, 1u);
+  EXPECT_EQ(torn.short_, 0u);
+  // Two fans of 10 rim samples pinched at one rim sample: one piece of 19 samples, 20 edges.
+  std::vector<Facet<3>> pinched = fan(10, 0);
+  for (Facet<3> t : fan(10, 100)) {
+    for (int& v : t) v = v == 101 ? 1 : v;  // the second fan's first rim sample is the first's
+    pinched.push_back(t);
+  }
+  EXPECT_EQ(pieces(pinched, {}).short_, 0u);
+  for (Facet<3>& t : pinched) {
+    for (int& v : t) v = v == 110 ? 2 : v;  // and its last is the first's second: 18 samples
+  }
+  EXPECT_EQ(pieces(pinched, {}).short_, 1u);
+}
+
 TEST(Gap_filling, TwoLoopsThroughOneVertexAreNotSimple) {
   // Two triangles meeting at vertex 0 only (a bowtie): its border passes 0 twice.
   const std::vector<Facet<3>> bowtie = {{0, 1, 2}, {0, 3, 4}};

@@ -400,21 +400,24 @@ struct Statistics {
   std::size_t delaunay_cells = 0;    ///< cells of DT(S ∪ BBV)
   std::size_t sculpted_cells = 0;    ///< cells of DT(S ∪ OUP); 0 when it was not built
   std::size_t solid_cells = 0;
-  std::size_t candidate_facets = 0;      ///< crust, co-cone (3D): triangles the filter chose
-  std::size_t spanning_facets = 0;       ///< robust bordered (3D): removed as spanning an opening
-  std::size_t filled_gaps = 0;           ///< robust bordered (3D): border loops filled as gaps
-  std::size_t torn_loops = 0;            ///< robust bordered (3D): border loops torn in the sheet
-                                         ///< (by noise), not openings: of at most 64 samples, their
-                                         ///< least folded fill covers no empty disc but folds back
-  std::size_t set_in_samples = 0;        ///< robust bordered (3D): left-off samples set into a
-                                         ///< triangle over them
-  std::size_t attached_samples = 0;      ///< robust bordered (3D): left-off samples put back
-  std::size_t closed_notches = 0;        ///< robust bordered (3D): sharp border notches closed
-  std::size_t joined_pinches = 0;        ///< robust bordered (3D): triangles joining pinched fans
-  std::size_t dropped_fans = 0;          ///< robust bordered (3D): smaller pinched fans removed
-  std::size_t pruned_facets = 0;         ///< of those, removed at a sharp edge
-  bool rims_kept = false;                ///< the pruning kept the rims of holes (Candidates_stage)
-  std::size_t undersampled_samples = 0;  ///< co-cones: samples judged undersampled
+  std::size_t candidate_facets = 0;  ///< crust, co-cone (3D): triangles the filter chose
+  std::size_t spanning_facets = 0;   ///< robust bordered (3D): removed as spanning an opening
+  std::size_t filled_gaps = 0;       ///< robust bordered (3D): border loops filled as gaps
+  std::size_t torn_loops = 0;        ///< robust bordered (3D): border loops torn in the sheet
+                                     ///< (by noise), not openings: of at most 64 samples, their
+                                     ///< least folded fill covers no empty disc but folds back
+  std::size_t short_loops = 0;       ///< robust bordered (3D): border loops, not torn, through
+                                     ///< fewer samples than the rim of the smallest opening the
+                                     ///< kind choice finds (19): holes the rule cut, not openings
+  std::size_t set_in_samples = 0;    ///< robust bordered (3D): left-off samples set into a
+                                     ///< triangle over them
+  std::size_t attached_samples = 0;  ///< robust bordered (3D): left-off samples put back
+  std::size_t closed_notches = 0;    ///< robust bordered (3D): sharp border notches closed
+  std::size_t joined_pinches = 0;    ///< robust bordered (3D): triangles joining pinched fans
+  std::size_t dropped_fans = 0;      ///< robust bordered (3D): smaller pinched fans removed
+  std::size_t pruned_facets = 0;     ///< of those, removed at a sharp edge
+  bool rims_kept = false;            ///< the pruning kept the rims of holes (Candidates_stage)
+  std::size_t undersampled_samples = 0;      ///< co-cones: samples judged undersampled
   std::size_t samples_without_umbrella = 0;  ///< tight co-cone: no closed fan in the co-cone's
   double alpha = 0;  ///< alpha-shape: the radius chosen, in the input's units
   ///< A method that does not interpolate (the power crust): the vertices of its result, which are

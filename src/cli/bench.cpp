@@ -459,8 +459,12 @@ std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
     if (!parse_method(method, parsed))
       throw frontend::Usage_error("unknown method '" + method + "'");
   }
-  if (args.inputs.empty() && (args.bordered || args.merge_duplicates)) {
-    throw frontend::Usage_error(std::string(args.bordered ? "--bordered" : "--merge-duplicates") +
+  if (args.bordered && args.closed)
+    throw frontend::Usage_error("--bordered and --closed exclude each other");
+  if (args.inputs.empty() && (args.bordered || args.closed || args.merge_duplicates)) {
+    throw frontend::Usage_error(std::string(args.bordered ? "--bordered"
+                                            : args.closed ? "--closed"
+                                                          : "--merge-duplicates") +
                                 " applies to point files; an example has its own kind and no "
                                 "repeated points, the torus is closed");
   }
@@ -468,6 +472,7 @@ std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
   for (const auto& path : args.inputs) {
     std::vector<std::string> source = {"--input", path};
     if (args.bordered) source.push_back("--bordered");
+    if (args.closed) source.push_back("--closed");
     if (args.merge_duplicates) source.push_back("--merge-duplicates");
     inputs.emplace_back(path.substr(path.find_last_of('/') + 1), source);
   }

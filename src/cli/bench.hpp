@@ -22,7 +22,7 @@ struct Bench_arguments {
   int runs = 1;                      // each measurement this many times, interleaved: the median
   std::vector<std::string> methods;  // empty: every method
   bool advancing_front = true;       // also CGAL's Advancing Front (3D)
-  bool bordered = false;
+  bool bordered = false, closed = false;  // neither: each file's kind is chosen from it
   bool merge_duplicates = false;
   std::string json;  // write the rows as JSON too
 };

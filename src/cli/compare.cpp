@@ -218,6 +218,7 @@ class Comparison {
       shot.input = example ? "" : source[1];
       shot.example = example ? source[1] : "";
       shot.bordered = std::find(source.begin(), source.end(), "--bordered") != source.end();
+      shot.closed = std::find(source.begin(), source.end(), "--closed") != source.end();
       shot.method = method;
       shot.stage = "surface";
       shot.size = args_.tile;

@@ -313,7 +313,10 @@ int main(int argc, char** argv) {
       ->check(sculpt::frontend::whole_number_above_zero());
   bench->add_flag("--edits", bench_args.edits,
                   "Also time the viewer's live 2D edit on 200, 1,000 and 5,000 points");
-  bench->add_flag("--bordered", bench_args.bordered, "Treat the point files as bordered");
+  bench->add_flag("--bordered", bench_args.bordered, "Treat the point files as bordered")
+      ->excludes(bench->add_flag("--closed", bench_args.closed,
+                                 "Treat the point files as closed (without either, the robust "
+                                 "method chooses each file's kind)"));
   bench->add_flag("--merge-duplicates", bench_args.merge_duplicates,
                   "Remove repeated points of the files instead of refusing them");
   bench->add_option("--json", bench_args.json, "Also write the measurements as JSON");
@@ -340,8 +343,10 @@ int main(int argc, char** argv) {
   compare->add_option("--reference", compare_args.reference,
                       "A mesh to measure the results of the (one) input against; a mesh input "
                       "is its own reference");
-  compare->add_flag("--bordered", compare_args.inputs.bordered,
-                    "Treat the point files as bordered");
+  compare->add_flag("--bordered", compare_args.inputs.bordered, "Treat the point files as bordered")
+      ->excludes(compare->add_flag("--closed", compare_args.inputs.closed,
+                                   "Treat the point files as closed (without either, the robust "
+                                   "method chooses each file's kind)"));
   compare->add_flag("--merge-duplicates", compare_args.inputs.merge_duplicates,
                     "Remove repeated points of the files instead of refusing them");
   compare->add_option("--runs", compare_args.inputs.runs, "Time every method N times: medians")

@@ -88,6 +88,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
   if (stats.closed_notches > 0) row("sharp border notches closed", stats.closed_notches);
   if (stats.filled_gaps > 0) row("gaps in the sampling filled", stats.filled_gaps);
   if (stats.torn_loops > 0) row("torn loops (not openings)", stats.torn_loops);
+  if (stats.short_loops > 0) row("short loops (not openings)", stats.short_loops);
   if (stats.candidate_facets > 0) {
     row("candidates / pruned", fmt::format("{} / {}{}", stats.candidate_facets, stats.pruned_facets,
                                            stats.rims_kept ? " (rims of holes kept)" : ""));

@@ -19,7 +19,8 @@
 //   circumradius of its circle's centre (circle_middle_on_the_sheet)
 //
 // The largest spacing of the vertices keeps facets where a dense region meets a sparse one. An
-// opening narrower than about ρ spacings is not told from a gap in the sampling.
+// opening narrower than about ρ spacings is not told from a gap in the sampling: on a surface its
+// rim is at least 2πρ spacings round (smallest_opening_rim).
 //
 // Measured (the closing note of the bordered-surfaces issue) on the closed reconstructions of
 // closed inputs: surfaces (the built-in ones, CGAL's knot1, bunny00, fandisk, hand, elephant,
@@ -32,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <sculpt/sculpt.hpp>
 #include <vector>
 
@@ -45,6 +47,15 @@ inline constexpr int spacing_neighbour = D == 2 ? 1 : 6;
 // How many spacings wide a facet's circumscribed circle may be and still be on the shape.
 template <int D>
 inline constexpr double opening_ratio = D == 2 ? 2.0 : 3.0;
+
+// The fewest samples around an opening a surface's facets can span: a circle of ρ spacings in
+// radius is 2πρ ≈ 18.8 spacings round (and spacing_neighbour's spacing is wider than the gaps
+// between neighbours along a rim: a lower bound). A border loop through fewer samples is no
+// opening the kind choice could have found capped (driver/automatic_kind.hpp).
+inline constexpr std::size_t smallest_opening_rim = 19;
+static_assert(smallest_opening_rim == static_cast<std::size_t>(2 * 3.14159265358979 * 3.0) + 1 &&
+                  opening_ratio<3> == 3.0,
+              "the rim of a circle of opening_ratio<3> spacings in radius, rounded up");
 
 // Per sample, the distance to its spacing_neighbour-th nearest other sample.
 template <int D>

@@ -57,6 +57,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"spanning_facets", stats.spanning_facets},
       {"filled_gaps", stats.filled_gaps},
       {"torn_loops", stats.torn_loops},
+      {"short_loops", stats.short_loops},
       {"set_in_samples", stats.set_in_samples},
       {"attached_samples", stats.attached_samples},
       {"joined_pinches", stats.joined_pinches},

@@ -299,6 +299,7 @@ void Viewer::draw_statistics() {
   if (s.closed_notches > 0) ImGui::Text("sharp border notches closed %zu", s.closed_notches);
   if (s.filled_gaps > 0) ImGui::Text("gaps in the sampling filled %zu", s.filled_gaps);
   if (s.torn_loops > 0) ImGui::Text("torn loops (not openings) %zu", s.torn_loops);
+  if (s.short_loops > 0) ImGui::Text("short loops (not openings) %zu", s.short_loops);
   if (s.candidate_facets > 0) {
     ImGui::Text("cells %zu   candidates %zu, pruned %zu%s", s.delaunay_cells, s.candidate_facets,
                 s.pruned_facets, s.rims_kept ? " (rims kept)" : "");

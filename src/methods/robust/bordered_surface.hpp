@@ -119,6 +119,7 @@ inline void open_borders(const std::vector<Point<3>>& samples, Reconstruction<3>
   const Gaps_filled last = fill_gaps(samples, result.surface, covers_an_opening);
   result.stats.filled_gaps += last.filled;
   result.stats.torn_loops = last.torn_loops;
+  result.stats.short_loops = last.short_loops;
 }
 
 }  // namespace sculpt

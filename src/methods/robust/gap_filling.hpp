@@ -158,12 +158,19 @@ inline std::pair<Loop_fill_verdict, std::vector<Facet<3>>> fill_of_loop(
   return {Loop_fill_verdict::gap, std::move(fill.triangles)};
 }
 
-// How many pieces of the border of `surface` (its border edges joined at shared vertices, as
-// Statistics::boundary_loops counts them) have every edge on a loop in `torn` (edge_key).
+// The pieces of the border of `surface` (its border edges joined at shared vertices, as
+// Statistics::boundary_loops counts them) that are not openings: torn, every edge on a loop in
+// `torn` (edge_key); short, not torn but through fewer samples than the rim of the smallest
+// opening (smallest_opening_rim: a hole the bordered rule cut, not one the samples leave; small
+// loops pinched together at a sample are one piece, counted by its samples, not its edges).
 // `uses`: the surface's edge_uses.
-inline std::size_t count_torn_pieces(const std::vector<Facet<3>>& surface, const Edge_uses& uses,
-                                     const std::unordered_set<std::uint64_t>& torn) {
-  if (torn.empty()) return 0;
+struct Border_pieces_not_openings {
+  std::size_t torn = 0, short_ = 0;
+};
+
+inline Border_pieces_not_openings count_pieces_not_openings(
+    const std::vector<Facet<3>>& surface, const Edge_uses& uses,
+    const std::unordered_set<std::uint64_t>& torn) {
   std::unordered_map<int, std::size_t> index;  // border vertex -> union-find element
   std::vector<std::pair<std::size_t, std::size_t>> border;
   std::vector<bool> on_torn_loop;
@@ -179,14 +186,30 @@ inline std::size_t count_torn_pieces(const std::vector<Facet<3>>& surface, const
   for (std::size_t e = 0; e < border.size(); ++e) {
     if (!on_torn_loop[e]) all_torn[pieces.find(border[e].first)] = 0;
   }
-  std::size_t count = 0;
-  for (std::size_t v = 0; v < index.size(); ++v) count += pieces.find(v) == v && all_torn[v];
+  std::vector<std::size_t> samples_on(index.size(), 0);
+  for (std::size_t v = 0; v < index.size(); ++v) ++samples_on[pieces.find(v)];
+  Border_pieces_not_openings count;
+  for (std::size_t v = 0; v < index.size(); ++v) {
+    if (pieces.find(v) != v) continue;
+    if (all_torn[v]) {
+      ++count.torn;
+    } else if (samples_on[v] < smallest_opening_rim) {
+      ++count.short_;
+    }
+  }
   return count;
 }
 
+// How many pieces of the border are torn (count_pieces_not_openings).
+inline std::size_t count_torn_pieces(const std::vector<Facet<3>>& surface, const Edge_uses& uses,
+                                     const std::unordered_set<std::uint64_t>& torn) {
+  return count_pieces_not_openings(surface, uses, torn).torn;
+}
+
 struct Gaps_filled {
-  std::size_t filled = 0;      // loops filled
-  std::size_t torn_loops = 0;  // border pieces left whose every loop is torn (count_torn_pieces)
+  std::size_t filled = 0;       // loops filled
+  std::size_t torn_loops = 0;   // border pieces left whose every loop is torn
+  std::size_t short_loops = 0;  // the others through too few samples to be an opening's rim
 };
 
 // Fills the small border loops of `surface` that are gaps, and counts the border pieces left
@@ -212,7 +235,9 @@ inline Gaps_filled fill_gaps(const std::vector<Point<3>>& samples, std::vector<F
     }
     ++result.filled;
   }
-  result.torn_loops = count_torn_pieces(surface, edges, torn);
+  const Border_pieces_not_openings not_openings = count_pieces_not_openings(surface, edges, torn);
+  result.torn_loops = not_openings.torn;
+  result.short_loops = not_openings.short_;
   return result;
 }
 
