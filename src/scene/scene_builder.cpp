@@ -833,9 +833,15 @@ class Scene_builder {
       for (const auto& [ridge, facets] : facets_on) count += border ? facets == 1 : facets > 2;
       if (count == 0) return nullptr;
       const std::size_t loops = r_.stats.boundary_loops;
-      // Loops noise tore in the sheet, not openings (robust bordered rule).
-      const std::string torn =
-          r_.stats.torn_loops == 0 ? "" : " (" + std::to_string(r_.stats.torn_loops) + " torn)";
+      // Loops noise tore in the sheet and loops too short to be an opening's rim: not openings
+      // (robust bordered rule).
+      std::string not_openings;
+      if (r_.stats.torn_loops > 0) not_openings = std::to_string(r_.stats.torn_loops) + " torn";
+      if (r_.stats.short_loops > 0) {
+        not_openings +=
+            (not_openings.empty() ? "" : ", ") + std::to_string(r_.stats.short_loops) + " short";
+      }
+      const std::string torn = not_openings.empty() ? "" : " (" + not_openings + ")";
       const std::string what =
           D == 2
               ? (border ? "curve ends (" + std::to_string(count) + ")"
