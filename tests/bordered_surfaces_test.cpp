@@ -484,5 +484,28 @@ TEST(Automatic_kind, ShortBorderLoopsAreNotOpenings) {
   EXPECT_TRUE(keeps_bordered<3>(closed, 5, bordered));
 }
 
+// A handle the bordered result has beyond the closed one's is a defect: the closed result's are
+// decided by evidence, the bordered rule's are not (a scan of CGAL's spool, smoothed: bordered
+// with 25 loops, 22 torn, 18 pinched vertices and 48 handles, against a closed result of genus 0).
+TEST(Automatic_kind, HandlesTheBorderedRuleAddsAreDefects) {
+  Statistics closed, bordered;
+  closed.components = bordered.components = 1;
+  closed.euler_characteristic = 2;  // a sphere
+  bordered.boundary_loops = 3;
+  bordered.torn_loops = 2;
+  bordered.non_manifold_vertices = 2;
+  bordered.euler_characteristic = -1;  // a disc with two holes more: no handle
+  EXPECT_EQ(handles(bordered), 0u);
+  EXPECT_TRUE(keeps_bordered<3>(closed, 100, bordered));
+  bordered.euler_characteristic = -3;  // and a handle: 3 defects, against 2 torn loops
+  EXPECT_EQ(handles(bordered), 1u);
+  EXPECT_FALSE(keeps_bordered<3>(closed, 100, bordered));
+  closed.euler_characteristic = 0;  // unless the closed result has as many (a torus)
+  EXPECT_TRUE(keeps_bordered<3>(closed, 100, bordered));
+  // Curves have no handles: a 2D result's loops are strokes.
+  closed.euler_characteristic = 2;
+  EXPECT_TRUE(keeps_bordered<2>(closed, 100, bordered));
+}
+
 }  // namespace
 }  // namespace sculpt
