@@ -365,8 +365,7 @@ TEST(Cli, CompareRefusesBadRequestsBeforeAnyWork) {
         "compare --example bumpy --markdown " + output_path("table.txt"),
         "compare --example bumpy --tile 0x10 --markdown " + table,
         "compare --example bumpy --methods sculpting --markdown " + table,
-        "compare --example bumpy --closed --markdown " + table,
-        std::string("compare")}) {
+        "compare --example bumpy --closed --markdown " + table, std::string("compare")}) {
     SCOPED_TRACE(arguments);
     const Command_result run = run_sculpt(arguments);
     EXPECT_EQ(run.exit_code, 2) << run.err;

@@ -127,15 +127,16 @@ TEST(Gap_filling, ABorderPieceIsTornWhenAllItsLoopsAre) {
   const std::vector<Facet<3>> bowtie = {{4, 0, 1}, {4, 2, 3}};
   const std::unordered_set<std::uint64_t> both = {edge_key(4, 0), edge_key(0, 1), edge_key(1, 4),
                                                   edge_key(4, 2), edge_key(2, 3), edge_key(3, 4)};
-  EXPECT_EQ(count_torn_pieces(bowtie, edge_uses(bowtie), both), 1u);
+  EXPECT_EQ(count_pieces_not_openings(bowtie, edge_uses(bowtie), both).torn, 1u);
   const std::unordered_set<std::uint64_t> one = {edge_key(4, 0), edge_key(0, 1), edge_key(1, 4)};
-  EXPECT_EQ(count_torn_pieces(bowtie, edge_uses(bowtie), one), 0u);
+  EXPECT_EQ(count_pieces_not_openings(bowtie, edge_uses(bowtie), one).torn, 0u);
   // Two triangles apart: two pieces, one torn.
   const std::vector<Facet<3>> apart = {{0, 1, 2}, {5, 6, 7}};
-  EXPECT_EQ(
-      count_torn_pieces(apart, edge_uses(apart), {edge_key(0, 1), edge_key(1, 2), edge_key(2, 0)}),
-      1u);
-  EXPECT_EQ(count_torn_pieces(apart, edge_uses(apart), {}), 0u);
+  EXPECT_EQ(count_pieces_not_openings(apart, edge_uses(apart),
+                                      {edge_key(0, 1), edge_key(1, 2), edge_key(2, 0)})
+                .torn,
+            1u);
+  EXPECT_EQ(count_pieces_not_openings(apart, edge_uses(apart), {}).torn, 0u);
 }
 
 // A piece of the border that is not torn is short when it passes through fewer samples than the
@@ -155,26 +156,28 @@ TEST(Gap_filling, ABorderPieceThroughFewerSamplesThanAnOpeningsRimIsShort) {
     return count_pieces_not_openings(surface, edge_uses(surface), torn);
   };
   EXPECT_EQ(smallest_opening_rim, 19u);
-  EXPECT_EQ(pieces(fan(18, 0), {}).short_, 1u);
-  EXPECT_EQ(pieces(fan(19, 0), {}).short_, 0u);
+  EXPECT_EQ(pieces(fan(18, 0), {}).too_short, 1u);
+  EXPECT_EQ(pieces(fan(19, 0), {}).too_short, 0u);
   // A torn piece is torn, not short.
   const std::vector<Facet<3>> small = fan(5, 0);
   std::unordered_set<std::uint64_t> rim;
   for (int i = 0; i < 5; ++i) rim.insert(edge_key(1 + i, 1 + (i + 1) % 5));
   const auto torn = pieces(small, rim);
   EXPECT_EQ(torn.torn, 1u);
-  EXPECT_EQ(torn.short_, 0u);
-  // Two fans of 10 rim samples pinched at one rim sample: one piece of 19 samples, 20 edges.
-  std::vector<Facet<3>> pinched = fan(10, 0);
-  for (Facet<3> t : fan(10, 100)) {
-    for (int& v : t) v = v == 101 ? 1 : v;  // the second fan's first rim sample is the first's
-    pinched.push_back(t);
-  }
-  EXPECT_EQ(pieces(pinched, {}).short_, 0u);
-  for (Facet<3>& t : pinched) {
-    for (int& v : t) v = v == 110 ? 2 : v;  // and its last is the first's second: 18 samples
-  }
-  EXPECT_EQ(pieces(pinched, {}).short_, 1u);
+  EXPECT_EQ(torn.too_short, 0u);
+  // Fans of 9 and 10 rim samples pinched at one rim sample: one piece of 19 edges through 18
+  // samples, short (counted by its edges, it would not be); of 9 and 11, 19 samples.
+  const auto pinched = [&](int second_rim) {
+    std::vector<Facet<3>> triangles = fan(9, 0);
+    for (Facet<3> t : fan(second_rim, 100)) {
+      for (int& v : t) v = v == 101 ? 1 : v;  // the second fan's first rim sample is the first's
+      triangles.push_back(t);
+    }
+    return triangles;
+  };
+  EXPECT_EQ(edge_uses(pinched(10)).size() - 9 - 10, 19u);  // the spokes, then the rim's edges
+  EXPECT_EQ(pieces(pinched(10), {}).too_short, 1u);
+  EXPECT_EQ(pieces(pinched(11), {}).too_short, 0u);
 }
 
 TEST(Gap_filling, TwoLoopsThroughOneVertexAreNotSimple) {

@@ -459,8 +459,6 @@ std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
     if (!parse_method(method, parsed))
       throw frontend::Usage_error("unknown method '" + method + "'");
   }
-  if (args.bordered && args.closed)
-    throw frontend::Usage_error("--bordered and --closed exclude each other");
   if (args.inputs.empty() && (args.bordered || args.closed || args.merge_duplicates)) {
     throw frontend::Usage_error(std::string(args.bordered ? "--bordered"
                                             : args.closed ? "--closed"

@@ -49,13 +49,11 @@ template <int D>
 inline constexpr double opening_ratio = D == 2 ? 2.0 : 3.0;
 
 // The fewest samples around an opening a surface's facets can span: a circle of ρ spacings in
-// radius is 2πρ ≈ 18.8 spacings round (and spacing_neighbour's spacing is wider than the gaps
-// between neighbours along a rim: a lower bound). A border loop through fewer samples is no
-// opening the kind choice could have found capped (driver/automatic_kind.hpp).
-inline constexpr std::size_t smallest_opening_rim = 19;
-static_assert(smallest_opening_rim == static_cast<std::size_t>(2 * 3.14159265358979 * 3.0) + 1 &&
-                  opening_ratio<3> == 3.0,
-              "the rim of a circle of opening_ratio<3> spacings in radius, rounded up");
+// radius is 2πρ ≈ 18.8 spacings round, and a rim whose steps are at most a spacing (the samples
+// around an empty disc are no farther apart) has at least 19 samples. A border loop through
+// fewer is no opening the kind choice could have found capped (driver/automatic_kind.hpp).
+inline constexpr std::size_t smallest_opening_rim =
+    static_cast<std::size_t>(2 * M_PI * opening_ratio<3>) + 1;
 
 // Per sample, the distance to its spacing_neighbour-th nearest other sample.
 template <int D>

@@ -14,8 +14,8 @@
 //   least 2 facets spanning an opening per opening (1 on a curve),
 //   defects(R_bordered) < defects(R_closed) + those facets, and
 //   defects(R_bordered) <= defects(R_closed) + the loops noise tore in R_bordered; else R_closed
-//   (a surface R_bordered with defects counts each piece more than R_closed has as one more,
-//   and any surface R_bordered each handle more than R_closed has)
+//   (a surface R_bordered with defects counts each piece and each handle more than R_closed has
+//   as one more)
 //
 // defects = non-manifold ridges + non-manifold vertices + samples left off. A facet spanning an
 // opening counts as a defect of the closed result: a surface made up across missing data. A
@@ -72,11 +72,14 @@ inline std::size_t defects(const Statistics& stats) {
   return stats.non_manifold_ridges + stats.non_manifold_vertices + stats.unused_samples;
 }
 
-// The handles of a surface (3D): its genus summed over its pieces, from V - E + F = 2c - 2g - b
-// (a border loop counts as a hole, not a handle); none for a surface that reads fewer.
-inline std::size_t handles(const Statistics& stats) {
+// The handles a surface (3D) has for certain: on a 2-manifold its genus summed over its pieces,
+// from V - E + F = 2c - 2g - b (a border loop is a hole, not a handle). A pinched vertex where two
+// fans meet reads up to one handle too many (on a border: one vertex and one loop fewer than
+// its fans apart have), so each is taken off.
+inline std::size_t certain_handles(const Statistics& stats) {
   const long twice = 2 * static_cast<long>(stats.components) - stats.euler_characteristic -
-                     static_cast<long>(stats.boundary_loops);
+                     static_cast<long>(stats.boundary_loops) -
+                     2 * static_cast<long>(stats.non_manifold_vertices);
   return twice > 0 ? static_cast<std::size_t>(twice / 2) : 0;
 }
 
@@ -98,11 +101,11 @@ inline std::size_t handles(const Statistics& stats) {
 // apart (CGAL's camel: 5 pieces, 11 pinched vertices and 14 torn loops, against a closed result of
 // its genus through every sample, whose webs between the legs (refused handles,
 // methods/robust/solid_openings.hpp) span 236 facets). Not a clean one, nor curves: separate sheets
-// or strokes that the closed attempt joined are pieces of their own. Each handle a surface
-// bordered has beyond the closed one's is a defect too: the closed result's are decided by
-// evidence, the bordered rule's are not (scans of CGAL's spool and rotor, 35,000 samples with
-// noise of 0.5% of the diagonal, smoothed: bordered with 48 and more handles, 18 and 40 pinched
-// vertices, as many torn loops; closed, of genus 0 and 2, the parts' 0 and 1).
+// or strokes that the closed attempt joined are pieces of their own. A bordered surface with
+// defects counts each handle more than the closed one's as a defect too: the closed result's
+// handles are decided by evidence (methods/robust/solid_openings.hpp), the bordered rule's are not
+// (a scan of CGAL's spool, noise 0.5% of the diagonal: bordered with 25 loops, 18 pinched vertices
+// and 30 handles at least; closed, of genus 0 as the part).
 template <int D>
 bool keeps_bordered(const Statistics& closed, std::size_t spanning, const Statistics& bordered) {
   const std::size_t not_openings = bordered.torn_loops + bordered.short_loops;
@@ -112,10 +115,10 @@ bool keeps_bordered(const Statistics& closed, std::size_t spanning, const Statis
       D == 3 && defects(bordered) > 0 && bordered.components > closed.components
           ? bordered.components - closed.components
           : 0;
-  // The closed result's handles are decided by evidence (methods/robust/solid_openings.hpp: a
-  // group of outer cells seen whole); the bordered rule's are not: each handle more is a defect.
   const std::size_t more_handles =
-      D == 3 && handles(bordered) > handles(closed) ? handles(bordered) - handles(closed) : 0;
+      D == 3 && defects(bordered) > 0 && certain_handles(bordered) > certain_handles(closed)
+          ? certain_handles(bordered) - certain_handles(closed)
+          : 0;
   const std::size_t bordered_defects = defects(bordered) + fallen_apart + more_handles;
   return openings > 0 && openings * facets_capping_an_opening<D> <= spanning &&
          bordered_defects < defects(closed) + spanning &&

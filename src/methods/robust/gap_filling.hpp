@@ -165,7 +165,7 @@ inline std::pair<Loop_fill_verdict, std::vector<Facet<3>>> fill_of_loop(
 // loops pinched together at a sample are one piece, counted by its samples, not its edges).
 // `uses`: the surface's edge_uses.
 struct Border_pieces_not_openings {
-  std::size_t torn = 0, short_ = 0;
+  std::size_t torn = 0, too_short = 0;
 };
 
 inline Border_pieces_not_openings count_pieces_not_openings(
@@ -194,16 +194,10 @@ inline Border_pieces_not_openings count_pieces_not_openings(
     if (all_torn[v]) {
       ++count.torn;
     } else if (samples_on[v] < smallest_opening_rim) {
-      ++count.short_;
+      ++count.too_short;
     }
   }
   return count;
-}
-
-// How many pieces of the border are torn (count_pieces_not_openings).
-inline std::size_t count_torn_pieces(const std::vector<Facet<3>>& surface, const Edge_uses& uses,
-                                     const std::unordered_set<std::uint64_t>& torn) {
-  return count_pieces_not_openings(surface, uses, torn).torn;
 }
 
 struct Gaps_filled {
@@ -237,7 +231,7 @@ inline Gaps_filled fill_gaps(const std::vector<Point<3>>& samples, std::vector<F
   }
   const Border_pieces_not_openings not_openings = count_pieces_not_openings(surface, edges, torn);
   result.torn_loops = not_openings.torn;
-  result.short_loops = not_openings.short_;
+  result.short_loops = not_openings.too_short;
   return result;
 }
 
