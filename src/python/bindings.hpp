@@ -51,6 +51,9 @@ decltype(auto) visit(const Result& result, Visitor&& visitor) {
   return std::visit(std::forward<Visitor>(visitor), result.reconstruction);
 }
 
+// The method of that name; Input_error naming every method otherwise (catalogue.cpp).
+Method method_named(const std::string& name);
+
 // A points array as the core's points: (n, 2) or (n, 3), converted to float64.
 template <int D>
 std::vector<Point<D>> points_of(const py::array_t<double, py::array::c_style>& array) {

@@ -18,6 +18,8 @@ py::tuple names_of(int count) {
   return names;
 }
 
+}  // namespace
+
 Method method_named(const std::string& name) {
   Method method;
   if (!parse_method(name, method)) {
@@ -28,8 +30,6 @@ Method method_named(const std::string& name) {
   }
   return method;
 }
-
-}  // namespace
 
 void bind_catalogue(py::module_& m) {
   m.attr("LABELS") = names_of<Label>(3);

@@ -64,11 +64,7 @@ Options options_from(const std::string& method, const std::optional<std::string>
                      const std::string& rule, double box_factor, double alpha,
                      int bordered_seed_sample, bool keep_triangulations) {
   Options options;
-  if (!parse_method(method, options.method)) {
-    std::string names;
-    for (const char* name : method_names()) names += std::string(names.empty() ? "" : ", ") + name;
-    throw Input_error("no method '" + method + "' (methods: " + names + ")");
-  }
+  options.method = method_named(method);
   if (kind && !parse_kind(*kind, options.kind)) {
     throw Input_error("no kind of surface '" + *kind + "' (kinds: closed, bordered, automatic)");
   }
