@@ -11,6 +11,7 @@ execute_process(
           data/meshes/holes.off data/meshes/mech-holes-shark.off
           data/meshes/cylinder_locally_refined.off data/meshes/oblong.off
           data/meshes/homer.off data/meshes/bull.off data/meshes/handle.off
+          data/meshes/double-torus-example.off
   WORKING_DIRECTORY "${DESTINATION}"
   RESULT_VARIABLE result)
 if(NOT result EQUAL 0)
