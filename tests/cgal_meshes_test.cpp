@@ -122,13 +122,15 @@ TEST(Cgal_meshes, ANoisyScanIsCleanedToThePartsTopology) {
 // brought up by removing a cell of its own; the largest once went, a tetrahedron reaching
 // across the part to the far side's surface, so the surface dipped from there down to the one
 // sample: a spike through the part, 4-5% of the diagonal from it (double-torus-example, fandisk).
-// The cell whose sides are shortest goes now, and the surface stays near the part.
+// The cell whose sides are shortest goes now, and the surface stays near the part, of its
+// topology.
 class Noisy_scan : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(Noisy_scan, StaysNearThePart) {
+TEST_P(Noisy_scan, HasThePartsTopologyAndStaysNearIt) {
   const io::Point_set mesh =
       io::read_points(std::string(SCULPT_TEST_DATA) + "/data/meshes/" + GetParam());
   const std::vector<Facet<3>> triangles(mesh.triangles.begin(), mesh.triangles.end());
+  const Statistics own = facet_topology(mesh.points.size(), triangles);
   Options options;
   options.keep_triangulations = false;
   options.kind = Surface_kind::closed;
@@ -140,6 +142,8 @@ TEST_P(Noisy_scan, StaysNearThePart) {
   std::cout << GetParam() << " scanned: " << verdict(result.stats).line << "; Hausdorff "
             << 100 * off << "% of the diagonal\n";
   EXPECT_TRUE(result.stats.cleaned);
+  EXPECT_EQ(result.stats.euler_characteristic, own.euler_characteristic);
+  EXPECT_EQ(result.stats.components, 1u);
   EXPECT_LT(off, 0.025);
 }
 
