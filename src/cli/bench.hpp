@@ -45,7 +45,8 @@ void check_a_method_measured(const std::vector<std::string>& methods,
 nlohmann::json measure_input(const std::string& name, const std::vector<std::string>& source,
                              const Bench_arguments& args);
 
-// One measurement, in the process `sculpt bench` starts: prints its JSON on standard output.
+// One measurement, in the process `sculpt bench` starts: prints its JSON on standard output
+// (bench_jobs.cpp).
 struct Bench_job {
   // "delaunay", "method", "advancing-front", "render" (a torus of N triangles) or "edit" (a
   // live 2D edit on N samples)
