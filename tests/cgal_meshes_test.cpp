@@ -48,18 +48,6 @@ std::size_t defects(const Statistics& s) {
          (s.components - 1);
 }
 
-// The diagonal of the points' bounding box.
-double box_diagonal(const std::vector<Point<3>>& points) {
-  Point<3> lower = points[0], upper = points[0];
-  for (const auto& p : points) {
-    for (int k = 0; k < 3; ++k)
-      lower[k] = std::min(lower[k], p[k]), upper[k] = std::max(upper[k], p[k]);
-  }
-  return std::sqrt((upper[0] - lower[0]) * (upper[0] - lower[0]) +
-                   (upper[1] - lower[1]) * (upper[1] - lower[1]) +
-                   (upper[2] - lower[2]) * (upper[2] - lower[2]));
-}
-
 // A simulated scan of a CAD part: its triangles sampled `count` times uniformly by area, each
 // point moved by Gaussian noise of `noise` times the mesh's diagonal (a scanner's). The random
 // numbers are the same on every standard library (shapes::Portable_random).
@@ -76,7 +64,7 @@ std::vector<Point<3>> noisy_scan(const io::Point_set& mesh, int count, double no
     total += std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) / 2;
     cumulative.push_back(total);
   }
-  const double sigma = noise * box_diagonal(mesh.points) / std::sqrt(3.0);  // per axis
+  const double sigma = noise * testing::box_diagonal<3>(mesh.points) / std::sqrt(3.0);  // per axis
   std::vector<Point<3>> points;
   for (int i = 0; i < count; ++i) {
     const auto t = mesh.triangles[std::size_t(
@@ -138,7 +126,7 @@ TEST_P(Noisy_scan, HasThePartsTopologyAndStaysNearIt) {
   const std::vector<Point<3>> samples(result.sites.begin(),
                                       result.sites.begin() + result.sample_count());
   const double off = hausdorff_distance(samples, result.surface, mesh.points, triangles) /
-                     box_diagonal(mesh.points);
+                     testing::box_diagonal<3>(mesh.points);
   std::cout << GetParam() << " scanned: " << verdict(result.stats).line << "; Hausdorff "
             << 100 * off << "% of the diagonal\n";
   EXPECT_TRUE(result.stats.cleaned);

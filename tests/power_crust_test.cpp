@@ -39,15 +39,6 @@ double farthest_nearest(const std::vector<Point<D>>& from, const std::vector<Poi
   return std::sqrt(worst);
 }
 
-template <int D>
-double diagonal(const std::vector<Point<D>>& points) {
-  Point<D> lo = points[0], hi = points[0];
-  for (const auto& p : points) {
-    for (int k = 0; k < D; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
-  }
-  return std::sqrt(squared_distance<D>(lo, hi));
-}
-
 // The power diagram stage inserts the poles one at a time (to report progress) as CGAL's range
 // insertion does: the same regular triangulation, its vertices and cells (faces) in the same
 // order, each vertex knowing its pole. (The poles of a shape's samples are nearly cospherical:
@@ -112,7 +103,7 @@ TEST(PowerCrust, PassesNearTheSamplesThroughVerticesOfItsOwn) {
   // Not one of them is a sample, yet every sample is close to one and every one to a sample.
   std::set<Point<3>> sample_set(samples.begin(), samples.end());
   for (const auto& v : result.surface_vertices) ASSERT_FALSE(sample_set.count(v));
-  const double size = diagonal<3>(samples);
+  const double size = testing::box_diagonal<3>(samples);
   EXPECT_LT(farthest_nearest<3>(samples, result.surface_vertices), 0.02 * size);
   EXPECT_LT(farthest_nearest<3>(result.surface_vertices, samples), 0.05 * size);
   EXPECT_NE(verdict(result.stats).line.find("vertices of its own"), std::string::npos);

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <map>
 #include <sculpt/sculpt.hpp>
 #include <set>
@@ -22,6 +23,19 @@ struct Silent_clock {
   Options options;
   Stage_clock clock{stats, options};
 };
+
+// The diagonal of the points' bounding box.
+template <int D>
+double box_diagonal(const std::vector<Point<D>>& points) {
+  Point<D> lower = points[0], upper = points[0];
+  for (const auto& p : points) {
+    for (int k = 0; k < D; ++k)
+      lower[k] = std::min(lower[k], p[k]), upper[k] = std::max(upper[k], p[k]);
+  }
+  double sum = 0;
+  for (int k = 0; k < D; ++k) sum += (upper[k] - lower[k]) * (upper[k] - lower[k]);
+  return std::sqrt(sum);
+}
 
 // The default options with another method.
 inline Options with_method(Method method) {

@@ -15,6 +15,16 @@
 namespace sculpt::python {
 namespace {
 
+// A read-only property: the rows of what `member` takes of the result, as rows_view gives them
+// (a view that keeps the result alive).
+template <class Member>
+auto rows_property(Member member) {
+  return [member](py::object self) {
+    return visit(self.cast<const Result&>(),
+                 [&](const auto& r) { return rows_view(self, member(r)); });
+  };
+}
+
 const Statistics& statistics_of(const Result& result) {
   return visit(result, [](const auto& r) -> const Statistics& { return r.stats; });
 }
@@ -216,11 +226,7 @@ void bind_reconstruction(py::module_& m) {
           "When the samples were smoothed (clean=...) and the triangulations kept (the "
           "default), the points as given, (n, d), read-only; None otherwise.")
       .def_property_readonly(
-          "sites",
-          [](py::object self) {
-            return visit(self.cast<const Result&>(),
-                         [&](const auto& r) { return rows_view(self, r.sites); });
-          },
+          "sites", rows_property([](const auto& r) -> const auto& { return r.sites; }),
           "The triangulations' sites, (s, d): the samples, the 2^d box corners, then the poles "
           "inserted (paper method).")
       .def_property_readonly(
@@ -240,18 +246,11 @@ void bind_reconstruction(py::module_& m) {
           "closed surfaces face outward, closed curves run counterclockwise.")
       .def_property_readonly(
           "surface_vertices",
-          [](py::object self) {
-            return visit(self.cast<const Result&>(),
-                         [&](const auto& r) { return rows_view(self, r.surface_points()); });
-          },
+          rows_property([](const auto& r) -> const auto& { return r.surface_points(); }),
           "The points the surface's indices refer to, (v, d): the sites (whose first rows are "
           "the samples) for an interpolating method, the power crust's own vertices otherwise.")
       .def_property_readonly(
-          "solid",
-          [](py::object self) {
-            return visit(self.cast<const Result&>(),
-                         [&](const auto& r) { return rows_view(self, r.solid); });
-          },
+          "solid", rows_property([](const auto& r) -> const auto& { return r.solid; }),
           "The solid's tetrahedra (k, 4), or triangles (k, 3) in 2D, as indices of samples: the "
           "sculpted cells (paper, robust) or the alpha solid; empty for the other methods.")
       .def_property_readonly(

@@ -38,6 +38,15 @@ int key_code(const std::string& name) {
   return found == keys.end() ? -1 : found->second;
 }
 
+// A plane as clip and section take it, POSITION AZIMUTH ELEVATION: whether the three were read,
+// the position 0 to 1 across the box and the normal's angles finite.
+bool read_plane(Script_line& line, scene::Clip& plane) {
+  std::istringstream numbers(line.argument + " " + line.extra);
+  numbers >> plane.position >> plane.azimuth;
+  return numbers && (line.words >> plane.elevation) && plane.position >= 0 && plane.position <= 1 &&
+         std::isfinite(plane.azimuth) && std::isfinite(plane.elevation);
+}
+
 }  // namespace
 
 bool run_view_command(Script_line& line) {
@@ -139,9 +148,7 @@ bool run_view_command(Script_line& line) {
       viewer.clear_clip();
     } else {
       scene::Clip clip;
-      std::istringstream numbers(line.argument + " " + line.extra);
-      numbers >> clip.position >> clip.azimuth;
-      if (numbers && (line.words >> clip.elevation) && clip.position >= 0 && clip.position <= 1) {
+      if (read_plane(line, clip)) {
         if (!(line.words >> clip.slab)) clip.slab = 0;  // optional
         viewer.set_clip(clip);
       } else {
@@ -158,12 +165,8 @@ bool run_view_command(Script_line& line) {
       viewer.clear_section();
     } else {
       scene::Clip plane;
-      std::istringstream numbers(line.argument + " " + line.extra);
-      numbers >> plane.position >> plane.azimuth;
       std::string more;
-      if (numbers && (line.words >> plane.elevation) && !(line.words >> more) &&
-          plane.position >= 0 && plane.position <= 1 && std::isfinite(plane.azimuth) &&
-          std::isfinite(plane.elevation)) {
+      if (read_plane(line, plane) && !(line.words >> more)) {
         viewer.set_section(plane);
       } else {
         line.fail("'" + line.text +
