@@ -18,7 +18,9 @@
 // the input (a stride); the tree holds all. Fewer than 100 samples are too few for neighbourhoods
 // of 15 to be local: not measured. Neither are samples whose neighbourhood is a rod, a tube
 // only a few samples round (a sparsely sampled thin torus measured 0.6 of its spacing, and
-// cleaning it closed its hole): too coarse to tell noise from the tube's curvature.
+// cleaning it closed its hole): too coarse to tell noise from the tube's curvature. Nor those
+// whose neighbours lie on both sides of a wall thinner than the neighbourhood (two_sheets.hpp):
+// what the quadric leaves there is the wall's thickness.
 #pragma once
 
 #include <algorithm>
@@ -28,6 +30,8 @@
 #include <vector>
 
 #include "point_tree.hpp"
+#include "quadric_fit.hpp"
+#include "two_sheets.hpp"
 
 namespace sculpt {
 
@@ -64,30 +68,6 @@ inline double smallest_eigenvalue(const double m[3][3], int dimension) {
     return mean - std::sqrt(half * half + m[0][1] * m[0][1]);
   }
   return eigenvalues(m)[0];
-}
-
-// Solves the n x n system a x = b (n <= 6) by Gaussian elimination with partial pivoting;
-// false when it is singular (the neighbours are degenerate: collinear, coincident).
-inline bool solve_small(double a[6][6], double b[6], int n) {
-  for (int col = 0; col < n; ++col) {
-    int pivot = col;
-    for (int row = col + 1; row < n; ++row) {
-      if (std::abs(a[row][col]) > std::abs(a[pivot][col])) pivot = row;
-    }
-    if (std::abs(a[pivot][col]) < 1e-12) return false;
-    std::swap(a[pivot], a[col]);
-    std::swap(b[pivot], b[col]);
-    for (int row = col + 1; row < n; ++row) {
-      const double factor = a[row][col] / a[col][col];
-      for (int k = col; k < n; ++k) a[row][k] -= factor * a[col][k];
-      b[row] -= factor * b[col];
-    }
-  }
-  for (int row = n - 1; row >= 0; --row) {
-    for (int k = row + 1; k < n; ++k) b[row] -= a[row][k] * b[k];
-    b[row] /= a[row][row];
-  }
-  return true;
 }
 
 // A unit vector along which the symmetric 3x3 matrix m has eigenvalue `value`: the largest
@@ -197,6 +177,14 @@ double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& n
     double fitted = 0;
     for (int a = 0; a < terms; ++a) fitted += right[a] * row[a];
     squares += (row[terms] - fitted) * (row[terms] - fitted);
+  }
+  // Both sides of a wall thinner than the neighbourhood: what the quadric leaves is the wall's
+  // thickness, not noise (two_sheets.hpp).
+  if constexpr (D == 3) {
+    std::vector<std::array<double, 3>> local;
+    local.reserve(rows.size());
+    for (const auto& row : rows) local.push_back({row[1], row[2], row[terms]});
+    if (two_sheets(local, 4)) return -1;
   }
   return size * std::sqrt(squares / (count - terms));
 }
