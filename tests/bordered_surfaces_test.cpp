@@ -374,6 +374,26 @@ TEST(Automatic_kind, ClosedSurfacesStayClosed) {
   }
 }
 
+// Samples on a tilted plane (rounding keeps them off it by a hair, so the Delaunay
+// triangulation has cells, all flat): the closed attempt bounds no solid and has no surface; the
+// bordered one is the sheet, kept (it once kept the empty closed result).
+TEST(Automatic_kind, AFlatSheetIsBorderedNotAnEmptyClosedSurface) {
+  std::mt19937 random(11);
+  const auto unit = [&] { return random() / 4294967296.0; };
+  std::vector<Point<3>> sheet;
+  for (int i = 0; i < 300; ++i) {
+    const double x = unit(), y = unit();
+    sheet.push_back({x, y, 0.3 * x + 0.7 * y + 1});
+  }
+  Options closed;
+  closed.kind = Surface_kind::closed;
+  ASSERT_TRUE(reconstruct(sheet, closed).surface.empty());
+  const auto automatic = expect_automatic_keeps<3>(sheet, Surface_kind::bordered);
+  EXPECT_FALSE(automatic.surface.empty());
+  EXPECT_EQ(automatic.stats.unused_samples, 0u);
+  EXPECT_EQ(automatic.stats.boundary_loops, 1u);
+}
+
 TEST(Automatic_kind, ClosedCurvesStayClosedAndOpenOnesOpen) {
   for (const char* name : {"circle", "star", "blob", "nested", "nonuniform"}) {
     SCOPED_TRACE(name);

@@ -6,9 +6,11 @@
 // samples' spacing (spanning_openings.hpp). So:
 //
 //   R_closed <- the closed reconstruction
-//   if too few facets of R_closed span an opening to cap one (2 on a surface, 1 on a curve):
-//     keep R_closed
+//   if too few facets of R_closed span an opening to cap one (2 on a surface, 1 on a curve) and
+//   R_closed has a surface: keep R_closed
 //   R_bordered <- the bordered reconstruction
+//   keep R_bordered if R_closed has no surface and R_bordered has one (a flat sheet of samples:
+//   the closed result has no solid to bound, the bordered one is the sheet)
 //   keep R_bordered if it has an opening (a border loop not torn by noise, through as many
 //   samples as the rim of the smallest opening the test finds: 19), R_closed has at
 //   least 2 facets spanning an opening per opening (1 on a curve),
@@ -174,7 +176,10 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
   const auto now = std::chrono::steady_clock::now();
   const double choice_seconds = std::chrono::duration<double>(now - choosing).count();
   const double closed_seconds = std::chrono::duration<double>(now - started).count();
-  const bool closed_stands = !caps_an_opening<D>(spanning);
+  // A closed result without a surface (samples all but on one plane: no solid between them)
+  // reconstructs nothing: the bordered attempt is made, and kept if it has one.
+  const bool closed_is_empty = closed_result.surface.empty();
+  const bool closed_stands = !caps_an_opening<D>(spanning) && !closed_is_empty;
   report(1.0, closed_stands ? 1.0 : 0.5);
   const auto add_choice_stage = [&] {
     auto& stats = closed_result.stats;
@@ -193,7 +198,9 @@ Reconstruction<D> reconstruct_choosing_kind(const Options& options, Run&& run) {
   Reconstruction<D> bordered_result = run(run_options(Surface_kind::bordered, 0.5, 1.0), nullptr,
                                           first_stages ? &*first_stages : nullptr);
   first_stages.reset();
-  if (!keeps_bordered<D>(closed_result.stats, spanning, bordered_result.stats)) {
+  const bool bordered_replaces_nothing = closed_is_empty && !bordered_result.surface.empty();
+  if (!bordered_replaces_nothing &&
+      !keeps_bordered<D>(closed_result.stats, spanning, bordered_result.stats)) {
     // Closed kept: the attempt's time shows as a stage of its own.
     const double attempt_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - bordered_started).count();
