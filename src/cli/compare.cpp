@@ -77,10 +77,21 @@ std::optional<Reference> reference_of(const frontend::Input& input,
   return reference;
 }
 
-// The verdict in a table cell: what the result is (before the counts), or what is wrong.
-std::string short_verdict(const std::string& line) {
+// The verdict in a table cell: what the result is (before the counts), or what is wrong, and
+// the handles whose genus the samples cannot vouch for (suspect, refused), whichever it is.
+std::string short_verdict(const nlohmann::json& stats) {
+  const std::string line = stats["verdict"];
   const bool defective = line.rfind("NOT", 0) == 0;
-  return line.substr(0, line.find(defective ? ';' : ':'));
+  std::string cell = line.substr(0, line.find(defective ? ';' : ':'));
+  const std::size_t suspect = stats.value("thin_handles", std::size_t{0});
+  const std::size_t refused = stats.value("refused_handles", std::size_t{0});
+  if (suspect > 0)
+    cell +=
+        fmt::format("; {} suspect", suspect == 1 ? "1 handle" : fmt::format("{} handles", suspect));
+  if (refused > 0)
+    cell +=
+        fmt::format("; {} refused", refused == 1 ? "1 handle" : fmt::format("{} handles", refused));
+  return cell;
 }
 
 std::string number_or_dash(double value, const char* format) {
@@ -174,7 +185,7 @@ class Comparison {
             "| "
             "{} | {} | {} |\n",
             input, row["samples"].get<std::size_t>(), method, seconds, seconds / dt_seconds, mib,
-            mib / dt_mib, s.value("output_vertices_per_sample", 0.0), short_verdict(s["verdict"]),
+            mib / dt_mib, s.value("output_vertices_per_sample", 0.0), short_verdict(s),
             s["boundary_loops"].get<std::size_t>(), s["non_manifold_ridges"].get<std::size_t>(),
             s["components"].get<std::size_t>(),
             reference != row["delaunay_only"].end()
@@ -257,6 +268,10 @@ class Comparison {
       }
       // The table says what is wrong; a tile has room for whether anything is.
       shot.title = method + (verdict(stats).manifold ? ": manifold" : ": NOT manifold");
+      // A manifold whose genus the carving held down is not simply right.
+      if (stats.refused_handles > 0)
+        shot.title += fmt::format(", {} refused", stats.refused_handles);
+      if (stats.thin_handles > 0) shot.title += fmt::format(", {} suspect", stats.thin_handles);
       tiles.push_back(draw(shot, result));
     }
     if (!args_.pictures.empty()) add_grid_row(tiles);

@@ -26,9 +26,13 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     out << fmt::format("  {:<28}{:>12}\n", name, value);
   };
   row("samples (n)", stats.samples);
-  if (stats.noise >= 0) row("noise (of spacing)", fmt::format("{:.3f}", stats.noise));
+  // -1: not measured (too few samples, or too few a sheet's: thin tubes, thin walls).
+  const auto noise = [](double value) {
+    return value >= 0 ? fmt::format("{:.3f}", value) : std::string("not measured");
+  };
+  if (stats.noise >= 0 || stats.cleaned) row("noise (of spacing)", noise(stats.noise));
   if (stats.cleaned) {
-    row("smoothed (jet): noise after", fmt::format("{:.3f}", stats.noise_after));
+    row("smoothed (jet): noise after", noise(stats.noise_after));
     row("  moved (of spacing)", fmt::format("{:.3f}", stats.cleaning_shift));
   }
   if (stats.kind_chosen_automatically) {
@@ -75,7 +79,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
         row(stats.dimension == 3 ? "handles opened (webs removed)" : "holes opened",
             stats.carved_handles);
       if (stats.method == Method::robust && stats.refused_handles > 0)
-        row("handles refused (one sample wide)", stats.refused_handles);
+        row("handles refused (webs kept)", stats.refused_handles);
     }
   }
   if (sculpts(stats.method)) row("solid cells", stats.solid_cells);

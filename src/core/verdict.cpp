@@ -48,7 +48,7 @@ Verdict verdict(const Statistics& s) {
                           : plural(s.unused_samples, "sample", "samples") + " not on it");
   }
 
-  const std::string shape =
+  std::string shape =
       surface ? fmt::format("{}, Euler characteristic {}",
                             plural(s.components, "component", "components"), s.euler_characteristic)
               : plural(s.components, "component", "components");
@@ -59,8 +59,11 @@ Verdict verdict(const Statistics& s) {
   v.manifold = defects.empty();
   if (v.manifold) {
     std::string what = surface || bordered ? wanted : found_curves;
-    if (surface && !bordered && s.components == 1 && s.euler_characteristic % 2 == 0) {
-      what += fmt::format(" of genus {}", (2 - s.euler_characteristic) / 2);
+    // The genus of a closed surface: of its one piece, or summed over its pieces.
+    const long twice_genus = 2 * static_cast<long>(s.components) - s.euler_characteristic;
+    if (surface && !bordered && s.components > 0 && twice_genus >= 0 && twice_genus % 2 == 0) {
+      what +=
+          fmt::format(s.components == 1 ? " of genus {}" : " of genus {} in all", twice_genus / 2);
     }
     if (bordered) {
       what +=
@@ -72,30 +75,39 @@ Verdict verdict(const Statistics& s) {
                  ? fmt::format("{}: {}, {} vertices of its own for {} samples", what, shape,
                                s.surface_vertices, s.samples)
                  : fmt::format("{}: {}, all {} samples on it", what, shape, s.samples);
-    // Handles the samples cannot vouch for (core/thin_handles.hpp): the genus may be wrong.
-    if (s.thin_handles > 0) {
-      v.line += fmt::format(
-          "; {} suspect: a neck of 3-4 samples, thinner than their spacing (a gap or a "
-          "touching the sampling cannot tell apart)",
-          plural(s.thin_handles, "handle", "handles"));
-    }
-    // Handles the robust carving refused (methods/robust/solid_openings.hpp): the surface spans
-    // a web there, across a gap or a touching, and the genus is the lower one.
-    if (s.refused_handles > 0) {
-      v.line += fmt::format(
-          "; {} refused: a web one sample thin kept (a gap or a touching the sampling cannot "
-          "tell apart)",
-          plural(s.refused_handles, "handle", "handles"));
-    }
   } else {
+    // A bordered surface that is not a manifold still has its border loops to tell.
+    if (surface && bordered) {
+      shape = plural(s.boundary_loops, "border loop", "border loops") + ", " + shape;
+    }
     v.line = fmt::format("NOT a {}: {}; {}", wanted, join(defects), shape);
+  }
+  // Handles the samples cannot vouch for (core/thin_handles.hpp): the genus may be wrong.
+  if (s.thin_handles > 0) {
+    v.line += fmt::format(
+        "; {} suspect: a neck of 3-4 samples, thinner than their spacing (a gap or a "
+        "touching the sampling cannot tell apart)",
+        plural(s.thin_handles, "handle", "handles"));
+  }
+  // Handles the robust carving refused (methods/robust/solid_openings.hpp): the surface spans
+  // a web there, however wide, which only a tunnel one sample wide would have opened; the genus
+  // is the lower one.
+  if (s.refused_handles > 0) {
+    v.line += fmt::format(
+        "; {} refused: a web kept where only a tunnel one sample wide would open it (a hole "
+        "or a touching the sampling cannot tell apart; the genus may be higher)",
+        plural(s.refused_handles, "handle", "handles"));
   }
   // What the surface passes through, and how far its topology can be trusted on noisy samples.
   if (s.cleaned) {
+    // The noise after smoothing is not measured where too few samples can be (-1).
+    const std::string before = s.noise >= 0 ? fmt::format("noise {:.2f} of their spacing", s.noise)
+                                            : std::string("noise not measured");
+    const std::string after = s.noise_after >= 0 ? fmt::format("{:.2f} after", s.noise_after)
+                                                 : std::string("not measured after");
     v.line += fmt::format(
-        "; through the samples smoothed first (noise {:.2f} of their spacing, {:.2f} after; "
-        "moved {:.2f} of it on average)",
-        s.noise, s.noise_after, s.cleaning_shift);
+        "; through the samples smoothed first ({}, {}; moved {:.2f} of the spacing on average)",
+        before, after, s.cleaning_shift);
   } else if (surface && s.noise >= noise_worth_cleaning) {
     v.line += fmt::format(
         "; the samples are noisy ({:.2f} of their spacing): expect a crumpled surface with "

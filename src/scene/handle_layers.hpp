@@ -37,7 +37,7 @@ void add_handle_layers(std::deque<Layer>& layers, const Reconstruction<D>& r) {
     if (refused.empty() || r.delaunay.cells.size() != r.delaunay.cell_count) return;
     Layer& layer = add_layer(
         layers, "refused-handles",
-        "handles refused, one sample wide (" + std::to_string(r.stats.refused_handles) + ")",
+        "handles refused, webs kept (" + std::to_string(r.stats.refused_handles) + ")",
         Primitive::lines, palette::refused_handle, 3.0f);
     for (int cell : refused) {
       const auto& sites = r.delaunay.cells[std::size_t(cell)];
