@@ -8,6 +8,11 @@
 #include <CGAL/IO/STL.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
 #include "atomic_file.hpp"
 #include "output_buffer.hpp"
 #include "ply_writer.hpp"
@@ -67,6 +72,50 @@ void write_obj(std::ostream& out, const std::vector<Point<3>>& samples,
   }
 }
 
+// STL holds what OFF, PLY and OBJ need not: binary STL its coordinates as 32-bit floats, and
+// every STL a normal per facet. Where these coordinates cannot survive that (a part offset far
+// from the origin, as survey coordinates are: a unit sphere at 1e8 collapses to a line; values
+// beyond a float's range), the file would be a different surface, so none is written. A binary
+// vertex may move by at most a hundredth of its triangles' shortest edge; every normal (the
+// cross product of two edges, in doubles) must be finite and not zero.
+void check_stl_holds(const std::string& path, const std::vector<Point<3>>& samples,
+                     const std::vector<Facet<3>>& triangles, bool binary) {
+  const auto refuse = [&](const std::string& why) {
+    throw Error("cannot write '" + destination_of(path) + "' as STL: " + why +
+                "; write .off, .ply or .obj, which keep every coordinate exactly");
+  };
+  for (const auto& t : triangles) {
+    const Point<3>&a = samples[t[0]], &b = samples[t[1]], &c = samples[t[2]];
+    const auto distance = [](const Point<3>& p, const Point<3>& q) {
+      return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                       (p[2] - q[2]) * (p[2] - q[2]));
+    };
+    const double shortest = std::min({distance(a, b), distance(b, c), distance(c, a)});
+    double u[3], v[3];
+    for (int k = 0; k < 3; ++k) u[k] = b[k] - a[k], v[k] = c[k] - a[k];
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                         u[0] * v[1] - u[1] * v[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!std::isfinite(length) || !(length > 0)) {
+      refuse("a facet's normal overflows or vanishes at these coordinates (" +
+             fmt::format("{:g}", std::max({std::abs(a[0]), std::abs(a[1]), std::abs(a[2])})) +
+             ")");
+    }
+    if (!binary) continue;
+    for (const Point<3>* p : {&a, &b, &c}) {
+      for (int k = 0; k < 3; ++k) {
+        const double stored = static_cast<float>((*p)[k]);
+        if (!std::isfinite(stored) || std::abs(stored - (*p)[k]) > shortest / 100) {
+          refuse(fmt::format(
+              "binary STL holds 32-bit floats, and the coordinate {} would become {}, more "
+              "than a hundredth of the edge {:g} of a triangle at it",
+              (*p)[k], stored, shortest));
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void write_surface(const std::string& path, const std::vector<Point<3>>& samples,
@@ -86,6 +135,7 @@ void write_surface(const std::string& path, const std::vector<Point<3>>& samples
     file.commit();
     return;
   }
+  check_stl_holds(path, samples, triangles, binary);
   std::vector<Kernel::Point_3> points;
   points.reserve(samples.size());
   for (const auto& p : samples) points.emplace_back(p[0], p[1], p[2]);

@@ -150,8 +150,11 @@ Point_set read_text_points(Byte_input& input, int forced_dimension, Text_columns
       first_point_line = lines.where();
       set.dimension = forced_dimension ? forced_dimension : (columns >= 3 ? 3 : 2);
       if (columns < static_cast<std::size_t>(set.dimension)) {
+        // Two numbers a line are a plane curve, which this extension does not hold (.xyz).
+        const std::string hint =
+            columns == 2 ? " (a plane curve: name the file .xy, .txt or .csv)" : "";
         throw Error(lines.where() + ": expected " + std::to_string(set.dimension) +
-                    " coordinates, found " + std::to_string(columns));
+                    " coordinates, found " + std::to_string(columns) + hint);
       }
     } else if (numbers.size() < static_cast<std::size_t>(set.dimension) ||
                (!forced_dimension && columns == 2 && numbers.size() > 2)) {
