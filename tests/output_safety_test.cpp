@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Outputs as safe as the readers, through the `sculpt` command: an output never replaces an
 // input, whatever name reaches it; every destination is checked before any work and a run's
-// outputs appear together or not at all; no signal, file-size limit or kill leaves a temporary
+// outputs appear together or not at all; a read-only file is not replaced; no signal, file-size limit or kill leaves a temporary
 // that nothing removes; a report that cannot be written is a failure.
 #include <fcntl.h>
 #include <fmt/format.h>
@@ -93,6 +93,24 @@ TEST(Output_safety, OutputsOfOneRunAreNotOneFileAndNotAFolder) {
     EXPECT_EQ(names_in(folder),
               (std::vector<std::string>{"in.xyz", "pipe.off", "sub", "taken.json"}));
   }
+}
+
+// A file made read-only is not replaced by an output renamed over it (root, who may write to
+// any file, included): the run is refused before any work, the file intact.
+TEST(Output_safety, AReadOnlyFileIsNotReplaced) {
+  const fs::path folder = fresh_folder("read-only");
+  testing::write_file("output-safety/read-only/in.xyz", testing::sphere_points_text(300));
+  testing::write_file("output-safety/read-only/kept.off", "OFF\n0 0 0\n");
+  fs::permissions(folder / "kept.off", fs::perms::owner_read | fs::perms::group_read |
+                                            fs::perms::others_read);
+  const Command_run run = run_sculpt(folder, {"reconstruct", "in.xyz", "-o", "kept.off"});
+  EXPECT_NE(run.exit_code, 0) << run.err;
+  EXPECT_EQ(lines(run.err), 1) << run.err;
+  EXPECT_NE(run.err.find("read-only"), std::string::npos) << run.err;
+  EXPECT_EQ(testing::read_file((folder / "kept.off").string()), "OFF\n0 0 0\n");
+  EXPECT_EQ(names_in(folder), (std::vector<std::string>{"in.xyz", "kept.off"}));
+  fs::permissions(folder / "kept.off", fs::perms::owner_write, fs::perm_options::add);
+  EXPECT_EQ(run_sculpt(folder, {"reconstruct", "in.xyz", "-o", "kept.off"}).exit_code, 0);
 }
 
 TEST(Output_safety, ShotsAreWrittenAllOrNone) {
