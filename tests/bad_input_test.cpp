@@ -28,14 +28,16 @@ TEST(Bad_input, TooFewPoints) {
 TEST(Bad_input, NotFinite) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
-  EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {nan, 1}}).find("point 2"), std::string::npos);
+  // Points are named by their place counted from 1, as a reader of the file counts.
+  EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {nan, 1}}).find("the 3rd point"), std::string::npos);
   EXPECT_NE(refusal<3>({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, inf}}).find("not finite"),
             std::string::npos);
 }
 
 TEST(Bad_input, Duplicates) {
-  EXPECT_NE(refusal<2>({{0, 0}, {1, 0}, {0, 1}, {1, 0}}).find("point 3 duplicates point 1"),
-            std::string::npos);
+  EXPECT_NE(
+      refusal<2>({{0, 0}, {1, 0}, {0, 1}, {1, 0}}).find("the 4th point duplicates the 2nd point"),
+      std::string::npos);
   // Found by the triangulation (the repeat adds no vertex), named as the sorted points name it:
   // the first repeated point in their order, whatever the method and wherever the repeat lies.
   const std::vector<Point<3>> repeats = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2},
@@ -43,7 +45,8 @@ TEST(Bad_input, Duplicates) {
   for (Method method : {Method::robust, Method::paper, Method::cocone}) {
     Options options;
     options.method = method;
-    EXPECT_NE(refusal<3>(repeats, options).find("point 6 duplicates point 0"), std::string::npos)
+    EXPECT_NE(refusal<3>(repeats, options).find("the 7th point duplicates the 1st point"),
+              std::string::npos)
         << to_string(method);
   }
   try {
@@ -51,6 +54,17 @@ TEST(Bad_input, Duplicates) {
     ADD_FAILURE() << "accepted";
   } catch (const Duplicate_points&) {
   }
+}
+
+// One stray point 300 orders of magnitude out: the refusal names it, not the first ordinary
+// point measured against it.
+TEST(Bad_input, ASetSpreadBeyondOneScaleNamesItsFarthestPoint) {
+  std::vector<Point<3>> points = {{0.1, 0.2, 0.3}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
+  points.push_back({1e300, 0.5, 0.5});
+  const std::string refused = refusal<3>(points);
+  EXPECT_NE(refused.find("the 6th point (1.0000000000000001e+300, 0.5, 0.5)"), std::string::npos)
+      << refused;
+  EXPECT_NE(refused.find("orders of magnitude"), std::string::npos) << refused;
 }
 
 TEST(Bad_input, DegenerateSets) {

@@ -13,7 +13,10 @@
 #include <cmath>
 #include <limits>
 #include <sculpt/sculpt.hpp>
+#include <string>
 #include <vector>
+
+#include "point_names.hpp"
 
 namespace sculpt {
 
@@ -82,6 +85,20 @@ Normalisation<D> normalisation_of(const std::vector<Point<D>>& samples) {
   return result;
 }
 
+// The point with the largest coordinate (in size), named with it: what a set too widely
+// spread is measured against, often one stray point.
+template <int D>
+std::string farthest_point(const std::vector<Point<D>>& samples) {
+  std::size_t farthest = 0;
+  double largest = -1;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    for (double x : samples[i]) {
+      if (std::abs(x) > largest) largest = std::abs(x), farthest = i;
+    }
+  }
+  return ordinal_point(farthest) + " " + describe_point<D>(samples[farthest]);
+}
+
 // The normalised samples; throws Input_error where the spread of the coordinates cannot be
 // represented (a coordinate lost in the normalisation, or too small against the extent).
 template <int D>
@@ -93,15 +110,16 @@ std::vector<Point<D>> normalised(const std::vector<Point<D>>& samples, const Nor
     const Point<D> p = n.apply(samples[i]);
     for (int k = 0; k < D; ++k) {
       if (p[k] != 0 && std::abs(p[k]) < smallest) {
-        throw Input_error("point " + std::to_string(i) +
-                          " has a coordinate too small against the size of the set (more than "
-                          "120 orders of magnitude apart) to be represented with the others");
+        throw Input_error(ordinal_point(i) + " has a coordinate too small against " +
+                          farthest_point<D>(samples) +
+                          " (more than 120 orders of magnitude apart) to be represented with it");
       }
     }
     if (n.undo(p) != samples[i]) {
-      throw Input_error("point " + std::to_string(i) +
+      throw Input_error(ordinal_point(i) +
                         " cannot be represented exactly together with the others: the "
-                        "coordinates span too many orders of magnitude");
+                        "coordinates span too many orders of magnitude (" +
+                        farthest_point<D>(samples) + ")");
     }
     result.push_back(p);
   }

@@ -14,17 +14,9 @@
 #include <sstream>
 #include <vector>
 
-namespace sculpt {
+#include "point_names.hpp"
 
-template <int D>
-std::string describe_point(const Point<D>& p) {
-  std::ostringstream out;
-  out.precision(17);
-  out << '(';
-  for (int k = 0; k < D; ++k) out << (k ? ", " : "") << p[k];
-  out << ')';
-  return out.str();
-}
+namespace sculpt {
 
 // The dimension of the smallest affine space holding the points: 0 for a single point, 1 for a
 // line, 2 for a plane, 3 otherwise (exact predicates).
@@ -60,8 +52,8 @@ void refuse_duplicates(const std::vector<Point<D>>& samples) {
   });
   for (std::size_t k = 1; k < order.size(); ++k) {
     if (samples[order[k]] == samples[order[k - 1]]) {
-      throw Duplicate_points("point " + std::to_string(order[k]) + " duplicates point " +
-                             std::to_string(order[k - 1]) + " " +
+      throw Duplicate_points(ordinal_point(order[k]) + " duplicates " +
+                             ordinal_point(order[k - 1]) + " " +
                              describe_point<D>(samples[order[k]]));
     }
   }
@@ -87,7 +79,7 @@ void check_input(const std::vector<Point<Traits::dimension>>& samples, const Opt
   for (std::size_t i = 0; i < samples.size(); ++i) {
     for (double x : samples[i]) {
       if (!std::isfinite(x)) {
-        throw Input_error("point " + std::to_string(i) +
+        throw Input_error(ordinal_point(i) +
                           " has a coordinate that is not finite: " + describe_point<D>(samples[i]));
       }
     }
