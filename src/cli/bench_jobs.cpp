@@ -13,6 +13,7 @@
 #include "bench.hpp"
 #include "bench_process.hpp"
 #include "frontend/command_line.hpp"
+#include "frontend/failure.hpp"
 #include "frontend/input.hpp"
 #include "frontend/shot.hpp"
 #include "render/headless.hpp"
@@ -211,7 +212,9 @@ int run_bench_job(const Bench_job& job) {
         },
         input.points);
   } catch (const std::exception& e) {
-    out = {{"error", e.what()}};
+    // In the words `sculpt` itself uses (with its hints), without "error: ".
+    const std::string line = frontend::failure_line(e);
+    out = {{"error", line.rfind("error: ", 0) == 0 ? line.substr(7) : line}};
   }
   out["own_peak_mib"] = own_peak_mib();
   std::cout << out.dump() << '\n';

@@ -154,6 +154,7 @@ class Comparison {
     }
     grid_rows_ = inputs.size();
     check_a_method_measured(methods_, rows_);
+    check_a_method_succeeded();
     for (std::size_t k = 0; k < inputs.size(); ++k) measure_results(inputs[k].second, rows_[k]);
     if (grid_) grid_->finish();
   }
@@ -206,6 +207,20 @@ class Comparison {
   const std::vector<nlohmann::json>& rows() const { return rows_; }
 
  private:
+  // A comparison in which every method failed on every input compares nothing: the run fails,
+  // in the first failure's words (the same input's refusal, as `reconstruct` says it).
+  void check_a_method_succeeded() const {
+    std::string first;
+    for (const auto& row : rows_) {
+      for (const auto& [method, s] : row["methods"].items()) {
+        if (!s.contains("error")) return;
+        if (first.empty())
+          first = row["input"].get<std::string>() + ": " + s["error"].get<std::string>();
+      }
+    }
+    if (!first.empty()) throw io::Error(first);
+  }
+
   // The results again, in this process (untimed): their vertices, their distance to the
   // reference, and their pictures.
   void measure_results(const std::vector<std::string>& source, nlohmann::json& row) {
