@@ -6,10 +6,12 @@
 // that would open a handle is refused.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "scene/carving_replay.hpp"
+#include "shapes/portable_random.hpp"
 #include "shapes/shapes.hpp"
 #include "test_support.hpp"
 
@@ -127,6 +129,37 @@ TEST(Carving_openings, TheComparingLessonsStepOpensTheBlocksHole) {
 }
 
 // 2D: an annulus's hole is a cavity, opened at one cell: one more curve.
+// A torus (radii 3 and 1, 5,000 samples at random by area) whose samples are noisy by about a
+// tenth of their spacing (0.015 along each axis, 0.12 of the spacing): too little to be
+// smoothed (automatic cleaning starts at 0.3), enough to spoil the manifold at a few vertices of
+// the group of outer cells in its hole. The group still goes, but for its cells at those
+// vertices, and the hole opens.
+std::vector<Point<3>> noisy_torus(unsigned seed, double noise) {
+  shapes::Portable_random random(seed);
+  std::vector<Point<3>> points;
+  while (points.size() < 5000) {
+    const double u = 2 * M_PI * random.unit(), v = 2 * M_PI * random.unit();
+    if (4 * random.unit() > 3 + std::cos(v)) continue;  // uniform by area
+    const double r = 3 + std::cos(v);
+    points.push_back({r * std::cos(u) + noise * random.normal(),
+                      r * std::sin(u) + noise * random.normal(),
+                      std::sin(v) + noise * random.normal()});
+  }
+  return points;
+}
+
+TEST(Carving_openings, ANoisyTorusKeepsItsHole) {
+  int kept = 0;
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const auto r = reconstruct(noisy_torus(seed, 0.015));
+    EXPECT_FALSE(r.stats.cleaned);
+    kept += r.stats.kind == Surface_kind::closed && verdict(r.stats).manifold &&
+            r.stats.components == 1 && r.stats.euler_characteristic == 0;
+  }
+  // 12 of 20; without the spoilt groups 5 (their webs refused as punches, the hole filled).
+  EXPECT_GE(kept, 10);
+}
+
 TEST(Carving_openings, TheAnnulusHoleIsACavityOpened) {
   const auto annulus = carved<2>(shapes::example_points_2("nested"));
   ASSERT_TRUE(verdict(annulus.stats).manifold) << verdict(annulus.stats).line;

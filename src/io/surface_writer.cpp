@@ -76,7 +76,8 @@ void write_obj(std::ostream& out, const std::vector<Point<3>>& samples,
 // every STL a normal per facet. Where these coordinates cannot survive that (a part offset far
 // from the origin, as survey coordinates are: a unit sphere at 1e8 collapses to a line; values
 // beyond a float's range), the file would be a different surface, so none is written. A binary
-// vertex may move by at most a hundredth of its triangles' shortest edge; every normal (the
+// vertex may move by at most a tenth of its triangles' shortest edge (CAD meshes hold edges of a
+// millimetre at hundreds of millimetres: floats move them by 1%, as STL always did); every normal (the
 // cross product of two edges, in doubles) must be finite and not zero.
 void check_stl_holds(const std::string& path, const std::vector<Point<3>>& samples,
                      const std::vector<Facet<3>>& triangles, bool binary) {
@@ -105,10 +106,10 @@ void check_stl_holds(const std::string& path, const std::vector<Point<3>>& sampl
     for (const Point<3>* p : {&a, &b, &c}) {
       for (int k = 0; k < 3; ++k) {
         const double stored = static_cast<float>((*p)[k]);
-        if (!std::isfinite(stored) || std::abs(stored - (*p)[k]) > shortest / 100) {
+        if (!std::isfinite(stored) || std::abs(stored - (*p)[k]) > shortest / 10) {
           refuse(fmt::format(
               "binary STL holds 32-bit floats, and the coordinate {} would become {}, more "
-              "than a hundredth of the edge {:g} of a triangle at it",
+              "than a tenth of the edge {:g} of a triangle at it",
               (*p)[k], stored, shortest));
         }
       }

@@ -5,7 +5,8 @@
 // cavity is never reached from the outside. Three steps remove outer cells several at once:
 //   - a cavity, a group of outer cells enclosed by the solid, is opened at one cell when most
 //     samples on it have their outer pole inside it;
-//   - a group of outer cells that touches the outside is removed whole (a handle opens);
+//   - a group of outer cells that touches the outside is removed whole (a handle opens), or,
+//     where noise spoils the manifold at a few of its vertices, all but its cells there;
 //   - a web of outer cells with no free edge to carve from is punched through at a cell and the
 //     outer cells around the vertex or edge that blocks it.
 // Each goes only where the surface stays a 2-manifold at every vertex it touches, no sample
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cstdint>
 #include <sculpt/sculpt.hpp>
 #include <set>
@@ -22,24 +24,25 @@
 #include <vector>
 
 #include "../../core/cells_around_edge.hpp"
-#include "buried_samples.hpp"
 #include "piece_evidence.hpp"
+#include "spoilt_groups.hpp"
 
 namespace sculpt {
 
 template <class Traits>
-class Solid_openings : public Buried_samples<Traits> {
+class Solid_openings : public Spoilt_groups<Traits> {
  public:
-  using Buried_samples<Traits>::Buried_samples;
+  using Spoilt_groups<Traits>::Spoilt_groups;
 
  protected:
-  using Base = Buried_samples<Traits>;
+  using Base = Spoilt_groups<Traits>;
   static constexpr int D = Traits::dimension;
   using Base::carve_queue;
   using Base::is_outside;
   using Base::judged_outer;
   using Base::judged_reason;
   using Base::manifold_at;
+  using Base::most_handles_of_a_spoilt_group;
   using Base::outside_;
   using Base::outside_cells_at_;
   using Base::outside_facets;
@@ -54,6 +57,7 @@ class Solid_openings : public Buried_samples<Traits> {
   using Base::tick_;
   using Base::triangulation_;
   using Base::unchanged_since;
+  using Base::without_spoilt_vertices;
   using typename Base::Cell_handle;
   using typename Base::Vertex_handle;
 
@@ -165,7 +169,8 @@ class Solid_openings : public Buried_samples<Traits> {
   // Sculpting by Boissonnat's condition never changes the topology of the solid: a torus stays
   // filled, its hole a wall of outer cells that cannot be removed one at a time. Each connected
   // group of outer cells still in the solid is tried as a whole: it goes if the surface stays a
-  // manifold at every vertex of the group and no sample leaves the solid.
+  // manifold at every vertex of the group and no sample leaves the solid; else, spoilt at a few
+  // vertices only, without its cells there.
   void open_handles() {
     std::vector<Cell_handle> group;
     for (int round = 0; round < 4; ++round) {
@@ -178,7 +183,19 @@ class Solid_openings : public Buried_samples<Traits> {
         }
         bool enclosed = false;
         outer_group(start, group, enclosed);
-        opened = (!enclosed && try_remove_group(group, Opening_kind::group)) || opened;
+        if (enclosed) continue;
+        if (try_remove_group(group, Opening_kind::group)) {
+          opened = true;
+          continue;
+        }
+        // Noise spoils the manifold at a few of a group's vertices (a torus's hole through
+        // samples noisy by a tenth of their spacing): the rest of the group goes (see
+        // without_spoilt_vertices).
+        if (without_spoilt_vertices(group) &&
+            try_remove_group(group, Opening_kind::group, nullptr, nullptr,
+                             most_handles_of_a_spoilt_group)) {
+          opened = true;
+        }
       }
       if (!opened) break;
     }
@@ -335,7 +352,8 @@ class Solid_openings : public Buried_samples<Traits> {
   // would cut a piece off).
   // `opens_handle`, when given, is set when a punch was refused because it would open a handle.
   bool try_remove_group(const std::vector<Cell_handle>& group, Opening_kind kind,
-                        Vertex_handle* failed_at = nullptr, bool* opens_handle = nullptr) {
+                        Vertex_handle* failed_at = nullptr, bool* opens_handle = nullptr,
+                        int fewest_change = INT_MIN) {
     // Callers pass groups that touch the outside (pockets inside the solid are cavities' business).
     for (Cell_handle cell : group) set_outside(cell, true);
     // Each vertex of the group once: the cells around a vertex all share it (punch_through's
@@ -355,6 +373,7 @@ class Solid_openings : public Buried_samples<Traits> {
     }
     if (fine) fine = !cuts_off_small_piece(group);
     const int change = fine ? euler_change_of_removal(group) : 0;
+    if (fine && change < fewest_change) fine = false;
     if (fine && kind == Opening_kind::punch && change < 0) {
       fine = false;
       if (opens_handle) *opens_handle = true;
