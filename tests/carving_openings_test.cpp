@@ -128,7 +128,6 @@ TEST(Carving_openings, TheComparingLessonsStepOpensTheBlocksHole) {
   EXPECT_EQ(block.stats.refused_handles, 1u);
 }
 
-// 2D: an annulus's hole is a cavity, opened at one cell: one more curve.
 // A torus (radii 3 and 1, 5,000 samples at random by area) whose samples are noisy by about a
 // tenth of their spacing (0.015 along each axis, 0.12 of the spacing): too little to be
 // smoothed (automatic cleaning starts at 0.3), enough to spoil the manifold at a few vertices of
@@ -160,6 +159,7 @@ TEST(Carving_openings, ANoisyTorusKeepsItsHole) {
   EXPECT_GE(kept, 10);
 }
 
+// 2D: an annulus's hole is a cavity, opened at one cell: one more curve.
 TEST(Carving_openings, TheAnnulusHoleIsACavityOpened) {
   const auto annulus = carved<2>(shapes::example_points_2("nested"));
   ASSERT_TRUE(verdict(annulus.stats).manifold) << verdict(annulus.stats).line;

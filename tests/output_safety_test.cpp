@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Outputs as safe as the readers, through the `sculpt` command: an output never replaces an
 // input, whatever name reaches it; every destination is checked before any work and a run's
-// outputs appear together or not at all; a read-only file is not replaced; no signal, file-size limit or kill leaves a temporary
-// that nothing removes; a report that cannot be written is a failure.
+// outputs appear together or not at all; a read-only file is not replaced; no signal, file-size
+// limit or kill leaves a temporary that nothing removes; a report that cannot be written is a
+// failure.
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <gtest/gtest.h>

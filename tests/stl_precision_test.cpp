@@ -42,12 +42,12 @@ TEST(Stl_precision, APartFarFromTheOriginIsRefusedAsBinaryStl) {
   io::write_surface(output_path("far-ascii.stl"), far, surface, /*ascii=*/true);
   io::write_surface(output_path("far.off"), far, surface, /*ascii=*/false);
   io::write_surface(output_path("near.stl"), near, surface, /*ascii=*/false);
-  // A part two millimetres across in metres, ten kilometres out: floats move it by up to 5e-4,
-  // more than its triangles' edges (2e-4): refused too.
+  // A part two millimetres across in metres, ten kilometres out: floats there are 1e-3 apart,
+  // more than its triangles' edges (2e-4): they collapse, refused too.
   EXPECT_THROW(io::write_surface(output_path("km.stl"), moved(near, 1e4, 1e-3), surface, false),
                io::Error);
   // A CAD part's small triangles (edges of 2e-3) hundreds of units out: floats move them by
-  // under 1%, as STL always has: written.
+  // under 1%, as STL always has, without turning one over: written.
   io::write_surface(output_path("cad.stl"), moved(near, 384, 1e-2), surface, false);
 }
 

@@ -213,8 +213,8 @@ int run_bench_job(const Bench_job& job) {
         input.points);
   } catch (const std::exception& e) {
     // In the words `sculpt` itself uses (with its hints), without "error: ".
-    const std::string line = frontend::failure_line(e);
-    out = {{"error", line.rfind("error: ", 0) == 0 ? line.substr(7) : line}};
+    const std::string line = frontend::failure_line(e), prefix = "error: ";
+    out = {{"error", line.rfind(prefix, 0) == 0 ? line.substr(prefix.size()) : line}};
   }
   out["own_peak_mib"] = own_peak_mib();
   std::cout << out.dump() << '\n';

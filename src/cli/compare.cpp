@@ -83,14 +83,13 @@ std::string short_verdict(const nlohmann::json& stats) {
   const std::string line = stats["verdict"];
   const bool defective = line.rfind("NOT", 0) == 0;
   std::string cell = line.substr(0, line.find(defective ? ';' : ':'));
+  const auto handles = [](std::size_t n) {
+    return fmt::format("{} handle{}", n, n == 1 ? "" : "s");
+  };
   const std::size_t suspect = stats.value("thin_handles", std::size_t{0});
   const std::size_t refused = stats.value("refused_handles", std::size_t{0});
-  if (suspect > 0)
-    cell +=
-        fmt::format("; {} suspect", suspect == 1 ? "1 handle" : fmt::format("{} handles", suspect));
-  if (refused > 0)
-    cell +=
-        fmt::format("; {} refused", refused == 1 ? "1 handle" : fmt::format("{} handles", refused));
+  if (suspect > 0) cell += "; " + handles(suspect) + " suspect";
+  if (refused > 0) cell += "; " + handles(refused) + " refused";
   return cell;
 }
 
@@ -208,11 +207,14 @@ class Comparison {
 
  private:
   // A comparison in which every method failed on every input compares nothing: the run fails,
-  // in the first failure's words (the same input's refusal, as `reconstruct` says it).
+  // in the words of the first failure, inputs and methods in the order asked (the same input's
+  // refusal, as `reconstruct` says it).
   void check_a_method_succeeded() const {
     std::string first;
     for (const auto& row : rows_) {
-      for (const auto& [method, s] : row["methods"].items()) {
+      for (const auto& method : methods_) {
+        if (!row["methods"].contains(method)) continue;  // not for this dimension
+        const auto& s = row["methods"][method];
         if (!s.contains("error")) return;
         if (first.empty())
           first = row["input"].get<std::string>() + ": " + s["error"].get<std::string>();

@@ -85,10 +85,10 @@ Normalisation<D> normalisation_of(const std::vector<Point<D>>& samples) {
   return result;
 }
 
-// The point with the largest coordinate (in size), named with it: what a set too widely
-// spread is measured against, often one stray point.
+// The point with the largest coordinate (in size), named with it: what a set too widely spread
+// is measured against, often one stray point (it may be the point refused itself).
 template <int D>
-std::string farthest_point(const std::vector<Point<D>>& samples) {
+std::string point_of_largest_coordinate(const std::vector<Point<D>>& samples) {
   std::size_t farthest = 0;
   double largest = -1;
   for (std::size_t i = 0; i < samples.size(); ++i) {
@@ -111,7 +111,7 @@ std::vector<Point<D>> normalised(const std::vector<Point<D>>& samples, const Nor
     for (int k = 0; k < D; ++k) {
       if (p[k] != 0 && std::abs(p[k]) < smallest) {
         throw Input_error(ordinal_point(i) + " has a coordinate too small against " +
-                          farthest_point<D>(samples) +
+                          point_of_largest_coordinate<D>(samples) +
                           " (more than 120 orders of magnitude apart) to be represented with it");
       }
     }
@@ -119,7 +119,7 @@ std::vector<Point<D>> normalised(const std::vector<Point<D>>& samples, const Nor
       throw Input_error(ordinal_point(i) +
                         " cannot be represented exactly together with the others: the "
                         "coordinates span too many orders of magnitude (" +
-                        farthest_point<D>(samples) + ")");
+                        point_of_largest_coordinate<D>(samples) + ")");
     }
     result.push_back(p);
   }

@@ -179,12 +179,14 @@ double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& n
     squares += (row[terms] - fitted) * (row[terms] - fitted);
   }
   // Both sides of a wall thinner than the neighbourhood: what the quadric leaves is the wall's
-  // thickness, not noise (two_sheets.hpp).
+  // thickness, not noise (two_sheets.hpp). Left out, as a thin tube is: what two sheets fitted
+  // apart leave would read the noise low wherever one noisy sheet splits by chance, and the
+  // smooth end of the measure is made of the lowest readings.
   if constexpr (D == 3) {
     std::vector<std::array<double, 3>> local;
     local.reserve(rows.size());
     for (const auto& row : rows) local.push_back({row[1], row[2], row[terms]});
-    if (two_sheets(local, 4)) return -1;
+    if (two_sheet_noise(local)) return -1;
   }
   return size * std::sqrt(squares / (count - terms));
 }

@@ -64,7 +64,8 @@ template <int D>
 inline constexpr std::size_t facets_capping_an_opening = D == 2 ? 1 : 2;
 
 // Whether `spanning` facets over openings are enough to have capped one. If not, keeps_bordered
-// cannot keep a bordered result (it needs an opening capped by that many), so none is made.
+// cannot keep a bordered result (it needs an opening capped by that many), so none is made,
+// unless the closed result has no surface at all.
 template <int D>
 bool caps_an_opening(std::size_t spanning) {
   return spanning >= facets_capping_an_opening<D>;

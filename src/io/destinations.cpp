@@ -60,16 +60,8 @@ void check_destination(const std::string& path, const std::vector<std::string>& 
                         "it is not a regular file (a pipe, a device or a socket); an "
                         "output replaces a file"));
   }
-  // A file made read-only is kept so on purpose: the output would replace it (a new file
-  // renamed over it) where writing into it is refused, and root may write to it anyway.
-  struct stat mode {};
-  if (fs::exists(status) && ::stat(path.c_str(), &mode) == 0 &&
-      ((mode.st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0)) {
-    throw Error(refusal(path, "it is read-only; an output replaces a file only where it may be "
-                              "written (choose another name, or make it writable)"));
-  }
   const auto destination = identity_of(path);
-  if (!destination) return;  // a new file: no input can be it
+  if (!destination) return;  // a new file: no input can be it, and nothing to keep
   for (const std::string& input : inputs) {
     if (identity_of(input) == destination) {
       throw Error(refusal(path, input == path ? "it is the input; an output never replaces an "
@@ -84,6 +76,15 @@ void check_destination(const std::string& path, const std::vector<std::string>& 
     throw Error(refusal(path,
                         "it was read as input; an output never replaces an input (choose "
                         "another name)"));
+  }
+  // A file made read-only is kept so on purpose: the output would replace it (a new file
+  // renamed over it) where writing into it is refused, and root may write to it anyway.
+  struct stat mode {};
+  if (::stat(path.c_str(), &mode) == 0 &&
+      ((mode.st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0)) {
+    throw Error(refusal(path,
+                        "it is read-only; an output replaces a file only where it may be "
+                        "written (choose another name, or make it writable)"));
   }
 }
 

@@ -9,8 +9,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "atomic_file.hpp"
@@ -73,47 +75,74 @@ void write_obj(std::ostream& out, const std::vector<Point<3>>& samples,
 }
 
 // STL holds what OFF, PLY and OBJ need not: binary STL its coordinates as 32-bit floats, and
-// every STL a normal per facet. Where these coordinates cannot survive that (a part offset far
-// from the origin, as survey coordinates are: a unit sphere at 1e8 collapses to a line; values
-// beyond a float's range), the file would be a different surface, so none is written. A binary
-// vertex may move by at most a tenth of its triangles' shortest edge (CAD meshes hold edges of a
-// millimetre at hundreds of millimetres: floats move them by 1%, as STL always did); every normal (the
-// cross product of two edges, in doubles) must be finite and not zero.
+// every STL a normal per facet, computed in doubles. Where these coordinates cannot survive that,
+// the file would be another surface, so none is written:
+//   - binary: a coordinate beyond a float's range, or more than 1% of the triangles collapsed or
+//     turned over by rounding to floats (a part far from the origin, as survey coordinates are: a
+//     unit sphere at 1e8, where floats are 8 apart, collapses onto a line). Rounding that moves
+//     vertices, or turns over a sliver here and there, is STL's own, as it always was (CGAL's
+//     rotor_small: 1 sliver of 4,511; ALSTOM_TEST4: edges of 0.001 near 384, moved by 1%);
+//   - any STL: a facet normal that overflows or underflows in doubles, its squared length out of
+//     range (coordinates beyond about 1e+-77: `nan` normals). A triangle without area at ordinary
+//     coordinates is the surface's, not the format's, and is left to the writer.
 void check_stl_holds(const std::string& path, const std::vector<Point<3>>& samples,
                      const std::vector<Facet<3>>& triangles, bool binary) {
   const auto refuse = [&](const std::string& why) {
     throw Error("cannot write '" + destination_of(path) + "' as STL: " + why +
                 "; write .off, .ply or .obj, which keep every coordinate exactly");
   };
+  using Vector = std::array<double, 3>;
+  const auto cross = [](const Vector& u, const Vector& v) {
+    return Vector{u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+  };
+  const auto dot = [](const Vector& u, const Vector& v) {
+    return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  };
+  // The triangle's normal (unnormalised), and the same with its edges scaled to at most 1: the
+  // direction, whatever the coordinates' size.
+  const auto normals = [&](const Point<3>& a, const Point<3>& b, const Point<3>& c) {
+    Vector u, v;
+    double scale = 0;
+    for (int k = 0; k < 3; ++k) {
+      u[k] = b[k] - a[k], v[k] = c[k] - a[k];
+      scale = std::max({scale, std::abs(u[k]), std::abs(v[k])});
+    }
+    const Vector n = cross(u, v);
+    if (!(scale > 0) || !std::isfinite(scale)) return std::pair<Vector, Vector>{n, Vector{}};
+    for (int k = 0; k < 3; ++k) u[k] /= scale, v[k] /= scale;
+    return std::pair<Vector, Vector>{n, cross(u, v)};
+  };
+  std::size_t collapsed = 0;
   for (const auto& t : triangles) {
     const Point<3>&a = samples[t[0]], &b = samples[t[1]], &c = samples[t[2]];
-    const auto distance = [](const Point<3>& p, const Point<3>& q) {
-      return std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
-                       (p[2] - q[2]) * (p[2] - q[2]));
-    };
-    const double shortest = std::min({distance(a, b), distance(b, c), distance(c, a)});
-    double u[3], v[3];
-    for (int k = 0; k < 3; ++k) u[k] = b[k] - a[k], v[k] = c[k] - a[k];
-    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
-                         u[0] * v[1] - u[1] * v[0]};
-    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (!std::isfinite(length) || !(length > 0)) {
-      refuse("a facet's normal overflows or vanishes at these coordinates (" +
-             fmt::format("{:g}", std::max({std::abs(a[0]), std::abs(a[1]), std::abs(a[2])})) +
-             ")");
+    const auto [n, direction] = normals(a, b, c);
+    const double length2 = dot(n, n);
+    if (dot(direction, direction) > 0 && (!std::isfinite(length2) || !(length2 > 0))) {
+      refuse(
+          fmt::format("a facet's normal overflows or underflows at these coordinates ({}, "
+                      "{}, {})",
+                      a[0], a[1], a[2]));
     }
     if (!binary) continue;
-    for (const Point<3>* p : {&a, &b, &c}) {
+    Point<3> rounded[3];
+    for (int j = 0; j < 3; ++j) {
       for (int k = 0; k < 3; ++k) {
-        const double stored = static_cast<float>((*p)[k]);
-        if (!std::isfinite(stored) || std::abs(stored - (*p)[k]) > shortest / 10) {
-          refuse(fmt::format(
-              "binary STL holds 32-bit floats, and the coordinate {} would become {}, more "
-              "than a tenth of the edge {:g} of a triangle at it",
-              (*p)[k], stored, shortest));
+        const double x = samples[t[j]][k];
+        rounded[j][k] = static_cast<float>(x);
+        if (!std::isfinite(rounded[j][k])) {
+          refuse(fmt::format("binary STL holds 32-bit floats, which cannot hold {}", x));
         }
       }
     }
+    const Vector stored = normals(rounded[0], rounded[1], rounded[2]).second;
+    collapsed += dot(direction, direction) > 0 && !(dot(stored, direction) > 0);
+  }
+  if (collapsed > triangles.size() / 100) {
+    refuse(fmt::format(
+        "binary STL holds 32-bit floats, which would collapse or turn over {} of its {} "
+        "triangles at these coordinates (text STL keeps doubles; or move the part near the "
+        "origin)",
+        collapsed, triangles.size()));
   }
 }
 

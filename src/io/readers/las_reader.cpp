@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "attribute_collector.hpp"
+#include "core/point_names.hpp"
 #include "formats.hpp"
 #include "io/io_error.hpp"
 
@@ -117,7 +118,7 @@ Point_set read_las(Byte_input& input) {
     for (int k = 0; k < 3; ++k) {
       point[k] = little_endian_int32(bytes.data() + 4 * k) * scale[k] + offset[k];
       if (!std::isfinite(point[k])) {
-        throw Error(input.name() + ": point " + std::to_string(i) +
+        throw Error(input.name() + ": " + ordinal_point(i) +
                     " has a coordinate that is not finite");
       }
     }

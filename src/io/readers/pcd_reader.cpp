@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/point_names.hpp"
 #include "formats.hpp"
 #include "io/io_error.hpp"
 #include "text_lines.hpp"
@@ -160,7 +161,7 @@ Point_set read_pcd(Byte_input& input) {
       return;
     }
     if (!std::isfinite(point[0]) || !std::isfinite(point[1]) || !std::isfinite(point[2])) {
-      throw Error(input.name() + ": point " + std::to_string(index) +
+      throw Error(input.name() + ": " + ordinal_point(index) +
                   " has a coordinate that is infinite");
     }
     add_vertex(set, point, input);

@@ -38,11 +38,11 @@ class Solid_openings : public Spoilt_groups<Traits> {
   using Base = Spoilt_groups<Traits>;
   static constexpr int D = Traits::dimension;
   using Base::carve_queue;
+  using Base::fewest_euler_change_of_a_spoilt_group;
   using Base::is_outside;
   using Base::judged_outer;
   using Base::judged_reason;
   using Base::manifold_at;
-  using Base::most_handles_of_a_spoilt_group;
   using Base::outside_;
   using Base::outside_cells_at_;
   using Base::outside_facets;
@@ -193,7 +193,7 @@ class Solid_openings : public Spoilt_groups<Traits> {
         // without_spoilt_vertices).
         if (without_spoilt_vertices(group) &&
             try_remove_group(group, Opening_kind::group, nullptr, nullptr,
-                             most_handles_of_a_spoilt_group)) {
+                             fewest_euler_change_of_a_spoilt_group)) {
           opened = true;
         }
       }

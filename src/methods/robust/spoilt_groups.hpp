@@ -21,6 +21,7 @@ class Spoilt_groups : public Buried_samples<Traits> {
   static constexpr int D = Traits::dimension;
   using Base::is_outside;
   using Base::manifold_at;
+  using Base::outside_;
   using Base::set_outside;
   using Base::solid_cells_at_;
   using typename Base::Cell_handle;
@@ -32,13 +33,31 @@ class Spoilt_groups : public Buried_samples<Traits> {
   // cut down to what can go. At each vertex that would leave the solid or stop being a
   // manifold, the group's cells beside the solid stay (or, where none is, all its cells there),
   // until no vertex fails; only cells still reaching the outside through the group are kept.
-  // False when the group fails at more vertices, or nothing is left. The removal may then open
-  // one handle at most (most_handles_of_a_spoilt_group): between limbs that touch, a group
-  // spoilt at a few vertices opens several at once, through the touchings (CGAL's camel: 3,
-  // homer: 2), where a hole opens one.
+  // False when the group as a whole fails at more vertices (the share is the whole group's;
+  // the passes that follow cut on until none fails), or nothing is left. The removal may then
+  // open one handle at most (fewest_euler_change_of_a_spoilt_group): between limbs that touch, a
+  // group spoilt at a few vertices opens several at once, through the touchings (CGAL's camel:
+  // 3, homer: 2), where a hole opens one. A group cut down once is not cut down again in a
+  // later round (spoilt_before_), whether its removal went or not: a region has one such chance.
   static constexpr double spoilt_share = 0.05;
-  static constexpr int most_handles_of_a_spoilt_group = -1;  // the change of Euler characteristic
+  static constexpr int fewest_euler_change_of_a_spoilt_group = -1;  // one handle opened
   bool without_spoilt_vertices(std::vector<Cell_handle>& group) {
+    if (spoilt_before_.size() != outside_.size()) spoilt_before_.assign(outside_.size(), 0);
+    for (Cell_handle cell : group) {
+      if (spoilt_before_[cell->info()]) return false;
+    }
+    const std::vector<Cell_handle> whole = group;
+    const bool cut = cut_down(group);
+    if (cut) {
+      for (Cell_handle cell : whole) spoilt_before_[cell->info()] = 1;
+    }
+    return cut;
+  }
+
+ private:
+  std::vector<char> spoilt_before_;  // per cell: in a group cut down before
+
+  bool cut_down(std::vector<Cell_handle>& group) {
     std::vector<Vertex_handle> vertices, failing;
     std::vector<Cell_handle> kept, reach;
     std::unordered_map<int, char> in_group;
@@ -87,10 +106,13 @@ class Spoilt_groups : public Buried_samples<Traits> {
         }
         return false;
       };
+      // Beside the solid: next to a solid cell that is not in the group any more (never was,
+      // or no longer reaches the outside through it).
       const auto beside_solid = [&](Cell_handle cell) {
         for (int i = 0; i <= D; ++i) {
           const Cell_handle n = cell->neighbor(i);
-          if (!is_outside(n) && in_group.find(n->info()) == in_group.end()) return true;
+          const auto found = in_group.find(n->info());
+          if (!is_outside(n) && (found == in_group.end() || found->second != 2)) return true;
         }
         return false;
       };
