@@ -129,7 +129,7 @@ TEST(Carving_openings, TheComparingLessonsStepOpensTheBlocksHole) {
 }
 
 // A torus (radii 3 and 1, 5,000 samples at random by area) whose samples are noisy by about a
-// tenth of their spacing (0.015 along each axis, 0.12 of the spacing): too little to be
+// sixth of their spacing (0.02 along each axis, 0.16 of the spacing): too little to be
 // smoothed (automatic cleaning starts at 0.3), enough to spoil the manifold at a few vertices of
 // the group of outer cells in its hole. The group still goes, but for its cells at those
 // vertices, and the hole opens.
@@ -150,13 +150,13 @@ std::vector<Point<3>> noisy_torus(unsigned seed, double noise) {
 TEST(Carving_openings, ANoisyTorusKeepsItsHole) {
   int kept = 0;
   for (unsigned seed = 1; seed <= 20; ++seed) {
-    const auto r = reconstruct(noisy_torus(seed, 0.015));
+    const auto r = reconstruct(noisy_torus(seed, 0.02));
     EXPECT_FALSE(r.stats.cleaned);
     kept += r.stats.kind == Surface_kind::closed && verdict(r.stats).manifold &&
             r.stats.components == 1 && r.stats.euler_characteristic == 0;
   }
-  // 12 of 20; without the spoilt groups 5 (their webs refused as punches, the hole filled).
-  EXPECT_GE(kept, 10);
+  // 17 of 20; without the spoilt groups 2 (their webs refused as punches, the hole filled).
+  EXPECT_GE(kept, 14);
 }
 
 // 2D: an annulus's hole is a cavity, opened at one cell: one more curve.
