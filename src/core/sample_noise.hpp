@@ -186,7 +186,7 @@ double roughness(const std::vector<Point<D>>& samples, const std::vector<int>& n
     std::vector<std::array<double, 3>> local;
     local.reserve(rows.size());
     for (const auto& row : rows) local.push_back({row[1], row[2], row[terms]});
-    if (two_sheet_noise(local)) return -1;
+    if (lie_on_two_sheets(local)) return -1;
   }
   return size * std::sqrt(squares / (count - terms));
 }

@@ -14,16 +14,13 @@
 //   sheets_apart standard deviations of what is left (h - q - s t) apart: 2 t >= 4 sd (and
 //   apart at all: points exactly on one plane are one sheet)
 //
-// What is left is then the noise on each sheet: its standard deviation is returned (the noise
-// measure only asks whether there are two sheets: see sample_noise.hpp). One sheet of Gaussian
-// noise splits at its middle, the halves ±0.80 σ, 0.60 σ about them: 2.65 deviations
-// apart; 4 leaves room for the spread of 15 points (the noise measure's neighbourhood; fewer
-// than 2 sheet_at_least + 7 points, the unknowns q and t, are never two sheets).
+// One sheet of Gaussian noise splits at its middle, the halves ±0.80 σ, 0.60 σ about them: 2.65
+// deviations apart; 4 leaves room for the spread of 15 points (the noise measure's neighbourhood;
+// fewer than 2 sheet_at_least + 7 points, the unknowns q and t, are never two sheets).
 #pragma once
 
 #include <array>
 #include <cmath>
-#include <optional>
 #include <vector>
 
 #include "quadric_fit.hpp"
@@ -33,23 +30,22 @@ namespace sculpt {
 inline constexpr double sheets_apart = 4.0;
 inline constexpr int sheet_at_least = 4;
 
-// `points`: (u, v, h) in a frame over the neighbours' best plane. The deviation of the noise on
-// the two sheets, in the points' units, where they lie on two; nothing where on one.
-inline std::optional<double> two_sheet_noise(const std::vector<std::array<double, 3>>& points) {
+// `points`: (u, v, h) in a frame over the neighbours' best plane.
+inline bool lie_on_two_sheets(const std::vector<std::array<double, 3>>& points) {
   const std::size_t count = points.size();
   const std::size_t at_least = sheet_at_least;
-  if (count < 2 * at_least + 7) return std::nullopt;  // 7 unknowns: q and t
+  if (count < 2 * at_least + 7) return false;  // 7 unknowns: q and t
   std::vector<double> heights(count), side(count);
   for (std::size_t j = 0; j < count; ++j) heights[j] = points[j][2];
   double q[6];
-  if (!fit_quadric(points, heights, q)) return std::nullopt;
+  if (!fit_quadric(points, heights, q)) return false;
   for (std::size_t j = 0; j < count; ++j) {
     side[j] = points[j][2] >= quadric_at(q, points[j][0], points[j][1]) ? 1 : -1;
   }
   double t = 0;
   for (int round = 0; round < 4; ++round) {
     for (std::size_t j = 0; j < count; ++j) heights[j] = points[j][2] - side[j] * t;
-    if (!fit_quadric(points, heights, q)) return std::nullopt;
+    if (!fit_quadric(points, heights, q)) return false;
     t = 0;
     for (std::size_t j = 0; j < count; ++j) {
       t += side[j] * (points[j][2] - quadric_at(q, points[j][0], points[j][1])) / double(count);
@@ -65,10 +61,9 @@ inline std::optional<double> two_sheet_noise(const std::vector<std::array<double
     const double left = points[j][2] - quadric_at(q, points[j][0], points[j][1]) - side[j] * t;
     squares += left * left;
   }
-  if (above < at_least || count - above < at_least) return std::nullopt;
+  if (above < at_least || count - above < at_least) return false;
   const double deviation = std::sqrt(squares / double(count - 7));
-  if (!(t > 0) || 2 * t < sheets_apart * deviation) return std::nullopt;
-  return deviation;
+  return t > 0 && 2 * t >= sheets_apart * deviation;
 }
 
 }  // namespace sculpt

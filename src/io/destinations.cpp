@@ -79,9 +79,9 @@ void check_destination(const std::string& path, const std::vector<std::string>& 
   }
   // A file made read-only is kept so on purpose: the output would replace it (a new file
   // renamed over it) where writing into it is refused, and root may write to it anyway.
-  struct stat mode {};
-  if (::stat(path.c_str(), &mode) == 0 &&
-      ((mode.st_mode & 0222) == 0 || ::access(path.c_str(), W_OK) != 0)) {
+  constexpr fs::perms writable =
+      fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+  if ((status.permissions() & writable) == fs::perms::none || ::access(path.c_str(), W_OK) != 0) {
     throw Error(refusal(path,
                         "it is read-only; an output replaces a file only where it may be "
                         "written (choose another name, or make it writable)"));
