@@ -66,6 +66,7 @@ TEST(Verdict, TheGenusOfSeveralPiecesIsTheirSum) {
 TEST(Verdict, NoiseThatCouldNotBeMeasuredIsSaidSo) {
   Statistics s = closed_surface(2, 1);
   s.cleaned = true;
+  s.smoothed = true;
   s.noise = 0.25;
   s.noise_after = -1;
   s.cleaning_shift = 0.96;
@@ -74,6 +75,25 @@ TEST(Verdict, NoiseThatCouldNotBeMeasuredIsSaidSo) {
   s.noise = -1;
   s.noise_after = 0.02;
   EXPECT_TRUE(says(s, "noise not measured, 0.02 after")) << verdict(s).line;
+}
+
+TEST(Verdict, OutliersRemovedAreNotOnTheSurface) {
+  Statistics s = closed_surface(2, 1);
+  s.cleaned = true;
+  s.outliers_removed = 1;
+  EXPECT_TRUE(says(s, "; through the samples cleaned first (1 outlier removed, not on it)"))
+      << verdict(s).line;
+  s.outliers_removed = 0;
+  EXPECT_TRUE(says(s, "cleaned first (no outlier found)")) << verdict(s).line;
+  s.outliers_removed = 12;
+  s.smoothed = true;
+  s.noise = 0.5;
+  s.noise_after = 0.02;
+  s.cleaning_shift = 0.3;
+  EXPECT_TRUE(says(s,
+                   "cleaned first (12 outliers removed, not on it; smoothed: noise 0.50 of "
+                   "their spacing, 0.02 after; moved 0.30 of the spacing on average)"))
+      << verdict(s).line;
 }
 
 TEST(Point_names, CountedFromOneAsOrdinals) {

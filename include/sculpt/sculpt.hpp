@@ -97,13 +97,16 @@ enum class Method {
 ///              loses such facets, e.g. 17 of 79 edges of a sampled sine curve).
 enum class Surface_rule { automatic, skin, extraction };
 
-/// Smoothing the samples before any method (driver/cleaning.hpp): noise of a third of the
-/// samples' spacing crumples an interpolating surface into invented handles. `jet` moves each
+/// Cleaning the samples before any method (driver/cleaning.hpp). `outliers` removes the samples
+/// that no surface through their neighbours passes near (core/outlying_samples.hpp): a scanner's
+/// stray returns, which an interpolating surface would pass through as spikes. `jet` moves each
 /// sample onto the quadric fitted to its 24 nearest samples (CGAL's jet smoothing, Cazals &
-/// Pouget 2005), surfaces only; `automatic` does so where the robust method reconstructs a
-/// surface from samples whose measured noise (Statistics::noise) is at least
-/// noise_worth_cleaning; `none` never. The surface then passes through the smoothed samples.
-enum class Cleaning { none, automatic, jet };
+/// Pouget 2005): noise of a third of the samples' spacing crumples an interpolating surface into
+/// invented handles. `outliers_and_jet` does both, in that order; `automatic` does both where the
+/// robust method reconstructs a surface from samples whose measured noise (Statistics::noise) is
+/// at least noise_worth_cleaning; `none` never. Surfaces only. The surface then passes through
+/// the cleaned samples, and not through the outliers removed.
+enum class Cleaning { none, automatic, jet, outliers, outliers_and_jet };
 
 /// The noise (of the spacing) from which the automatic cleaning smooths: a sphere of 20,000
 /// samples with noise of 0.2 of its spacing comes back of genus 0, with 0.3 of genus 2.
@@ -440,8 +443,10 @@ struct Statistics {
   /// The samples' noise over their spacing (core/sample_noise.hpp), as given; -1 when not
   /// measured (fewer than 100 samples).
   double noise = -1;
-  bool cleaned = false;       ///< the samples were smoothed (Options::cleaning) before the method
-  double noise_after = -1;    ///< cleaned: the noise of the smoothed samples
+  bool cleaned = false;   ///< the samples were cleaned (Options::cleaning) before the method
+  bool smoothed = false;  ///< cleaned: by jet smoothing
+  std::size_t outliers_removed = 0;  ///< cleaned: outliers removed (not on the surface)
+  double noise_after = -1;           ///< cleaned: the noise of the cleaned samples
   double cleaning_shift = 0;  ///< cleaned: how far the samples moved, on average, over the spacing
   std::vector<Stage_measure> stages;
   double total_seconds = 0;
@@ -479,9 +484,11 @@ struct Reconstruction {
   std::vector<Facet<D>> surface;        ///< 8: oriented facets; closed: normals point outward
   /// 3D, a closed surface of genus > 0: its thin handles, the evidence for Statistics::thin_handles
   std::vector<Thin_handle> thin_handles;
-  /// 0 (when Statistics::cleaned): the samples as they were given, before smoothing; the sites'
-  /// first points are the smoothed samples, which the surface passes through.
+  /// 0 (when Statistics::cleaned): the samples as they were given, before cleaning; the sites'
+  /// first points are the cleaned samples, which the surface passes through: those given, but
+  /// the outliers removed, in their order, smoothed where Statistics::smoothed.
   std::vector<Point<D>> given_samples;
+  std::vector<int> removed_outliers;  ///< 0: the outliers removed, as indices of given_samples
   ///< A method that does not interpolate (the power crust) makes vertices of its own: then the
   ///< surface's facets index these instead of the samples.
   std::vector<Point<D>> surface_vertices;
@@ -590,8 +597,10 @@ const char* to_string(Label_reason reason);
 const char* to_string(Surface_rule rule);
 const char* to_string(Surface_kind kind);
 const char* to_string(Cleaning cleaning);
-bool parse_cleaning(const std::string& name, Cleaning& cleaning);  ///< none, auto, jet
-bool parse_kind(const std::string& name, Surface_kind& kind);      ///< closed, bordered, automatic
+bool parse_cleaning(const std::string& name, Cleaning& cleaning);  ///< cleaning_choices
+/// The cleanings by name, as the command line, the viewer and Python take them: "auto, none, ..."
+const char* cleaning_choices();
+bool parse_kind(const std::string& name, Surface_kind& kind);  ///< closed, bordered, automatic
 const char* version();
 
 }  // namespace sculpt

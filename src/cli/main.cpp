@@ -256,12 +256,13 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
   reconstruct
       ->add_option("--clean", args.cleaning,
-                   "Smooth the samples first (3D): jet (CGAL's jet smoothing), none, or auto "
-                   "(robust, where the measured noise is at least 0.3 of the spacing: noise that "
-                   "crumples an interpolating surface). The surface passes through the smoothed "
-                   "samples; the report and the verdict say so")
+                   "Clean the samples first (3D): outliers (remove samples far off their "
+                   "neighbours' surface), jet (CGAL's jet smoothing), outliers+jet, none, or auto "
+                   "(both, for the robust method, where the measured noise is at least 0.3 of the "
+                   "spacing: noise that crumples an interpolating surface). The surface passes "
+                   "through the cleaned samples; the report and the verdict say so")
       ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "jet", "none"}));
+      ->check(CLI::IsMember({"auto", "none", "outliers", "jet", "outliers+jet"}));
   reconstruct
       ->add_option("--seed-sample", args.seed_sample,
                    "Bordered: seed with the convex pole of this sample (-1: chosen)")

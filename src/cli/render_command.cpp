@@ -69,10 +69,11 @@ void add_render_command(CLI::App& app, Render_arguments& args) {
       ->check(CLI::IsMember({"auto", "skin", "extraction"}));
   render
       ->add_option("--clean", shot.clean,
-                   "Smooth the samples first (3D): auto, jet or none (as reconstruct's); the "
-                   "samples stage then shows them as given and as smoothed")
+                   "Clean the samples first (3D): auto, none, outliers, jet or outliers+jet (as "
+                   "reconstruct's); the samples stage then shows them as given, the outliers "
+                   "removed and where smoothing moved them")
       ->capture_default_str()
-      ->check(CLI::IsMember({"auto", "jet", "none"}));
+      ->check(CLI::IsMember({"auto", "none", "outliers", "jet", "outliers+jet"}));
   render->add_option("--layers", shot.layers, "Only these layers (comma separated)")
       ->delimiter(',');
   render

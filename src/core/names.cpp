@@ -189,12 +189,21 @@ const char* to_string(Cleaning cleaning) {
       return "auto";
     case Cleaning::jet:
       return "jet";
+    case Cleaning::outliers:
+      return "outliers";
+    case Cleaning::outliers_and_jet:
+      return "outliers+jet";
   }
   return "?";
 }
 
+const char* cleaning_choices() {
+  return "auto, none, outliers, jet, outliers+jet";
+}
+
 bool parse_cleaning(const std::string& name, Cleaning& cleaning) {
-  for (Cleaning c : {Cleaning::none, Cleaning::automatic, Cleaning::jet}) {
+  for (Cleaning c : {Cleaning::none, Cleaning::automatic, Cleaning::jet, Cleaning::outliers,
+                     Cleaning::outliers_and_jet}) {
     if (name == to_string(c)) {
       cleaning = c;
       return true;

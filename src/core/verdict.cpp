@@ -100,18 +100,30 @@ Verdict verdict(const Statistics& s) {
   }
   // What the surface passes through, and how far its topology can be trusted on noisy samples.
   if (s.cleaned) {
-    // The noise after smoothing is not measured where too few samples can be (-1).
-    const std::string before = s.noise >= 0 ? fmt::format("noise {:.2f} of their spacing", s.noise)
-                                            : std::string("noise not measured");
-    const std::string after = s.noise_after >= 0 ? fmt::format("{:.2f} after", s.noise_after)
-                                                 : std::string("not measured after");
-    v.line += fmt::format(
-        "; through the samples smoothed first ({}, {}; moved {:.2f} of the spacing on average)",
-        before, after, s.cleaning_shift);
+    std::vector<std::string> done;
+    if (s.outliers_removed > 0 || !s.smoothed) {
+      done.push_back(s.outliers_removed == 0
+                         ? std::string("no outlier found")
+                         : fmt::format("{} removed, not on it",
+                                       plural(s.outliers_removed, "outlier", "outliers")));
+    }
+    if (s.smoothed) {
+      // The noise after smoothing is not measured where too few samples can be (-1).
+      const std::string before = s.noise >= 0
+                                     ? fmt::format("noise {:.2f} of their spacing", s.noise)
+                                     : std::string("noise not measured");
+      const std::string after = s.noise_after >= 0 ? fmt::format("{:.2f} after", s.noise_after)
+                                                   : std::string("not measured after");
+      done.push_back(fmt::format("smoothed: {}, {}; moved {:.2f} of the spacing on average", before,
+                                 after, s.cleaning_shift));
+    }
+    std::string what;
+    for (const auto& part : done) what += (what.empty() ? "" : "; ") + part;
+    v.line += fmt::format("; through the samples cleaned first ({})", what);
   } else if (surface && s.noise >= noise_worth_cleaning) {
     v.line += fmt::format(
         "; the samples are noisy ({:.2f} of their spacing): expect a crumpled surface with "
-        "invented handles (cleaning jet smooths them first)",
+        "invented handles (cleaning outliers+jet cleans them first)",
         s.noise);
   }
   return v;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Stage 0, before any method: the samples' noise measured (core/sample_noise.hpp) and, where
 // Options::cleaning asks or the noise would crumple the robust method's surface, the samples
-// smoothed (core/jet_smoothing.hpp). Interpolation then interpolates the smoothed samples: the
-// statistics and the verdict say so, and the samples as given stay in the result to be drawn.
+// cleaned: outliers removed (core/outlying_samples.hpp), then the rest smoothed
+// (core/jet_smoothing.hpp). Interpolation then interpolates the cleaned samples: the statistics
+// and the verdict say so, and the samples as given stay in the result to be drawn.
 #pragma once
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "../core/jet_smoothing.hpp"
+#include "../core/outlying_samples.hpp"
 #include "../core/sample_noise.hpp"
 #include "../core/stage_clock.hpp"
 
@@ -26,18 +28,81 @@ inline constexpr unsigned jet_neighbours = 24;
 inline constexpr double quiet_after_cleaning = 0.1;
 inline constexpr int jet_passes_at_most = 4;
 
-// Whether the samples are smoothed: asked for, or (automatic) the robust method on a surface
-// whose noise would crumple it. Throws Input_error where smoothing is asked and cannot be done.
-inline bool smooths(const Options& options, int dimension, std::size_t samples, double noise) {
-  if (options.cleaning == Cleaning::jet) {
-    if (dimension != 3) {
-      throw Input_error(
-          "cleaning (jet smoothing) smooths surfaces' samples (3D points), not curves'");
+// What the cleaning does: asked for, or (automatic) both where the robust method reconstructs a
+// surface from samples whose noise would crumple it. The outliers of noisy samples go with the
+// noise; those of clean samples are removed only when asked (a mesh's lone vertices, far from
+// denser ones, look like outliers: core/outlying_samples.hpp). Throws Input_error where a
+// cleaning is asked for curves' samples.
+struct Cleaning_plan {
+  bool removes_outliers = false;
+  bool smooths = false;
+  bool any() const { return removes_outliers || smooths; }
+};
+
+inline Cleaning_plan cleaning_plan(const Options& options, int dimension, double noise) {
+  switch (options.cleaning) {
+    case Cleaning::none:
+      return {};
+    case Cleaning::automatic: {
+      const bool noisy =
+          options.method == Method::robust && dimension == 3 && noise >= noise_worth_cleaning;
+      return {noisy, noisy};
     }
-    return samples >= 100;  // fewer are refused below
+    case Cleaning::jet:
+    case Cleaning::outliers:
+    case Cleaning::outliers_and_jet:
+      break;
   }
-  return options.cleaning == Cleaning::automatic && options.method == Method::robust &&
-         dimension == 3 && noise >= noise_worth_cleaning;
+  if (dimension != 3) {
+    throw Input_error(std::string("cleaning (") + to_string(options.cleaning) +
+                      ") cleans surfaces' samples (3D points), not curves'");
+  }
+  return {options.cleaning != Cleaning::jet, options.cleaning != Cleaning::outliers};
+}
+
+// The samples but those listed (increasing), in their order.
+template <int D>
+std::vector<Point<D>> without(const std::vector<Point<D>>& samples, const std::vector<int>& gone) {
+  std::vector<Point<D>> kept;
+  kept.reserve(samples.size() - gone.size());
+  auto next_gone = gone.begin();
+  for (int i = 0; i < static_cast<int>(samples.size()); ++i) {
+    if (next_gone != gone.end() && *next_gone == i) {
+      ++next_gone;
+    } else {
+      kept.push_back(samples[i]);
+    }
+  }
+  return kept;
+}
+
+// The outliers (core/outlying_samples.hpp), found again among the samples left until none is
+// found, at most four times: two outliers side by side each count the other among their
+// neighbours, and the second shows alone once the first is gone.
+inline std::vector<int> outliers_removed_in_rounds(const std::vector<Point<3>>& samples) {
+  std::vector<int> removed;
+  std::vector<int> given_index(samples.size());  // of the samples left
+  for (std::size_t i = 0; i < samples.size(); ++i) given_index[i] = static_cast<int>(i);
+  std::vector<Point<3>> left = samples;
+  for (int round = 0; round < 4; ++round) {
+    const std::vector<int> found = outlying_samples(left);
+    if (found.empty()) break;
+    for (int i : found) removed.push_back(given_index[i]);
+    left = without<3>(left, found);
+    std::vector<int> still;
+    still.reserve(left.size());
+    auto next_found = found.begin();
+    for (int i = 0; i < static_cast<int>(given_index.size()); ++i) {
+      if (next_found != found.end() && *next_found == i) {
+        ++next_found;
+      } else {
+        still.push_back(given_index[i]);
+      }
+    }
+    given_index = std::move(still);
+  }
+  std::sort(removed.begin(), removed.end());
+  return removed;
 }
 
 // `reconstruct(samples, options)` runs the method (and the kind's choice) on the samples given.
@@ -51,15 +116,15 @@ Reconstruction<D> reconstruct_cleaned(const std::vector<Point<D>>& samples, cons
   auto start = Clock::now();
   const Noise_measure given = measure_noise<D>(samples);
   const double noise_seconds = seconds_since(start);
-  if (options.cleaning == Cleaning::jet && samples.size() < 100) {
-    throw Input_error("cleaning (jet smoothing) fits each sample's " +
-                      std::to_string(jet_neighbours) +
-                      " nearest: it needs at least 100 samples, "
-                      "not " +
+  const Cleaning_plan plan = cleaning_plan(options, D, given.noise);
+  if (plan.any() && options.cleaning != Cleaning::automatic && samples.size() < 100) {
+    throw Input_error(std::string("cleaning (") + to_string(options.cleaning) +
+                      ") judges each sample by its nearest (" + std::to_string(jet_neighbours) +
+                      " for the smoothing): it needs at least 100 samples, not " +
                       std::to_string(samples.size()));
   }
   // Coordinates that are not numbers are the input's to refuse (the input checks name them),
-  // before any smoothing; a smoothing that made some of its own is refused as such.
+  // before any cleaning; a smoothing that made some of its own is refused as such.
   const auto finite = [](const std::vector<Point<D>>& points) {
     return std::all_of(points.begin(), points.end(), [](const Point<D>& p) {
       return std::all_of(p.begin(), p.end(), [](double x) { return std::isfinite(x); });
@@ -67,42 +132,51 @@ Reconstruction<D> reconstruct_cleaned(const std::vector<Point<D>>& samples, cons
   };
   Reconstruction<D> result;
   std::optional<Stage_measure> cleaning;
-  if (!smooths(options, D, samples.size(), given.noise) || !finite(samples)) {
+  if (!plan.any() || samples.size() < 100 || !finite(samples)) {
     result = reconstruct(samples, options);
   } else {
     start = Clock::now();
+    std::vector<int> removed;
+    if constexpr (D == 3) {
+      if (plan.removes_outliers) removed = outliers_removed_in_rounds(samples);
+    }
+    const std::vector<Point<D>> kept = without<D>(samples, removed);
+    std::vector<Point<D>> cleaned = kept;
+    Noise_measure after = measure_noise<D>(kept);
     // One pass of jet smoothing leaves about a tenth of the noise, but gathered into bumps a few
     // samples wide, which the measure reads low and a surface through the samples still
     // crumples over: CGAL's fandisk, anchor and joint sampled 35,000 times with noise of 0.5% of
     // the diagonal came back of genus 15, 25 and 5 after one pass, and of their own (0, 4, 2)
     // after two or three. So the passes repeat until the measure reads a tenth of the noise
     // that asks for cleaning, at most four.
-    std::vector<Point<D>> smoothed = samples;
-    Noise_measure after = given;
-    for (int pass = 0; pass < jet_passes_at_most &&
+    for (int pass = 0; plan.smooths && pass < jet_passes_at_most &&
                        (pass == 0 || after.noise >= quiet_after_cleaning * noise_worth_cleaning);
          ++pass) {
-      if constexpr (D == 3) smoothed = jet_smoothed(smoothed, jet_neighbours);
-      if (!finite(smoothed)) {
+      if constexpr (D == 3) cleaned = jet_smoothed(cleaned, jet_neighbours);
+      if (!finite(cleaned)) {
         throw Input_error(
             "cleaning (jet smoothing) failed on these samples: a neighbourhood is degenerate "
             "(collinear or repeated samples); reconstruct them without it (cleaning none)");
       }
-      after = measure_noise<D>(smoothed);
+      after = measure_noise<D>(cleaned);
     }
     double moved = 0;
-    for (std::size_t i = 0; i < samples.size(); ++i) {
+    for (std::size_t i = 0; i < kept.size(); ++i) {
       double d2 = 0;
-      for (int k = 0; k < D; ++k)
-        d2 += (smoothed[i][k] - samples[i][k]) * (smoothed[i][k] - samples[i][k]);
-      moved += std::sqrt(d2) / static_cast<double>(samples.size());
+      for (int k = 0; k < D; ++k) d2 += (cleaned[i][k] - kept[i][k]) * (cleaned[i][k] - kept[i][k]);
+      moved += std::sqrt(d2) / static_cast<double>(kept.size());
     }
     cleaning = Stage_measure{"cleaning", seconds_since(start), peak_memory_mib()};
-    result = reconstruct(smoothed, options);
+    result = reconstruct(cleaned, options);
     result.stats.cleaned = true;
+    result.stats.smoothed = plan.smooths;
+    result.stats.outliers_removed = removed.size();
     result.stats.noise_after = after.noise;
     result.stats.cleaning_shift = given.spacing > 0 ? moved / given.spacing : 0;
-    if (options.keep_triangulations) result.given_samples = samples;  // the viewer draws them
+    if (options.keep_triangulations) {  // the viewer draws them
+      result.given_samples = samples;
+      result.removed_outliers = std::move(removed);
+    }
   }
   result.stats.noise = given.noise;
   // Measuring the noise is one of the checks of the input; the cleaning a stage of its own, the

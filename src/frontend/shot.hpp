@@ -25,7 +25,7 @@ struct Shot {
   double box_factor = Options{}.box_factor;
   double alpha = Options{}.alpha;
   std::string rule = "auto";
-  std::string clean = "auto";  // Options::cleaning by name: auto, jet, none
+  std::string clean = "auto";  // Options::cleaning by name (cleaning_choices)
   std::vector<std::string> layers;
   std::string clip;     // 3D cut-away "POSITION,AZIMUTH,ELEVATION" (scene::Clip); empty: none
   std::string section;  // 3D true section at the plane "POSITION,AZIMUTH,ELEVATION"; empty: none

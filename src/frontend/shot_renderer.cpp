@@ -72,7 +72,7 @@ Options Shot_renderer::options_of(const Shot& shot) {
     throw io::Error("no surface rule '" + shot.rule + "' (rules: auto, skin, extraction)");
   }
   if (!parse_cleaning(shot.clean, options.cleaning)) {
-    throw io::Error("no cleaning '" + shot.clean + "' (cleanings: auto, jet, none)");
+    throw io::Error("no cleaning '" + shot.clean + "' (cleanings: " + cleaning_choices() + ")");
   }
   // An example is reconstructed as its own kind, as in the viewer and the command line.
   options.kind = kind_of(shot);

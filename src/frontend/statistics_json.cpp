@@ -32,6 +32,8 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"samples", stats.samples},
       {"noise", stats.noise},
       {"cleaned", stats.cleaned},
+      {"smoothed", stats.smoothed},
+      {"outliers_removed", stats.outliers_removed},
       {"noise_after", stats.noise_after},
       {"cleaning_shift", stats.cleaning_shift},
       {"normalisation",

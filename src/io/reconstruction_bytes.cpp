@@ -13,8 +13,8 @@ namespace {
 
 // "SCRB" and a version: bytes of another layout are refused, not misread.
 constexpr std::uint32_t magic = 0x42524353;
-constexpr std::uint32_t format_version =
-    4;  // 2: the front and alpha stages; 3: openings, refused handles; 4: short loops
+constexpr std::uint32_t format_version = 5;  // 2: the front and alpha stages; 3: openings, refused
+                                             // handles; 4: short loops; 5: outliers removed
 
 class Byte_writer {
  public:
@@ -89,12 +89,12 @@ class Byte_reader {
 // A field added to these structures must be added to the lists below: their sizes on the two
 // machines the project builds for (x86-64, WebAssembly) are checked, so that the compiler says so.
 constexpr bool wasm32 = sizeof(void*) == 4;
-static_assert(sizeof(Statistics) == (wasm32 ? 288 : 472),
+static_assert(sizeof(Statistics) == (wasm32 ? 288 : 480),
               "a statistic to carry: statistics_fields");
 // Written raw: no padding whose bytes would be undefined.
 static_assert(std::has_unique_object_representations_v<Carving_opening>);
 static_assert(sizeof(Options) == (wasm32 ? 72 : 80), "an option to carry: options_fields");
-static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 792 : 1416), "a stage to carry: stage_fields");
+static_assert(sizeof(Reconstruction<3>) == (wasm32 ? 808 : 1448), "a stage to carry: stage_fields");
 
 // One list of every field, read or written by the same code: a field cannot be written and then
 // forgotten when read. `io` is a Byte_writer (fields const) or a Byte_reader.
@@ -122,6 +122,8 @@ void statistics_fields(Io& io, Statistics_ref& s) {
   io.value(s.samples);
   io.value(s.noise);
   io.value(s.cleaned);
+  io.value(s.smoothed);
+  io.value(s.outliers_removed);
   io.value(s.noise_after);
   io.value(s.cleaning_shift);
   io.value(s.translation);
@@ -213,6 +215,7 @@ void stage_fields(Io& io, Reconstruction_ref& r) {
   io.values(r.thin_handles);
   io.values(r.surface_vertices);
   io.values(r.given_samples);
+  io.values(r.removed_outliers);
 }
 
 }  // namespace

@@ -107,7 +107,7 @@ Result reconstruct_points(const py::object& points, const std::string& method,
   result.options = options_from(method, kind, rule, box_factor, alpha, bordered_seed_sample,
                                 keep_triangulations);
   if (!parse_cleaning(clean, result.options.cleaning)) {
-    throw Input_error("no cleaning '" + clean + "' (cleanings: auto, jet, none)");
+    throw Input_error("no cleaning '" + clean + "' (cleanings: " + cleaning_choices() + ")");
   }
   auto bridge = std::make_shared<Progress_bridge>(progress);
   Options options = result.options;
@@ -214,7 +214,8 @@ void bind_reconstruction(py::module_& m) {
             return result.samples_array;
           },
           "The samples, (n, d) float64, in the order given: a writable array of your own. "
-          "Smoothed when stats['cleaned'] (the surface passes through these).")
+          "When stats['cleaned'], the cleaned samples: those given but the outliers removed, "
+          "smoothed where stats['smoothed'] (the surface passes through these).")
       .def_property_readonly(
           "given_samples",
           [](py::object self) -> py::object {
@@ -223,8 +224,19 @@ void bind_reconstruction(py::module_& m) {
               return rows_view(self, r.given_samples);
             });
           },
-          "When the samples were smoothed (clean=...) and the triangulations kept (the "
+          "When the samples were cleaned (clean=...) and the triangulations kept (the "
           "default), the points as given, (n, d), read-only; None otherwise.")
+      .def_property_readonly(
+          "removed_outliers",
+          [](const Result& result) -> py::object {
+            return visit(result, [&](const auto& r) -> py::object {
+              if (r.given_samples.empty()) return py::none();
+              return py::array_t<int>(static_cast<py::ssize_t>(r.removed_outliers.size()),
+                                      r.removed_outliers.data());
+            });
+          },
+          "With given_samples: the indices (in given_samples) of the outliers the cleaning "
+          "removed, which the surface does not pass through, int array; None otherwise.")
       .def_property_readonly(
           "sites", rows_property([](const auto& r) -> const auto& { return r.sites; }),
           "The triangulations' sites, (s, d): the samples, the 2^d box corners, then the poles "
@@ -316,11 +328,13 @@ keep_triangulations  keep the cells of the triangulations (the stages' pictures 
                      False computes as the command line does, with less memory (and for
                      advancing-front and alpha-shape, without DT(S + BBV) and the poles)
 merge_duplicates     drop points that repeat an earlier one (else sculpt.DuplicatePoints)
-clean                smooth the samples first (3D): 'jet' (CGAL's jet smoothing), 'none', or
-                     'auto' (robust, where stats['noise'], the noise over the samples' spacing,
-                     is at least 0.3: noise that crumples an interpolating surface); the surface
-                     then passes through the smoothed samples (result.samples, stats['cleaned'],
-                     result.given_samples the points as given)
+clean                clean the samples first (3D): 'outliers' (remove samples far off their
+                     neighbours' surface), 'jet' (CGAL's jet smoothing), 'outliers+jet', 'none',
+                     or 'auto' (both, for robust, where stats['noise'], the noise over the
+                     samples' spacing, is at least 0.3: noise that crumples an interpolating
+                     surface); the surface then passes through the cleaned samples
+                     (result.samples, stats['cleaned'], result.given_samples the points as
+                     given, result.removed_outliers those it does not pass through)
 progress             progress(stage, fraction) is called as each stage starts and ends (and
                      within the long ones); progress(stage, fraction, overall), if it takes
                      three arguments, also gets the whole run's fraction, which only grows

@@ -55,6 +55,7 @@ const std::vector<Counterpart>& counterparts() {
       {p::opening, {1.000f, 0.700f, 0.000f}},
       {p::contradicted_pole, {0.000f, 0.300f, 0.500f}},
       {p::undersampled, {0.700f, 0.700f, 0.700f}},
+      {p::removed_outlier, {0.835f, 0.369f, 0.000f}},  // beside black samples, grey as given
   };
   return table;
 }

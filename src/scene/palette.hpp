@@ -11,8 +11,9 @@
 namespace sculpt::scene::palette {
 
 inline constexpr Color sample{0.05f, 0.55f, 0.10f};
-inline constexpr Color given_sample{0.55f, 0.55f, 0.60f};    // before the smoothing: grey
-inline constexpr Color smoothing_move{0.85f, 0.35f, 0.75f};  // from given to smoothed: magenta
+inline constexpr Color given_sample{0.55f, 0.55f, 0.60f};     // before the cleaning: grey
+inline constexpr Color smoothing_move{0.85f, 0.35f, 0.75f};   // from given to smoothed: magenta
+inline constexpr Color removed_outlier{0.95f, 0.15f, 0.15f};  // removed by the cleaning: red
 inline constexpr Color delaunay_edge{0.40f, 0.55f, 0.95f};
 // Lighter than the samples: the same hue as the paper's, apart at a glance (palette_test.cpp).
 inline constexpr Color voronoi_edge{0.50f, 0.82f, 0.40f};

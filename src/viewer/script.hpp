@@ -11,7 +11,8 @@
 //   expect-busy         fail unless a reconstruction is running (the UI is not blocked)
 //   stage poles         show a stage (next / previous step through them)
 //   method crust        reconstruct the loaded input again with another method
-//   clean jet           the same with the samples smoothed first (auto: when noisy; none)
+//   clean jet           the same with the samples smoothed first (outliers, outliers+jet,
+//                       auto: both when noisy; none)
 //   compare paper,robust  two to four methods side by side on the points shown, one camera
 //                       for all, each with its verdict (wait: until all have come); compare off
 //   step 25             a replay: the first 25 labelling events (propagation) or carving steps

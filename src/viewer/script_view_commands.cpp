@@ -187,7 +187,7 @@ bool run_view_command(Script_line& line) {
   } else if (line.command == "method") {
     if (line.needs_argument("a method name")) line.done(viewer.switch_method(line.argument));
   } else if (line.command == "clean") {
-    if (line.needs_argument("auto, jet or none")) line.done(viewer.switch_cleaning(line.argument));
+    if (line.needs_argument(cleaning_choices())) line.done(viewer.switch_cleaning(line.argument));
   } else if (line.command == "figure") {
     if (line.needs_argument("a figure (fig01 ... fig15)"))
       line.done(viewer.open_figure(line.argument));

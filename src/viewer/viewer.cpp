@@ -87,7 +87,7 @@ bool Viewer::switch_cleaning(const std::string& name) {
   const auto known = std::find_if(std::begin(cleaning_names), std::end(cleaning_names),
                                   [&](const char* n) { return name == n; });
   if (known == std::end(cleaning_names)) {
-    message_ = "no cleaning '" + name + "' (auto, jet or none)";
+    message_ = "no cleaning '" + name + "' (" + cleaning_choices() + ")";
     return false;
   }
   if (last_request_.path.empty() && last_request_.example.empty() && !editor_.active()) {

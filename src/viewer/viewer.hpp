@@ -341,7 +341,7 @@ class Viewer {
   bool merge_duplicates_ = false;
   float alpha_ = static_cast<float>(Options{}.alpha);
   int rule_ = 0;      // auto, skin, extraction
-  int cleaning_ = 0;  // auto, jet, none (cleaning_names)
+  int cleaning_ = 0;  // an index of cleaning_names
   int method_ = 0;    // index in method_names()
 
   // Replay playback (the labelling, the carving).

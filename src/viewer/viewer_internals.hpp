@@ -19,7 +19,7 @@ inline Method method_at(int index) {
 }
 
 inline const char* const rule_names[] = {"auto", "skin", "extraction"};
-inline const char* const cleaning_names[] = {"auto", "jet", "none"};
+inline const char* const cleaning_names[] = {"auto", "jet", "none", "outliers", "outliers+jet"};
 
 // What makes two reconstructions the same: their input and options.
 inline std::string request_key(const Job_request& r) {

@@ -73,12 +73,14 @@ void Viewer::draw_panel(int height) {
             "whose solid is one piece holding every sample");
     }
     ImGui::Combo("surface rule", &rule_, rule_names, 3);
-    ImGui::Combo("clean samples", &cleaning_, cleaning_names, 3);
+    ImGui::Combo("clean samples", &cleaning_, cleaning_names, IM_ARRAYSIZE(cleaning_names));
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip(
-          "Smooth noisy samples first (3D): jet fits a quadric to each sample's 24 nearest and "
-          "moves it onto it; auto does so for the robust method when the noise is a third of "
-          "the spacing or more, which crumples an interpolating surface; none never");
+          "Clean the samples first (3D): outliers removes samples far off the surface of their "
+          "nearest (a scanner's stray returns, spikes on an interpolating surface); jet fits a "
+          "quadric to each sample's 24 nearest and moves it onto it; auto does both for the "
+          "robust method when the noise is a third of the spacing or more, which crumples an "
+          "interpolating surface; none never");
     if (ImGui::Button("Reconstruct again") && !busy() &&
         (!last_request_.path.empty() || !last_request_.example.empty() || editor_.active()))
       rerun();

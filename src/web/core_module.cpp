@@ -67,7 +67,8 @@ sculpt::Options options_from(const nlohmann::json& json) {
   }
   if (const auto clean = json.value("clean", std::string()); !clean.empty()) {
     if (!sculpt::parse_cleaning(clean, options.cleaning))
-      throw sculpt::io::Error("no cleaning '" + clean + "' (cleanings: auto, jet, none)");
+      throw sculpt::io::Error("no cleaning '" + clean +
+                              "' (cleanings: " + sculpt::cleaning_choices() + ")");
   }
   options.alpha = json.value("alpha", options.alpha);
   options.box_factor = json.value("boxFactor", options.box_factor);

@@ -420,6 +420,31 @@ def test_noisy_samples_are_smoothed_first_and_the_command_line_agrees(sculpt_cli
     assert run.returncode == 2 and len(run.stderr.strip().splitlines()) == 1
 
 
+def test_outliers_are_removed_where_asked_and_the_command_line_agrees(sculpt_cli, tmp_path):
+    points = noisy_sphere(3000, 0.05)
+    strays = points[:5] * 1.4  # far outside, 6 spacings and more
+    given = np.vstack([points, strays])
+    kept = sculpt.reconstruct(given)  # clean samples: the automatic cleaning leaves them
+    assert not kept.stats["cleaned"] and kept.removed_outliers is None
+    cleaned = sculpt.reconstruct(given, clean="outliers")
+    assert cleaned.stats["cleaned"] and not cleaned.stats["smoothed"]
+    assert cleaned.stats["outliers_removed"] == 5
+    assert list(cleaned.removed_outliers) == [3000, 3001, 3002, 3003, 3004]
+    assert np.array_equal(cleaned.samples, points)  # the others as given, in their order
+    assert np.array_equal(cleaned.given_samples, given)
+    assert "5 outliers removed, not on it" in cleaned.verdict
+
+    path = tmp_path / "strays.xyz"
+    np.savetxt(path, given, fmt="%.17g")
+    stats = tmp_path / "outliers.json"
+    out = tmp_path / "out.off"
+    run = sculpt_cli("reconstruct", path, "-o", out, "--clean", "outliers", "--stats", stats)
+    assert run.returncode == 0, run.stderr
+    assert json.loads(stats.read_text())["outliers_removed"] == 5
+    assert "outliers removed" in run.stdout
+    assert out.read_text().splitlines()[1].split()[0] == "3000"  # the vertices are those kept
+
+
 def thin_torus(around, along=40, tube_radius=0.11):
     """Samples in rings of `around` around a tube of a torus, each ring turned half a step."""
     ring = np.repeat(np.arange(along), around)
