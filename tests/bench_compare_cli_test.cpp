@@ -167,5 +167,35 @@ TEST(Cli, CompareFailsWhenNoMethodSucceeds) {
   EXPECT_EQ(merged.exit_code, 0) << merged.err;
 }
 
+// `compare --clean` cleans the samples for every method alike, and the verdict column says so.
+TEST(Cli, CompareCleansTheSamplesForEveryMethod) {
+  std::string points;
+  const int n = 2000;
+  for (int i = 0; i < n; ++i) {  // a Fibonacci sphere, then three strays far outside it
+    const double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), phi = 2.399963 * i;
+    points += fmt::format("{} {} {}\n", r * std::cos(phi), r * std::sin(phi), z);
+  }
+  points += "1.6 0.1 0.2\n0.1 -1.7 0.3\n-0.2 0.1 1.8\n";
+  const auto input = write_file("compare-strays.xyz", points);
+  const auto json = output_path("compare-strays.json"), table = output_path("compare-strays.md");
+  const Command_result run =
+      run_sculpt("compare " + input + " --methods robust,cocone --clean outliers --json " + json +
+                 " --markdown " + table);
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto rows = nlohmann::json::parse(read_file(json));
+  for (const char* method : {"robust", "cocone"}) {
+    const auto& s = rows[0]["methods"][method];
+    EXPECT_EQ(s.value("outliers_removed", 0), 3) << method << ": " << s.dump();
+  }
+  const std::string markdown = read_file(table);
+  const auto first = markdown.find("; 3 outliers removed");
+  ASSERT_NE(first, std::string::npos) << markdown;
+  EXPECT_NE(markdown.find("; 3 outliers removed", first + 1), std::string::npos) << markdown;
+  // As given (the automatic cleaning leaves clean samples alone), the strays are on it.
+  ASSERT_EQ(run_sculpt("compare " + input + " --methods robust --json " + json).exit_code, 0);
+  EXPECT_EQ(nlohmann::json::parse(read_file(json))[0]["methods"]["robust"].value("cleaned", true),
+            false);
+}
+
 }  // namespace
 }  // namespace sculpt

@@ -65,6 +65,14 @@ std::vector<std::pair<std::string, std::vector<std::string>>> bench_inputs(
       throw frontend::Usage_error("unknown example '" + example + "'");
     inputs.push_back({example, {"--example", example}});
   }
+  // The cleaning asked travels with each input to the measuring process (files and examples).
+  if (args.cleaning != to_string(Options{}.cleaning)) {
+    for (auto& input : inputs) {
+      if (input.second.front() == "--torus") continue;
+      input.second.push_back("--clean");
+      input.second.push_back(args.cleaning);
+    }
+  }
   if (args.torus_points > 0) {
     inputs.emplace_back(fmt::format("torus {}", args.torus_points),
                         std::vector<std::string>{"--torus", std::to_string(args.torus_points)});

@@ -24,7 +24,8 @@ struct Bench_arguments {
   bool advancing_front = true;       // also CGAL's Advancing Front (3D)
   bool bordered = false, closed = false;  // neither: each file's kind is chosen from it
   bool merge_duplicates = false;
-  std::string json;  // write the rows as JSON too
+  std::string cleaning = "auto";  // Options::cleaning by name, for every method measured
+  std::string json;               // write the rows as JSON too
 };
 
 int run_bench(const Bench_arguments& args);
@@ -56,6 +57,7 @@ struct Bench_job {
   int torus_points = 0;
   bool bordered = false, closed = false;  // neither: the kind is chosen (Options{}.kind)
   bool merge_duplicates = false;
+  std::string cleaning = "auto";  // Options::cleaning by name
 };
 
 int run_bench_job(const Bench_job& job);

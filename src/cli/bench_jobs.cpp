@@ -96,6 +96,8 @@ nlohmann::json run_job_on(const std::vector<Point<D>>& points, const frontend::I
       throw Input_error("unknown method " + job.method);
     options.kind = frontend::input_kind(shapes::find_example(job.example), job.bordered,
                                         job.closed);  // an example is its own kind
+    if (!parse_cleaning(job.cleaning, options.cleaning))
+      throw Input_error("unknown cleaning " + job.cleaning);
     options.keep_triangulations = false;
     options.keep_solid = false;  // as `sculpt reconstruct` without --solid
     Run_description run;

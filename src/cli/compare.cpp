@@ -78,7 +78,8 @@ std::optional<Reference> reference_of(const frontend::Input& input,
 }
 
 // The verdict in a table cell: what the result is (before the counts), or what is wrong, and
-// the handles whose genus the samples cannot vouch for (suspect, refused), whichever it is.
+// the handles whose genus the samples cannot vouch for (suspect, refused), whichever it is; and
+// how the samples were cleaned.
 std::string short_verdict(const nlohmann::json& stats) {
   const std::string line = stats["verdict"];
   const bool defective = line.rfind("NOT", 0) == 0;
@@ -90,6 +91,11 @@ std::string short_verdict(const nlohmann::json& stats) {
   const std::size_t refused = stats.value("refused_handles", std::size_t{0});
   if (suspect > 0) cell += "; " + handles(suspect) + " suspect";
   if (refused > 0) cell += "; " + handles(refused) + " refused";
+  // What the surface does not pass through, or passes through moved.
+  const std::size_t outliers = stats.value("outliers_removed", std::size_t{0});
+  if (outliers > 0)
+    cell += fmt::format("; {} outlier{} removed", outliers, outliers == 1 ? "" : "s");
+  if (stats.value("smoothed", false)) cell += "; smoothed";
   return cell;
 }
 
@@ -266,6 +272,7 @@ class Comparison {
       Options options;
       options.method = parsed;
       options.kind = frontend::kind_of(shot);  // as the timed job: an example's own, else chosen
+      parse_cleaning(args_.inputs.cleaning, options.cleaning);  // checked by the command line
       const frontend::Any_reconstruction result = frontend::reconstruct_input(input, options);
       const Statistics& stats =
           std::visit([](const auto& r) -> const Statistics& { return r.stats; }, result);

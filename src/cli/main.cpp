@@ -350,6 +350,12 @@ int main(int argc, char** argv) {
                                    "method chooses each file's kind)"));
   compare->add_flag("--merge-duplicates", compare_args.inputs.merge_duplicates,
                     "Remove repeated points of the files instead of refusing them");
+  compare
+      ->add_option("--clean", compare_args.inputs.cleaning,
+                   "Clean the samples first (3D), for every method: auto, none, outliers, jet or "
+                   "outliers+jet (as reconstruct's)")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"auto", "none", "outliers", "jet", "outliers+jet"}));
   compare->add_option("--runs", compare_args.inputs.runs, "Time every method N times: medians")
       ->check(CLI::Range(1, 99))
       ->capture_default_str();
@@ -372,6 +378,7 @@ int main(int argc, char** argv) {
   bench_job_command->add_flag("--bordered", bench_job.bordered);
   bench_job_command->add_flag("--closed", bench_job.closed);
   bench_job_command->add_flag("--merge-duplicates", bench_job.merge_duplicates);
+  bench_job_command->add_option("--clean", bench_job.cleaning);
 
   app.footer(sculpt::frontend::exit_codes_help);
   for (CLI::App* command : app.get_subcommands({}))
