@@ -162,7 +162,7 @@ TEST(Cleaning, NoiseThatWouldCrumpleTheSurfaceIsSmoothedFirstAndSaidSo) {
   EXPECT_GT(bend_as_given, 0.2) << "the noise no longer crumples the surface";
   EXPECT_LT(bend_cleaned, 0.1 * bend_as_given);
   const std::string line = verdict(cleaned.stats).line;
-  EXPECT_NE(line.find("through the samples cleaned first (smoothed: noise"), std::string::npos)
+  EXPECT_NE(line.find("through the samples cleaned first (no outlier found; smoothed: noise"), std::string::npos)
       << line;
   EXPECT_EQ(cleaned.stats.stages.front().name, "cleaning");
   // The surface passes through the smoothed samples, in the order given; the viewer keeps the

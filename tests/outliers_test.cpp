@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <numeric>
 #include <vector>
 
@@ -32,27 +33,30 @@ double off_torus(const Point<3>& p, Point<3>* normal = nullptr) {
 }
 
 struct Torus_with_outliers {
-  std::vector<Point<3>> samples;  // the torus's first, then the outliers
-  std::size_t on_torus = 0;
+  std::vector<Point<3>> samples;  // the torus's, with the outliers among them
+  std::vector<Point<3>> torus;    // the torus's alone, in their order
+  std::vector<int> strays;        // where the outliers are among the samples
   double spacing = 0;
 };
 
-// 4,000 samples of the torus and `strays` outliers, each off a sample along the normal by 4 to 9
-// times the spacing, outwards (the tube is only 6 spacings round: a stray inside it is
-// surrounded by the wall, and the inward ones are the noisy sphere's below).
+// 4,000 samples of the torus and `strays` outliers among them (the k-th at 100 k + 50), each off
+// a sample along the normal by 4 to 9 times the spacing, outwards (the tube is only 6 spacings
+// round: a stray inside it is surrounded by the wall; the inward ones are the noisy sphere's).
 Torus_with_outliers torus_with_outliers(int strays) {
   Torus_with_outliers t;
-  t.samples = shapes::torus(4000, major_radius, minor_radius);
-  t.on_torus = t.samples.size();
+  t.torus = shapes::torus(4000, major_radius, minor_radius);
   const double area = 4 * M_PI * M_PI * major_radius * minor_radius;
-  t.spacing = std::sqrt(area / double(t.on_torus));
+  t.spacing = std::sqrt(area / double(t.torus.size()));
   shapes::Portable_random random(5);
+  t.samples = t.torus;
   for (int i = 0; i < strays; ++i) {
-    const Point<3>& base = t.samples[std::size_t(i) * 97 % t.on_torus];
+    const Point<3>& base = t.torus[std::size_t(i) * 97 % t.torus.size()];
     Point<3> normal;
     off_torus(base, &normal);
     const double height = (4 + 5 * random.unit()) * t.spacing;
-    t.samples.push_back(
+    t.strays.push_back(100 * i + 50);
+    t.samples.insert(
+        t.samples.begin() + t.strays.back(),
         {base[0] + height * normal[0], base[1] + height * normal[1], base[2] + height * normal[2]});
   }
   return t;
@@ -77,21 +81,21 @@ TEST(Outliers, StrayReturnsAreRemovedAndTheSurfaceNoLongerReachesThem) {
   as_given.cleaning = Cleaning::none;
   const auto spiky = reconstruct(t.samples, as_given);
   EXPECT_GT(reach_off_torus(spiky, t.spacing), 2) << "the outliers no longer make spikes";
+  ASSERT_EQ(spiky.sample_count(), t.samples.size());
 
   Options asked;
   asked.cleaning = Cleaning::outliers;
   const auto cleaned = reconstruct(t.samples, asked);
-  std::vector<int> strays(t.samples.size() - t.on_torus);
-  std::iota(strays.begin(), strays.end(), static_cast<int>(t.on_torus));
-  EXPECT_EQ(cleaned.removed_outliers, strays) << "every stray, and no sample of the torus";
-  EXPECT_EQ(cleaned.given_samples, t.samples);
-  ASSERT_EQ(cleaned.sample_count(), t.on_torus);
-  EXPECT_TRUE(
-      std::equal(cleaned.sites.begin(), cleaned.sites.begin() + t.on_torus, t.samples.begin()))
-      << "removing is not smoothing: the samples kept are as given";
+  EXPECT_EQ(cleaned.removed_outliers, t.strays) << "every stray, and no sample of the torus";
+  EXPECT_LT(outlier_detail::outliers_among(t.samples).size(), t.strays.size())
+      << "one round finds them all: the rounds are not tested here";
+  EXPECT_TRUE(cleaned.given_samples == t.samples);
+  ASSERT_EQ(cleaned.sample_count(), t.torus.size());
+  EXPECT_TRUE(std::equal(t.torus.begin(), t.torus.end(), cleaned.sites.begin()))
+      << "removing is not smoothing: the samples kept are as given, in their order";
   EXPECT_TRUE(cleaned.stats.cleaned);
   EXPECT_FALSE(cleaned.stats.smoothed);
-  EXPECT_EQ(cleaned.stats.outliers_removed, strays.size());
+  EXPECT_EQ(cleaned.stats.outliers_removed, t.strays.size());
   EXPECT_EQ(cleaned.stats.euler_characteristic, 0);
   EXPECT_EQ(cleaned.stats.unused_samples, 0u);
   EXPECT_LT(reach_off_torus(cleaned, t.spacing), 0.5);
@@ -101,21 +105,69 @@ TEST(Outliers, StrayReturnsAreRemovedAndTheSurfaceNoLongerReachesThem) {
   EXPECT_EQ(cleaned.stats.stages.front().name, "cleaning");
 }
 
-TEST(Outliers, AClusterOfStraysIsFoundInRounds) {
-  // Four returns side by side, five spacings off: each has the other three among its nearest.
-  Torus_with_outliers t = torus_with_outliers(0);
-  Point<3> normal;
-  const Point<3> base = t.samples[123];
-  off_torus(base, &normal);
-  for (int i = 0; i < 4; ++i) {
-    const double height = (5 + 0.1 * i) * t.spacing, aside = 0.1 * t.spacing * (i % 2);
-    t.samples.push_back({base[0] + height * normal[0] + aside, base[1] + height * normal[1],
-                         base[2] + height * normal[2] + 0.1 * t.spacing * (i / 2)});
-  }
+TEST(Outliers, AClusterOfStraysIsFoundUpToHalfANeighbourhood) {
+  // Returns a quarter of a spacing apart, 12 spacings off the torus: each has the others among
+  // its nearest, and they fit a plane together; but they are alone, the surface beyond them.
+  // From 8 on (over half of the 14 nearest) they are a patch of their own.
+  const Torus_with_outliers t = torus_with_outliers(0);
   Options asked;
   asked.cleaning = Cleaning::outliers;
-  const auto cleaned = reconstruct(t.samples, asked);
-  EXPECT_EQ(cleaned.removed_outliers, (std::vector<int>{4000, 4001, 4002, 4003}));
+  for (int size : {2, 4, 7, 8, 12}) {
+    std::vector<Point<3>> samples = t.torus;
+    shapes::Portable_random random(3);
+    std::vector<int> cluster;
+    for (int i = 0; i < size; ++i) {
+      Point<3> stray;
+      for (int k = 0; k < 3; ++k) {
+        stray[k] = t.torus[0][k] + 7 * t.spacing + 0.25 * t.spacing * random.normal();
+      }
+      cluster.push_back(static_cast<int>(samples.size()));
+      samples.push_back(stray);
+    }
+    EXPECT_EQ(reconstruct(samples, asked).removed_outliers,
+              size < 8 ? cluster : std::vector<int>{})
+        << size << " strays";
+  }
+}
+
+TEST(Outliers, ReturnsAtOneSpotOrADenserPatchAreNoOutliers) {
+  // Twenty returns within a billionth of a sample: judged as one spot, on the surface. A patch
+  // scanned 30 times denser: its rim's samples are alone, but on the surface.
+  const std::vector<Point<3>> sphere = shapes::noisy_sphere(3000, 0);
+  std::vector<Point<3>> repeated = sphere;
+  shapes::Portable_random random(11);
+  for (int i = 0; i < 20; ++i) {
+    Point<3> p = sphere[5];
+    for (double& x : p) x += 1e-9 * random.normal();
+    repeated.push_back(p);
+  }
+  EXPECT_TRUE(outlying_samples(repeated).empty());
+  std::vector<Point<3>> patched = sphere;
+  for (const auto& p : shapes::noisy_sphere(90000, 0, 2)) {
+    if (std::hypot(p[0] - sphere[7][0], p[1] - sphere[7][1], p[2] - sphere[7][2]) < 0.2)
+      patched.push_back(p);
+  }
+  ASSERT_GT(patched.size(), sphere.size() + 500);
+  EXPECT_TRUE(outlying_samples(patched).empty());
+}
+
+TEST(Outliers, RefusalsNameThePointsAsGiven) {
+  // Checked before the cleaning: a repeated point is named by its place in the input, not among
+  // the samples left once five strays in front are removed.
+  std::vector<Point<3>> samples;
+  for (int i = 0; i < 5; ++i) samples.push_back({3.0 + i, 3.0, 3.0});
+  for (const auto& p : shapes::noisy_sphere(3000, 0)) samples.push_back(p);
+  samples.push_back(samples[105]);
+  Options asked;
+  asked.cleaning = Cleaning::outliers;
+  try {
+    reconstruct(samples, asked);
+    ADD_FAILURE() << "the repeated point was not refused";
+  } catch (const Duplicate_points& refusal) {
+    EXPECT_NE(std::string(refusal.what()).find("the 3006th point duplicates the 106th point"),
+              std::string::npos)
+        << refusal.what();
+  }
 }
 
 TEST(Outliers, SamplesOfSurfacesAreNotOutliers) {
@@ -126,8 +178,6 @@ TEST(Outliers, SamplesOfSurfacesAreNotOutliers) {
   EXPECT_TRUE(outlying_samples(shapes::open_cylinder(2000)).empty());
   EXPECT_TRUE(outlying_samples(shapes::torus_knot_tube(3000)).empty());
   EXPECT_TRUE(outlying_samples(shapes::noisy_sphere(5000, 0.4)).empty());
-  EXPECT_TRUE(outlying_samples(shapes::sphere(10)).empty())
-      << "fewer samples than a neighbourhood: none judged";
 }
 
 TEST(Outliers, TheAutomaticCleaningRemovesThemWithTheNoiseOnly) {
@@ -162,12 +212,30 @@ TEST(Outliers, TheAutomaticCleaningRemovesThemWithTheNoiseOnly) {
 TEST(Outliers, WhatCannotBeCleanedIsRefusedInOneLine) {
   std::vector<Point<2>> circle;
   for (int i = 0; i < 200; ++i) circle.push_back({std::cos(i * 0.0314), std::sin(i * 0.0314)});
-  for (Cleaning asked : {Cleaning::outliers, Cleaning::outliers_and_jet}) {
+  std::vector<Point<3>> line;
+  for (int i = 0; i < 200; ++i) line.push_back({0.1 * i, 0.2 * i, 0.3 * i});
+  // The refusal's one line, or "" where there is none.
+  const auto refusal = [](const auto& samples, Cleaning asked) -> std::string {
     Options options;
     options.cleaning = asked;
-    EXPECT_THROW(reconstruct(circle, options), Input_error);
-    EXPECT_THROW(reconstruct(shapes::sphere(50), options), Input_error);
+    try {
+      reconstruct(samples, options);
+    } catch (const Input_error& e) {
+      EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+      return e.what();
+    }
+    return "";
+  };
+  for (Cleaning asked : {Cleaning::outliers, Cleaning::outliers_and_jet}) {
+    EXPECT_NE(refusal(circle, asked).find("cleans surfaces' samples (3D points), not curves'"),
+              std::string::npos);
+    EXPECT_NE(refusal(shapes::sphere(50), asked).find("needs at least 100 samples, not 50"),
+              std::string::npos);
+    // Checked before any cleaning: smoothing would move them off their line.
+    EXPECT_NE(refusal(line, asked).find("all points are coplanar"), std::string::npos);
   }
+  EXPECT_NE(refusal(shapes::sphere(50), Cleaning::outliers).find("by its nearest (14)"),
+            std::string::npos);
   Cleaning parsed = Cleaning::none;
   EXPECT_TRUE(parse_cleaning("outliers+jet", parsed));
   EXPECT_EQ(parsed, Cleaning::outliers_and_jet);

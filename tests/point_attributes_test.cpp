@@ -2,8 +2,11 @@
 // A scan's normals and colours: read from each format that has them, dropped with a warning when
 // some points lack them, kept by --merge-duplicates, and written back onto the surface's
 // vertices (PLY and OBJ) exactly, through the writers and the command line.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <fstream>
 #include <cstring>
 
 #include "file_support.hpp"
@@ -226,6 +229,43 @@ TEST(Point_attributes, TheCommandLineCarriesThemFromTheInputToTheSurface) {
   for (std::size_t i = 0; i < back.points.size(); ++i) {
     EXPECT_EQ(back.attributes.colors[i][1], std::uint8_t((i * 7 + 50) % 256));
     EXPECT_EQ(back.attributes.normals[i][2], double(sphere[i][2]));
+  }
+}
+
+// The outliers the cleaning removes take their normals and colours with them: each vertex of
+// the surface keeps its own sample's.
+TEST(Point_attributes, OutliersRemovedTakeTheirsWithThem) {
+  const auto folder = testing::fresh_folder("attributes_outliers");
+  const int n = 600;
+  std::vector<std::array<double, 3>> points;
+  for (int i = 0; i < n; ++i) {
+    const double z = 1 - (2 * i + 1.0) / n, r = std::sqrt(1 - z * z), a = 2.399963229728653 * i;
+    points.push_back({r * std::cos(a), r * std::sin(a), z});
+  }
+  const std::vector<int> strays = {100, 101, 350};  // far outside, among the samples
+  for (int at : strays) {
+    const auto p = points[std::size_t(at)];
+    const double out = 1.6 + 0.001 * at;
+    points.insert(points.begin() + at, {out * p[0], out * p[1], out * p[2]});
+  }
+  std::string text;  // x y z r g b, a colour of its own per point
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    text += fmt::format("{:.17g} {:.17g} {:.17g} {} {} {}\n", points[i][0], points[i][1],
+                        points[i][2], i % 256, (i / 256) % 256, 7);
+  }
+  std::ofstream(folder / "scan.xyzrgb") << text;
+  const auto run = testing::run_sculpt(
+      folder, {"reconstruct", "scan.xyzrgb", "-o", "part.ply", "--clean", "outliers"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const io::Point_set back = io::read_points((folder / "part.ply").string());
+  ASSERT_EQ(back.points.size(), std::size_t(n));
+  ASSERT_EQ(back.attributes.colors.size(), back.points.size());
+  std::size_t given = 0;
+  for (std::size_t i = 0; i < back.points.size(); ++i, ++given) {
+    while (std::find(strays.begin(), strays.end(), int(given)) != strays.end()) ++given;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(back.points[i][k], points[given][k], 1e-6);
+    EXPECT_EQ(back.attributes.colors[i][0], std::uint8_t(given % 256));
+    EXPECT_EQ(back.attributes.colors[i][1], std::uint8_t((given / 256) % 256));
   }
 }
 

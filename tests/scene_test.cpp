@@ -116,26 +116,33 @@ TEST(Scene, TheSurfaceStageShowsBordersAndDefects) {
 TEST(Scene, TheSamplesStageShowsWhatTheCleaningDid) {
   // A noisy sphere and three strays far off it, cleaned of both: the samples as given (grey),
   // the strays removed (red), and a line from each sample kept to where smoothing moved it.
-  std::vector<Point<3>> samples = shapes::noisy_sphere(2000, 0.4);
-  for (double out : {1.5, 1.6, 1.7}) samples.push_back({out, 0.1 * out, 0.2});
+  const std::vector<Point<3>> sphere = shapes::noisy_sphere(2000, 0.4);
+  std::vector<Point<3>> samples;  // the strays among the sphere's samples, before the k-th
+  const std::vector<int> before = {3, 1000, 1500};
+  for (int i = 0; i < 2000; ++i) {
+    if (std::find(before.begin(), before.end(), i) != before.end())
+      samples.push_back({1.5 + 0.1 * samples.size() / 1000, 0.1, 0.2});
+    samples.push_back(sphere[i]);
+  }
   Options options;
   options.cleaning = Cleaning::outliers_and_jet;
   const auto cleaned = reconstruct(samples, options);
-  ASSERT_EQ(cleaned.removed_outliers, (std::vector<int>{2000, 2001, 2002}));
+  ASSERT_EQ(cleaned.removed_outliers, (std::vector<int>{3, 1001, 1502}));
   scene::Request request;
   request.stage = scene::Stage::samples;
   const scene::Scene scene = scene::build_scene(cleaned, request);
   ASSERT_NE(find(scene, "given-samples"), nullptr);
   EXPECT_EQ(find(scene, "given-samples")->positions.size(), 2003u);
   ASSERT_NE(find(scene, "outliers"), nullptr);
-  EXPECT_EQ(find(scene, "outliers")->positions.size(), 3u);
-  EXPECT_FLOAT_EQ(find(scene, "outliers")->positions[0][0], 1.5f);
+  ASSERT_EQ(find(scene, "outliers")->positions.size(), 3u);
+  EXPECT_FLOAT_EQ(find(scene, "outliers")->positions[1][0], float(samples[1001][0]));
   const scene::Layer* moves = find(scene, "smoothing");
   ASSERT_NE(moves, nullptr);
   ASSERT_EQ(moves->positions.size(), 2 * 2000u);
-  EXPECT_FLOAT_EQ(moves->positions[2 * 1999][0], float(samples[1999][0]))
-      << "the last line starts at the last sample kept, not at a stray";
-  EXPECT_FLOAT_EQ(moves->positions[2 * 1999 + 1][0], float(cleaned.sites[1999][0]));
+  for (int s : {0, 3, 999, 1000, 1999}) {  // each line from a sample as given to where it went
+    EXPECT_FLOAT_EQ(moves->positions[2 * s][0], float(sphere[s][0])) << s;
+    EXPECT_FLOAT_EQ(moves->positions[2 * s + 1][0], float(cleaned.sites[s][0])) << s;
+  }
 
   options.cleaning = Cleaning::outliers;  // removed, not smoothed: no lines
   EXPECT_EQ(find(scene::build_scene(reconstruct(samples, options), request), "smoothing"), nullptr);

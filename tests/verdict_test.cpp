@@ -80,6 +80,7 @@ TEST(Verdict, NoiseThatCouldNotBeMeasuredIsSaidSo) {
 TEST(Verdict, OutliersRemovedAreNotOnTheSurface) {
   Statistics s = closed_surface(2, 1);
   s.cleaned = true;
+  s.outliers_sought = true;
   s.outliers_removed = 1;
   EXPECT_TRUE(says(s, "; through the samples cleaned first (1 outlier removed, not on it)"))
       << verdict(s).line;
@@ -94,6 +95,11 @@ TEST(Verdict, OutliersRemovedAreNotOnTheSurface) {
                    "cleaned first (12 outliers removed, not on it; smoothed: noise 0.50 of "
                    "their spacing, 0.02 after; moved 0.30 of the spacing on average)"))
       << verdict(s).line;
+  // Sought and not found, beside the smoothing; not sought, nothing said of them.
+  s.outliers_removed = 0;
+  EXPECT_TRUE(says(s, "cleaned first (no outlier found; smoothed: noise 0.50")) << verdict(s).line;
+  s.outliers_sought = false;
+  EXPECT_TRUE(says(s, "cleaned first (smoothed: noise 0.50")) << verdict(s).line;
 }
 
 TEST(Point_names, CountedFromOneAsOrdinals) {

@@ -443,8 +443,9 @@ struct Statistics {
   /// The samples' noise over their spacing (core/sample_noise.hpp), as given; -1 when not
   /// measured (fewer than 100 samples).
   double noise = -1;
-  bool cleaned = false;   ///< the samples were cleaned (Options::cleaning) before the method
-  bool smoothed = false;  ///< cleaned: by jet smoothing
+  bool cleaned = false;          ///< the samples were cleaned (Options::cleaning) before the method
+  bool smoothed = false;         ///< cleaned: by jet smoothing
+  bool outliers_sought = false;  ///< cleaned: outliers were looked for
   std::size_t outliers_removed = 0;  ///< cleaned: outliers removed (not on the surface)
   double noise_after = -1;           ///< cleaned: the noise of the cleaned samples
   double cleaning_shift = 0;  ///< cleaned: how far the samples moved, on average, over the spacing
@@ -488,7 +489,10 @@ struct Reconstruction {
   /// first points are the cleaned samples, which the surface passes through: those given, but
   /// the outliers removed, in their order, smoothed where Statistics::smoothed.
   std::vector<Point<D>> given_samples;
-  std::vector<int> removed_outliers;  ///< 0: the outliers removed, as indices of given_samples
+  /// 0 (when Statistics::cleaned, whether or not the triangulations are kept): the outliers
+  /// removed, as indices of the samples as given, increasing; the k-th sample is the k-th given
+  /// of those not listed.
+  std::vector<int> removed_outliers;
   ///< A method that does not interpolate (the power crust) makes vertices of its own: then the
   ///< surface's facets index these instead of the samples.
   std::vector<Point<D>> surface_vertices;

@@ -31,7 +31,7 @@ void print_report(std::ostream& out, const Statistics& stats, const Run_descript
     return value >= 0 ? fmt::format("{:.3f}", value) : std::string("not measured");
   };
   if (stats.noise >= 0 || stats.cleaned) row("noise (of spacing)", noise(stats.noise));
-  if (stats.cleaned && (stats.outliers_removed > 0 || !stats.smoothed)) {
+  if (stats.outliers_sought) {
     row("outliers removed", stats.outliers_removed);
   }
   if (stats.smoothed) {

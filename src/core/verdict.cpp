@@ -101,7 +101,7 @@ Verdict verdict(const Statistics& s) {
   // What the surface passes through, and how far its topology can be trusted on noisy samples.
   if (s.cleaned) {
     std::vector<std::string> done;
-    if (s.outliers_removed > 0 || !s.smoothed) {
+    if (s.outliers_sought) {
       done.push_back(s.outliers_removed == 0
                          ? std::string("no outlier found")
                          : fmt::format("{} removed, not on it",

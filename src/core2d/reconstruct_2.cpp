@@ -9,7 +9,12 @@ namespace sculpt {
 
 Reconstruction<2> reconstruct(const std::vector<Point<2>>& samples, const Options& options) {
   return reconstruct_cleaned<2>(
-      samples, options, [](const std::vector<Point<2>>& points, const Options& chosen) {
+      samples, options,
+      [&](const std::vector<Point<2>>& given) {
+        check_input<Traits_2>(given, options);
+        refuse_duplicates<2>(given);
+      },
+      [](const std::vector<Point<2>>& points, const Options& chosen) {
         return reconstruct_choosing_kind<2>(
             chosen,
             [&](const Options& resolved, Normalised_poles<2>* keep, First_stages<2>* given) {

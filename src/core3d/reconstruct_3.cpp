@@ -9,7 +9,12 @@ namespace sculpt {
 
 Reconstruction<3> reconstruct(const std::vector<Point<3>>& samples, const Options& options) {
   return reconstruct_cleaned<3>(
-      samples, options, [](const std::vector<Point<3>>& points, const Options& chosen) {
+      samples, options,
+      [&](const std::vector<Point<3>>& given) {
+        check_input<Traits_3>(given, options);
+        refuse_duplicates<3>(given);
+      },
+      [](const std::vector<Point<3>>& points, const Options& chosen) {
         return reconstruct_choosing_kind<3>(
             chosen,
             [&](const Options& resolved, Normalised_poles<3>* keep, First_stages<3>* given) {

@@ -33,6 +33,7 @@ nlohmann::json statistics_json(const Statistics& stats) {
       {"noise", stats.noise},
       {"cleaned", stats.cleaned},
       {"smoothed", stats.smoothed},
+      {"outliers_sought", stats.outliers_sought},
       {"outliers_removed", stats.outliers_removed},
       {"noise_after", stats.noise_after},
       {"cleaning_shift", stats.cleaning_shift},

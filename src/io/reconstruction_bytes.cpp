@@ -123,6 +123,7 @@ void statistics_fields(Io& io, Statistics_ref& s) {
   io.value(s.noise);
   io.value(s.cleaned);
   io.value(s.smoothed);
+  io.value(s.outliers_sought);
   io.value(s.outliers_removed);
   io.value(s.noise_after);
   io.value(s.cleaning_shift);

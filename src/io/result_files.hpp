@@ -29,6 +29,32 @@ void check_result_formats(const std::string& path, const std::string& solid_path
   }
 }
 
+// The normals and colours of the samples the surface passes through: those given, less the
+// outliers' where the cleaning removed some (Reconstruction::removed_outliers) and a list has one
+// per sample as given.
+template <int D>
+Point_attributes attributes_of_samples(const Reconstruction<D>& result,
+                                       const Point_attributes& given) {
+  const std::vector<int>& removed = result.removed_outliers;
+  if (removed.empty()) return given;
+  const std::size_t as_given = result.sample_count() + removed.size();
+  const auto kept = [&](const auto& values) {
+    auto left = values;
+    if (values.size() != as_given) return left;  // check_attributes names the mismatch
+    left.clear();
+    auto next_removed = removed.begin();
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      if (next_removed != removed.end() && std::size_t(*next_removed) == i) {
+        ++next_removed;
+      } else {
+        left.push_back(values[i]);
+      }
+    }
+    return left;
+  };
+  return {kept(given.normals), kept(given.colors)};
+}
+
 // The samples' normals and colours, each list empty or one per sample, for a surface.
 template <int D>
 void check_attributes(const Reconstruction<D>& result, const Point_attributes& attributes) {
@@ -59,7 +85,8 @@ bool writes_attributes(const Reconstruction<D>& result, const Point_attributes& 
 template <int D>
 void stage_result(Output_set& outputs, const Reconstruction<D>& result, const std::string& path,
                   const std::string& solid_path, bool ascii,
-                  const Point_attributes& attributes = {}) {
+                  const Point_attributes& given_attributes = {}) {
+  const Point_attributes attributes = attributes_of_samples(result, given_attributes);
   const std::vector<Point<D>> samples(result.sites.begin(),
                                       result.sites.begin() + result.sample_count());
   const std::vector<Point<D>>& vertices = result.interpolates() ? samples : result.surface_vertices;
@@ -77,7 +104,7 @@ void write_result(const Reconstruction<D>& result, const std::string& path,
                   const std::string& solid_path, bool ascii,
                   const Point_attributes& attributes = {}) {
   check_result_formats<D>(path, solid_path);
-  check_attributes(result, attributes);
+  check_attributes(result, attributes_of_samples(result, attributes));
   check_destinations(with_companions({path, solid_path}));  // and files read before
   Output_set outputs;
   stage_result(outputs, result, path, solid_path, ascii, attributes);

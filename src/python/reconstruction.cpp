@@ -230,13 +230,14 @@ void bind_reconstruction(py::module_& m) {
           "removed_outliers",
           [](const Result& result) -> py::object {
             return visit(result, [&](const auto& r) -> py::object {
-              if (r.given_samples.empty()) return py::none();
+              if (!r.stats.cleaned) return py::none();
               return py::array_t<int>(static_cast<py::ssize_t>(r.removed_outliers.size()),
                                       r.removed_outliers.data());
             });
           },
-          "With given_samples: the indices (in given_samples) of the outliers the cleaning "
-          "removed, which the surface does not pass through, int array; None otherwise.")
+          "When stats['cleaned']: the indices (among the points given) of the outliers the "
+          "cleaning removed, which the surface does not pass through, increasing, int array "
+          "(result.samples are the others, in their order); None otherwise.")
       .def_property_readonly(
           "sites", rows_property([](const auto& r) -> const auto& { return r.sites; }),
           "The triangulations' sites, (s, d): the samples, the 2^d box corners, then the poles "

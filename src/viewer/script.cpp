@@ -134,7 +134,9 @@ std::string Script::before_frame(Viewer& viewer) {
     }
     if (command == "help") {
       std::cout
-          << "commands: example NAME, open FILE, method NAME, clean auto|jet|none, stage ID, next, "
+          << "commands: example NAME, open FILE, method NAME, clean "
+             "auto|none|outliers|jet|outliers+jet, "
+             "stage ID, next, "
              "previous, "
              "compare A,B[,C,D] | off, step K, replay STAGE [PACE], wait-replay, "
              "pick-sample K, pick-pole K, clip "

@@ -51,7 +51,8 @@ class Viewer {
   // Reconstructs the loaded input again with another method ("crust", "paper", ...), keeping
   // the camera; false, with a message, for an unknown method or nothing loaded.
   bool switch_method(const std::string& name);
-  // The same with the samples cleaned first or not: "auto", "jet" or "none" (the panel's combo).
+  // The same with the samples cleaned first or not: a name of cleaning_choices() (the panel's
+  // combo).
   bool switch_cleaning(const std::string& name);
   // The kind files are reconstructed as (--closed, --bordered; else automatic).
   void set_file_kind(Surface_kind kind) { kind_ = file_kind_ = kind; }

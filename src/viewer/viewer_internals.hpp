@@ -19,7 +19,8 @@ inline Method method_at(int index) {
 }
 
 inline const char* const rule_names[] = {"auto", "skin", "extraction"};
-inline const char* const cleaning_names[] = {"auto", "jet", "none", "outliers", "outliers+jet"};
+// In the order of cleaning_choices().
+inline const char* const cleaning_names[] = {"auto", "none", "outliers", "jet", "outliers+jet"};
 
 // What makes two reconstructions the same: their input and options.
 inline std::string request_key(const Job_request& r) {

@@ -99,6 +99,7 @@ void keep_result(Result& result, const sculpt::Reconstruction<D>& r) {
   result.json = nlohmann::json{
       {"dimension", D},
       {"interpolates", r.interpolates()},
+      {"removedOutliers", r.removed_outliers},
       {"verdict", {{"manifold", verdict.manifold}, {"line", verdict.line}}},
       {"stats",
        stats}}.dump();

@@ -422,17 +422,19 @@ def test_noisy_samples_are_smoothed_first_and_the_command_line_agrees(sculpt_cli
 
 def test_outliers_are_removed_where_asked_and_the_command_line_agrees(sculpt_cli, tmp_path):
     points = noisy_sphere(3000, 0.05)
-    strays = points[:5] * 1.4  # far outside, 6 spacings and more
-    given = np.vstack([points, strays])
+    strays = points[:5] * 1.4  # far outside, 6 spacings and more, among the others
+    given = np.insert(points, [10, 500, 1000, 2000, 2999], strays, axis=0)
     kept = sculpt.reconstruct(given)  # clean samples: the automatic cleaning leaves them
     assert not kept.stats["cleaned"] and kept.removed_outliers is None
     cleaned = sculpt.reconstruct(given, clean="outliers")
     assert cleaned.stats["cleaned"] and not cleaned.stats["smoothed"]
     assert cleaned.stats["outliers_removed"] == 5
-    assert list(cleaned.removed_outliers) == [3000, 3001, 3002, 3003, 3004]
+    assert list(cleaned.removed_outliers) == [10, 501, 1002, 2003, 3003]
     assert np.array_equal(cleaned.samples, points)  # the others as given, in their order
     assert np.array_equal(cleaned.given_samples, given)
     assert "5 outliers removed, not on it" in cleaned.verdict
+    lean = sculpt.reconstruct(given, clean="outliers", keep_triangulations=False)
+    assert lean.given_samples is None and list(lean.removed_outliers) == [10, 501, 1002, 2003, 3003]
 
     path = tmp_path / "strays.xyz"
     np.savetxt(path, given, fmt="%.17g")

@@ -44,10 +44,11 @@ export interface ReconstructOptions {
   alpha?: number;
   /** The bounding box's size relative to the samples' (default 5). */
   boxFactor?: number;
-  /** Smooth the samples first (3D): jet, none, or auto (the default: robust, where the measured
-   *  noise is at least 0.3 of the spacing). The surface then passes through the smoothed
-   *  samples, which `vertices` holds; stats.cleaned says so. */
-  clean?: 'auto' | 'jet' | 'none';
+  /** Clean the samples first (3D): outliers (remove samples far off their neighbours' surface),
+   *  jet (smooth), outliers+jet, none, or auto (the default: both, for robust, where the
+   *  measured noise is at least 0.3 of the spacing). The surface then passes through the
+   *  cleaned samples, which `vertices` holds; stats.cleaned and stats.outliers_removed say so. */
+  clean?: 'auto' | 'none' | 'outliers' | 'jet' | 'outliers+jet';
   /** Drop repeated points instead of refusing them (indices then refer to `vertices`). */
   mergeDuplicates?: boolean;
   /** Called as the stages run; returning false cancels (a SculptError "cancelled"). */
@@ -72,6 +73,10 @@ export interface Reconstruction {
    *  power crust's own vertices (`interpolates` false). */
   vertices: Float64Array;
   interpolates: boolean;
+  /** The points the cleaning removed as outliers (clean 'outliers', 'outliers+jet', or 'auto'
+   *  on noisy points), as indices of the points given, increasing: the surface does not pass
+   *  through them, and `vertices` holds the others, in their order. Empty when none was. */
+  removedOutliers: Uint32Array;
   verdict: Verdict;
   /** The statistics `sculpt reconstruct --stats` writes: counts, topology, stage timings. */
   stats: Record<string, unknown>;

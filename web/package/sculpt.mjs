@@ -125,7 +125,7 @@ export function reconstruct(points, options = {}) {
     const result = withString(JSON.stringify(rest), (optionsText) =>
       core._sculpt_reconstruct(memory, count, dimension, optionsText));
     return withResult(result, () => {
-      const { verdict, stats, interpolates } = resultJson(result);
+      const { verdict, stats, interpolates, removedOutliers } = resultJson(result);
       const indices = core._sculpt_result_facet_indices(result);
       const at = core._sculpt_result_facets(result) / 4;
       const facets = core.HEAPU32.slice(at, at + indices);
@@ -135,6 +135,7 @@ export function reconstruct(points, options = {}) {
         [dimension === 3 ? 'triangles' : 'edges']: facets,
         vertices: resultCoordinates(result),
         interpolates,
+        removedOutliers: Uint32Array.from(removedOutliers),
         verdict,
         stats,
       };

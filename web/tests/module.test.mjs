@@ -64,6 +64,25 @@ test('a closed surface: a torus of genus 1, every sample on it, triangles orient
   assert.equal(result.stats.euler_characteristic, 0);
 });
 
+test('outliers removed where asked: not on the surface, the others in their order', () => {
+  // The torus with three strays far outside it put among its points, after the 1000th.
+  const torusPoints = torus(3000);
+  const strays = [[2.2, 0.1, 0.3], [0.2, -2.3, 0.1], [-0.1, 0.3, 1.6]];
+  const points = new Float64Array(3 * 3003);
+  points.set(torusPoints.subarray(0, 3000), 0);
+  points.set(torusPoints.subarray(3000), 3 * 1003);
+  strays.forEach((stray, k) => points.set(stray, 3 * (1000 + k)));
+  const kept = reconstruct(points, { dimension: 3 });  // clean samples: the strays stay
+  assert.deepEqual(Array.from(kept.removedOutliers), []);
+  assert.equal(kept.vertices.length, points.length);
+  const cleaned = reconstruct(points, { dimension: 3, clean: 'outliers' });
+  assert.deepEqual(Array.from(cleaned.removedOutliers), [1000, 1001, 1002]);
+  assert.deepEqual(cleaned.vertices, torusPoints);
+  assert.equal(cleaned.stats.outliers_removed, 3);
+  assert.match(cleaned.verdict.line, /closed 2-manifold of genus 1/);
+  assert.match(cleaned.verdict.line, /3 outliers removed, not on it/);
+});
+
 test('a closed curve in the plane', () => {
   const result = reconstruct(circle(100), { dimension: 2 });
   assert.equal(result.verdict.manifold, true, result.verdict.line);
