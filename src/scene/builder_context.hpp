@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What the stage builder (scene_builder.cpp) and the layers it draws from its parts
-// (result_layers.hpp, candidate_layers.hpp, pole_layers.hpp) work on together: the reconstruction,
-// the request, the scene (its title and box) and the layers gathered so far. One struct, so that
-// each part takes the builder's state as one argument and no part keeps a copy of its helpers.
+// (result_layers.hpp, candidate_layers.hpp, pole_layers.hpp, cleaning_layers.hpp) work on together:
+// the reconstruction, the request, the scene (its title and box) and the layers gathered so far.
+// One struct, so that each part takes the builder's state as one argument and no part keeps a copy
+// of its helpers.
 #pragma once
 
 #include <deque>

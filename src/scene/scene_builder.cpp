@@ -11,6 +11,7 @@
 #include "builder_context.hpp"
 #include "candidate_layers.hpp"
 #include "carving_replay.hpp"
+#include "cleaning_layers.hpp"
 #include "clipping.hpp"
 #include "colours.hpp"
 #include "core/facet_orientation.hpp"
@@ -42,7 +43,7 @@ class Scene_builder {
     const Builder_context<D> ctx{r_, request_, scene_, layers_, n_};
     switch (request_.stage) {
       case Stage::samples:
-        if (!r_.given_samples.empty()) cleaning();
+        add_cleaning_layers(ctx);
         break;
       case Stage::delaunay:
         require_cells(r_.delaunay);
@@ -193,31 +194,6 @@ class Scene_builder {
   void samples() {
     Layer& layer = add("samples", "samples S", Primitive::points, palette::sample, D == 2 ? 5 : 3);
     for (int s = 0; s < n_; ++s) layer.positions.push_back(vec(r_.sites[s]));
-  }
-
-  // Stage 0, when the samples were cleaned: where they were given, the outliers removed (the
-  // surface does not pass through them), and how far smoothing moved each of the others.
-  void cleaning() {
-    Layer& given = add("given-samples", "samples as given (before cleaning)", Primitive::points,
-                       palette::given_sample, D == 2 ? 4 : 2);
-    for (const auto& p : r_.given_samples) given.positions.push_back(vec(p));
-    Layer& outliers = add("outliers", "outliers removed (not on the surface)", Primitive::points,
-                          palette::removed_outlier, D == 2 ? 7 : 5);
-    for (int g : r_.removed_outliers) outliers.positions.push_back(vec(r_.given_samples[g]));
-    if (!r_.stats.smoothed) return;
-    Layer& moves =
-        add("smoothing", "moved by the smoothing", Primitive::lines, palette::smoothing_move, 1.0f);
-    // The cleaned samples are those given but the outliers, in their order.
-    auto next_removed = r_.removed_outliers.begin();
-    int s = 0;
-    for (int g = 0; g < static_cast<int>(r_.given_samples.size()) && s < n_; ++g) {
-      if (next_removed != r_.removed_outliers.end() && *next_removed == g) {
-        ++next_removed;
-        continue;
-      }
-      moves.positions.push_back(vec(r_.given_samples[g]));
-      moves.positions.push_back(vec(r_.sites[s++]));
-    }
   }
 
   void edges_of(const std::vector<Cell<D>>& cells, const char* id, const std::string& label,

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Stage 0 on the samples stage, when the samples were cleaned (driver/cleaning.hpp): where they
+// were given, the outliers removed (the surface does not pass through them), and how far the
+// smoothing moved each of the others.
+#pragma once
+
+#include <sculpt/sculpt.hpp>
+
+#include "builder_context.hpp"
+#include "palette.hpp"
+
+namespace sculpt::scene {
+
+template <int D>
+void add_cleaning_layers(const Builder_context<D>& ctx) {
+  const Reconstruction<D>& r = ctx.r;
+  if (r.given_samples.empty()) return;  // kept with the triangulations only
+  Layer& given = ctx.add("given-samples", "samples as given (before cleaning)", Primitive::points,
+                         palette::given_sample, D == 2 ? 4 : 2);
+  for (const auto& p : r.given_samples) given.positions.push_back(vec(p));
+  Layer& outliers = ctx.add("outliers", "outliers removed (not on the surface)", Primitive::points,
+                            palette::removed_outlier, D == 2 ? 7 : 5);
+  for (int g : r.removed_outliers) outliers.positions.push_back(vec(r.given_samples[g]));
+  if (!r.stats.smoothed) return;
+  Layer& moves = ctx.add("smoothing", "moved by the smoothing", Primitive::lines,
+                         palette::smoothing_move, 1.0f);
+  // The cleaned samples are those given but the outliers, in their order.
+  auto next_removed = r.removed_outliers.begin();
+  int s = 0;
+  for (int g = 0; g < static_cast<int>(r.given_samples.size()) && s < ctx.n; ++g) {
+    if (next_removed != r.removed_outliers.end() && *next_removed == g) {
+      ++next_removed;
+      continue;
+    }
+    moves.positions.push_back(vec(r.given_samples[g]));
+    moves.positions.push_back(vec(r.sites[s++]));
+  }
+}
+
+}  // namespace sculpt::scene
