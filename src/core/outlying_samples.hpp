@@ -47,6 +47,7 @@
 
 #include "point_tree.hpp"
 #include "sample_noise.hpp"
+#include "without.hpp"
 
 namespace sculpt {
 
@@ -57,22 +58,6 @@ inline constexpr double spread_allowed = 3;       // the neighbours' spread: 3 d
 inline constexpr double outlier_margin = 3;       // how many times what the neighbours allow
 inline constexpr int outlier_rounds = 4;          // judged again among the samples left
 inline constexpr double same_spot = 1e-6;         // of the box's diagonal: samples judged as one
-
-// The items but those listed (increasing), in their order.
-template <class T>
-std::vector<T> without(const std::vector<T>& items, const std::vector<int>& gone) {
-  std::vector<T> kept;
-  kept.reserve(items.size() - std::min(items.size(), gone.size()));
-  auto next_gone = gone.begin();
-  for (int i = 0; i < static_cast<int>(items.size()); ++i) {
-    if (next_gone != gone.end() && *next_gone == i) {
-      ++next_gone;
-    } else {
-      kept.push_back(items[i]);
-    }
-  }
-  return kept;
-}
 
 namespace outlier_detail {
 

@@ -14,9 +14,9 @@ std::string plural(std::size_t count, const char* one, const char* many) {
   return fmt::format("{} {}", count, count == 1 ? one : many);
 }
 
-std::string join(const std::vector<std::string>& parts) {
+std::string join(const std::vector<std::string>& parts, const char* separator = ", ") {
   std::string line;
-  for (const auto& part : parts) line += (line.empty() ? "" : ", ") + part;
+  for (const auto& part : parts) line += (line.empty() ? "" : separator) + part;
   return line;
 }
 
@@ -117,9 +117,7 @@ Verdict verdict(const Statistics& s) {
       done.push_back(fmt::format("smoothed: {}, {}; moved {:.2f} of the spacing on average", before,
                                  after, s.cleaning_shift));
     }
-    std::string what;
-    for (const auto& part : done) what += (what.empty() ? "" : "; ") + part;
-    v.line += fmt::format("; through the samples cleaned first ({})", what);
+    v.line += fmt::format("; through the samples cleaned first ({})", join(done, "; "));
   } else if (surface && s.noise >= noise_worth_cleaning) {
     v.line += fmt::format(
         "; the samples are noisy ({:.2f} of their spacing): expect a crumpled surface with "

@@ -17,6 +17,7 @@
 #include "../core/outlying_samples.hpp"
 #include "../core/sample_noise.hpp"
 #include "../core/stage_clock.hpp"
+#include "../core/without.hpp"
 
 namespace sculpt {
 
@@ -109,7 +110,8 @@ Reconstruction<D> reconstruct_cleaned(const std::vector<Point<D>>& samples, cons
   }
   const std::vector<Point<D>> kept = without(samples, removed);
   std::vector<Point<D>> cleaned = kept;
-  Noise_measure after = measure_noise<D>(kept);
+  // The smoothing measures its own; removing outliers alone is measured here.
+  Noise_measure after = plan.smooths ? given : measure_noise<D>(kept);
   // One pass of jet smoothing leaves about a tenth of the noise, but gathered into bumps a few
   // samples wide, which the measure reads low and a surface through the samples still
   // crumples over: CGAL's fandisk, anchor and joint sampled 35,000 times with noise of 0.5% of

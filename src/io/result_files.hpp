@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "../core/without.hpp"
 #include "destinations.hpp"
 #include "output_set.hpp"
 #include "point_reader.hpp"
@@ -39,18 +40,8 @@ Point_attributes attributes_of_samples(const Reconstruction<D>& result,
   if (removed.empty()) return given;
   const std::size_t as_given = result.sample_count() + removed.size();
   const auto kept = [&](const auto& values) {
-    auto left = values;
-    if (values.size() != as_given) return left;  // check_attributes names the mismatch
-    left.clear();
-    auto next_removed = removed.begin();
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      if (next_removed != removed.end() && std::size_t(*next_removed) == i) {
-        ++next_removed;
-      } else {
-        left.push_back(values[i]);
-      }
-    }
-    return left;
+    // A list of another length is left for check_attributes to name.
+    return values.size() == as_given ? without(values, removed) : values;
   };
   return {kept(given.normals), kept(given.colors)};
 }

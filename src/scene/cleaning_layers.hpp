@@ -6,6 +6,7 @@
 
 #include <sculpt/sculpt.hpp>
 
+#include "../core/without.hpp"
 #include "builder_context.hpp"
 #include "palette.hpp"
 
@@ -25,15 +26,10 @@ void add_cleaning_layers(const Builder_context<D>& ctx) {
   Layer& moves = ctx.add("smoothing", "moved by the smoothing", Primitive::lines,
                          palette::smoothing_move, 1.0f);
   // The cleaned samples are those given but the outliers, in their order.
-  auto next_removed = r.removed_outliers.begin();
-  int s = 0;
-  for (int g = 0; g < static_cast<int>(r.given_samples.size()) && s < ctx.n; ++g) {
-    if (next_removed != r.removed_outliers.end() && *next_removed == g) {
-      ++next_removed;
-      continue;
-    }
-    moves.positions.push_back(vec(r.given_samples[g]));
-    moves.positions.push_back(vec(r.sites[s++]));
+  const std::vector<Point<D>> kept = without(r.given_samples, r.removed_outliers);
+  for (int s = 0; s < static_cast<int>(kept.size()) && s < ctx.n; ++s) {
+    moves.positions.push_back(vec(kept[s]));
+    moves.positions.push_back(vec(r.sites[s]));
   }
 }
 
